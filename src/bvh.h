@@ -1,0 +1,38 @@
+/* bvh.h: bounding volume hierarchy over primitive boxes, built on the host.
+ *
+ *   bvh_box boxes[n] = ...;            one box per primitive
+ *   bvh_tree t;
+ *   if (bvh_build(boxes, n, &t) != 0) ...   out of memory
+ *   t.nodes[0] is the root; a leaf covers t.prim_index[left_first .. +count-1],
+ *   which are indices into boxes[]. The caller reorders its primitives by
+ *   prim_index so that a leaf's primitives are contiguous on the device.
+ *   bvh_free(&t);
+ *
+ * The tree is binary with node layout bvh_node (kernels/shared.h), children
+ * adjacent, so it can be converted to wider layouts later. */
+#ifndef ECLAT_BVH_H
+#define ECLAT_BVH_H
+
+#include "../kernels/shared.h"
+
+typedef struct {
+	float min[3], max[3];
+} bvh_box;
+
+typedef struct {
+	bvh_node *nodes;
+	int n_nodes;
+	int *prim_index;
+	int n_prims;
+	int depth;          /* longest root-to-leaf path, root = 1 */
+	double sah_cost;    /* SAH cost with C_node = 1, C_prim = 1, relative to the root area */
+} bvh_tree;
+
+/* Binned SAH build (16 bins per axis, leaves of at most BVH_MAX_LEAF primitives).
+ * n may be 0 (one empty leaf). Boxes may be flat (zero extent on an axis).
+ * Returns 0, or -1 when memory runs out (t is then left empty). */
+#define BVH_MAX_LEAF 4
+int bvh_build(const bvh_box *boxes, int n, bvh_tree *t);
+void bvh_free(bvh_tree *t);
+
+#endif

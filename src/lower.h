@@ -1,0 +1,24 @@
+/* lower.h: the scene flattened into the buffers the kernels read, plus its BVH. */
+#ifndef ECLAT_LOWER_H
+#define ECLAT_LOWER_H
+
+#include "../kernels/shared.h"
+#include "bvh.h"
+#include "scene.h"
+
+typedef struct {
+	dev_prim *prims;          /* in BVH leaf order */
+	int n_prims;
+	dev_material *materials;
+	int n_materials;
+	dev_light *lights;
+	int n_lights;
+	bvh_tree bvh;
+	dev_params params;        /* camera and background; the renderer fills the rest */
+} lower_result;
+
+/* Returns 0, or -1 after printing errors against the objects' source lines. */
+int lower_scene(const scene *s, lower_result *out);
+void lower_free(lower_result *r);
+
+#endif

@@ -1,0 +1,236 @@
+/* main.c: eclat's command line: parse, evaluate, lower, render, write. */
+#include <errno.h>
+#include <getopt.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "device.h"
+#include "eval.h"
+#include "image.h"
+#include "lower.h"
+#include "parse.h"
+#include "render.h"
+
+#define DEFAULT_WIDTH 640
+#define DEFAULT_HEIGHT 480
+#define DEFAULT_SAMPLES 64
+#define DEFAULT_MAX_DEPTH 5
+#define MAX_SIZE 32768
+
+struct options {
+	const char *scene, *output, *kernel_dir;
+	int width, height, samples, seed, max_depth, device, quiet;
+	int list_devices, check, dump_ast;
+};
+
+enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_DIR,
+       OPT_CHECK, OPT_DUMP_AST };
+
+static const struct option long_options[] = {
+	{ "output", required_argument, NULL, 'o' },
+	{ "width", required_argument, NULL, 'W' },
+	{ "height", required_argument, NULL, 'H' },
+	{ "samples", required_argument, NULL, 's' },
+	{ "seed", required_argument, NULL, OPT_SEED },
+	{ "max-depth", required_argument, NULL, OPT_MAX_DEPTH },
+	{ "device", required_argument, NULL, OPT_DEVICE },
+	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
+	{ "kernel-dir", required_argument, NULL, OPT_KERNEL_DIR },
+	{ "check", no_argument, NULL, OPT_CHECK },
+	{ "dump-ast", no_argument, NULL, OPT_DUMP_AST },
+	{ "quiet", no_argument, NULL, 'q' },
+	{ "help", no_argument, NULL, 'h' },
+	{ "version", no_argument, NULL, 'V' },
+	{ NULL, 0, NULL, 0 },
+};
+
+static void usage(FILE *out)
+{
+	fprintf(out,
+		"Usage: eclat [OPTIONS] SCENE.scn\n"
+		"Render a POV-Ray-style scene with a path tracer on an OpenCL device.\n"
+		"\n"
+		"  -o, --output FILE     image to write; the extension picks the format (.png, .exr,\n"
+		"                        .hdr, .tif, .jpg); default: SCENE's name with .png\n"
+		"  -W, --width N         image width in pixels (default %d)\n"
+		"  -H, --height N        image height in pixels (default %d)\n"
+		"  -s, --samples N       samples per pixel (default %d)\n"
+		"      --seed N          random seed (default 0)\n"
+		"      --max-depth N     bounces per path (default: max_trace_level, else %d)\n"
+		"      --device N        OpenCL device to use (default: first GPU, else first CPU)\n"
+		"      --list-devices    list the OpenCL devices and exit\n"
+		"      --kernel-dir DIR  read the kernel sources from DIR instead of the built-in copy\n"
+		"      --check           parse and evaluate the scene, render nothing\n"
+		"      --dump-ast        print the syntax tree and exit\n"
+		"  -q, --quiet           print nothing but errors\n"
+		"  -h, --help            show this help and exit\n"
+		"  -V, --version         show the version and exit\n"
+		"\n"
+		"The scene language is described in eclat-scene(5), the options in eclat(1).\n",
+		DEFAULT_WIDTH, DEFAULT_HEIGHT, DEFAULT_SAMPLES, DEFAULT_MAX_DEPTH);
+}
+
+/* A whole number in [lo, hi], or exit 1 naming the option. */
+static int int_arg(const char *opt, const char *s, long lo, long hi)
+{
+	char *end;
+	errno = 0;
+	long v = strtol(s, &end, 10);
+	if (errno || end == s || *end || v < lo || v > hi) {
+		fprintf(stderr, "eclat: %s needs a whole number from %ld to %ld, not '%s'\n", opt, lo, hi, s);
+		exit(1);
+	}
+	return (int)v;
+}
+
+static void parse_options(int argc, char **argv, struct options *o)
+{
+	*o = (struct options){ .width = DEFAULT_WIDTH, .height = DEFAULT_HEIGHT,
+	                       .samples = DEFAULT_SAMPLES, .max_depth = -1, .device = -1 };
+	o->kernel_dir = getenv("ECLAT_KERNEL_DIR");
+	int c;
+	while ((c = getopt_long(argc, argv, "o:W:H:s:qhV", long_options, NULL)) != -1) {
+		switch (c) {
+		case 'o': o->output = optarg; break;
+		case 'W': o->width = int_arg("--width", optarg, 1, MAX_SIZE); break;
+		case 'H': o->height = int_arg("--height", optarg, 1, MAX_SIZE); break;
+		case 's': o->samples = int_arg("--samples", optarg, 1, 1 << 24); break;
+		case OPT_SEED: o->seed = int_arg("--seed", optarg, 0, INT_MAX); break;
+		case OPT_MAX_DEPTH: o->max_depth = int_arg("--max-depth", optarg, 0, 256); break;
+		case OPT_DEVICE: o->device = int_arg("--device", optarg, 0, 63); break;
+		case OPT_LIST_DEVICES: o->list_devices = 1; break;
+		case OPT_KERNEL_DIR: o->kernel_dir = optarg; break;
+		case OPT_CHECK: o->check = 1; break;
+		case OPT_DUMP_AST: o->dump_ast = 1; break;
+		case 'q': o->quiet = 1; break;
+		case 'h': usage(stdout); exit(0);
+		case 'V': printf("eclat %s\n", PACKAGE_VERSION); exit(0);
+		default:
+			fprintf(stderr, "Try 'eclat --help' for more information.\n");
+			exit(1);
+		}
+	}
+	if (o->list_devices)
+		return;
+	if (optind != argc - 1) {
+		fprintf(stderr, optind == argc ? "eclat: no scene file given\n" : "eclat: give one scene file, not %d\n",
+		        argc - optind);
+		fprintf(stderr, "Try 'eclat --help' for more information.\n");
+		exit(1);
+	}
+	o->scene = argv[optind];
+}
+
+/* "dir/cornell.scn" renders to "cornell.png" in the current folder, as POV-Ray does. */
+static char *default_output(const char *scene)
+{
+	const char *base = strrchr(scene, '/');
+	base = base ? base + 1 : scene;
+	const char *dot = strrchr(base, '.');
+	size_t stem = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+	char *out = malloc(stem + 5);
+	if (out)
+		snprintf(out, stem + 5, "%.*s.png", (int)stem, base);
+	return out;
+}
+
+static int same_file(const char *a, const char *b)
+{
+	struct stat sa, sb;
+	return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+/* Everything the user could get wrong about the output is checked before the
+ * render, so no minutes of work are lost to a typo in a file name. */
+static int check_output(const char *scene, const char *output)
+{
+	if (strcmp(scene, output) == 0 || same_file(scene, output)) {
+		fprintf(stderr, "eclat: refusing to write the image over the scene file '%s'\n", scene);
+		return -1;
+	}
+	char *dir = strdup(output), *slash = dir ? strrchr(dir, '/') : NULL;
+	if (slash)
+		*slash = '\0';
+	int writable = !dir || access(slash ? (slash == dir ? "/" : dir) : ".", W_OK) == 0;
+	free(dir);
+	if (!writable) {
+		fprintf(stderr, "eclat: cannot write '%s': %s\n", output, strerror(errno));
+		return -1;
+	}
+	if (!image_format_known(output)) {
+		fprintf(stderr, "eclat: cannot write '%s': unknown image format (use .png, .exr, .hdr, .tif or .jpg)\n",
+		        output);
+		return -1;
+	}
+	return 0;
+}
+
+static int render_scene(const struct options *o, const scene *s, const char *output)
+{
+	lower_result lr;
+	if (lower_scene(s, &lr)) {
+		lower_free(&lr);
+		return 1;
+	}
+	render_settings rs = {
+		.width = o->width, .height = o->height, .samples = o->samples, .seed = o->seed,
+		.max_depth = o->max_depth >= 0 ? o->max_depth
+		           : s->max_trace_level > 0 ? s->max_trace_level : DEFAULT_MAX_DEPTH,
+		.quiet = o->quiet,
+	};
+	device_ctx dev;
+	cl_program prog = NULL;
+	film f = { 0 };
+	int rc = 1;
+	if (device_open(&dev, o->device) == 0 &&
+	    (prog = device_build(&dev, o->kernel_dir, "-cl-std=CL1.2")) != NULL &&
+	    render_run(&dev, prog, &lr, &rs, &f) == 0) {
+		char err[512];
+		if (image_write(output, f.rgb, f.width, f.height, err, sizeof err) == 0)
+			rc = 0;
+		else
+			fprintf(stderr, "eclat: %s\n", err);
+	}
+	film_free(&f);
+	if (prog)
+		clReleaseProgram(prog);
+	device_close(&dev);
+	lower_free(&lr);
+	return rc;
+}
+
+int main(int argc, char **argv)
+{
+	struct options o;
+	parse_options(argc, argv, &o);
+	if (o.list_devices)
+		return device_list(stdout) < 0 ? 1 : 0;
+
+	char *output = o.output ? strdup(o.output) : default_output(o.scene);
+	if (!output)
+		return 1;
+	int rc = 1;
+	if (!o.dump_ast && !o.check && check_output(o.scene, output)) {
+		free(output);
+		return 1;
+	}
+	ast_node *tree = parse_file(o.scene, SRC_NOWHERE);
+	scene s;
+	scene_init(&s);
+	if (!tree)
+		rc = 1;
+	else if (o.dump_ast) {
+		ast_dump(tree, stdout);
+		rc = 0;
+	} else if (eval_scene(tree, &s) == 0 && diag_error_count() == 0)
+		rc = o.check ? 0 : render_scene(&o, &s, output);
+	scene_free(&s);
+	ast_free(tree);
+	diag_free_all();
+	free(output);
+	return rc;
+}

@@ -1,0 +1,1035 @@
+/* test_bvh.c: checks bvh_build's trees structurally and by ray casting.
+ *
+ *   test_bvh              random triangle soups (with degenerate triangles)
+ *   test_bvh mesh.obj     also a Wavefront OBJ mesh (v and f lines)
+ *
+ * The core check: for every ray, the closest hit found by traversing the BVH
+ * equals the closest hit found by testing every triangle, using the same
+ * ray/triangle function, so the distances must agree bit for bit. The
+ * traversal here is the reference the OpenCL kernel mirrors (see traverse).
+ * Exit status 0 = pass. Build with -I$(top_srcdir)/src -I$(top_srcdir)/kernels. */
+#include "bvh.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define SEED 0x2545F4914F6CDD1DULL
+#define N_SOUP 20000
+#define N_RAYS 100000
+#define MAX_REPORTED 8
+
+/* Slab test slack, pbrt's 1 + 2 * gamma(3) rounded up: the far distance is
+ * stretched so that rounding in the six plane distances cannot make a ray miss
+ * a box that it touches. */
+#define BOX_PAD (1.0f + 4.0f * FLT_EPSILON)
+
+/* ---- random numbers: splitmix64, fixed seed ---- */
+
+typedef struct {
+	uint64_t s;
+} rng;
+
+static uint64_t rng_u64(rng *r)
+{
+	uint64_t z = (r->s += 0x9E3779B97F4A7C15ULL);
+	z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+	z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+	return z ^ (z >> 31);
+}
+
+/* Uniform in [0, 1), 24 random bits so every value is exact in float. */
+static float rng_f(rng *r)
+{
+	return (float)(rng_u64(r) >> 40) * (1.0f / 16777216.0f);
+}
+
+static float rng_range(rng *r, float lo, float hi)
+{
+	return lo + (hi - lo) * rng_f(r);
+}
+
+static int rng_int(rng *r, int n)
+{
+	return (int)(rng_u64(r) % (uint64_t)n);
+}
+
+/* ---- small vector helpers ---- */
+
+static void sub3(float r[3], const float a[3], const float b[3])
+{
+	for (int i = 0; i < 3; i++)
+		r[i] = a[i] - b[i];
+}
+
+static void cross3(float r[3], const float a[3], const float b[3])
+{
+	r[0] = a[1] * b[2] - a[2] * b[1];
+	r[1] = a[2] * b[0] - a[0] * b[2];
+	r[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static float dot3(const float a[3], const float b[3])
+{
+	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static double now_ms(void)
+{
+	struct timespec ts;
+	timespec_get(&ts, TIME_UTC);
+	return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
+
+/* ---- triangles, rays and the intersection function ---- */
+
+/* v: the vertices (for the boxes); v0, e1, e2: what Moller-Trumbore reads,
+ * precomputed so brute force over a whole mesh stays affordable. */
+typedef struct {
+	float v[3][3];
+	float e1[3], e2[3];
+	float det2_min;
+} tri;
+
+typedef struct {
+	float o[3], d[3], inv[3];
+	int neg[3];         /* signbit of d: which plane of each slab is entered first */
+} ray;
+
+typedef struct {
+	float t;
+	int prim;           /* -1: miss */
+	int visits;         /* nodes visited */
+	int tests;          /* ray/triangle tests */
+} hit;
+
+/* A determinant below 1e-6 of |e1| |e2| (|d| = 1) means a degenerate triangle
+ * (identical or collinear vertices) or a ray within 1e-6 of its plane: t and
+ * u, v are then rounding noise, and noise can place a "hit" outside the
+ * triangle's box, which no correct BVH would find. */
+static void tri_finish(tri *t)
+{
+	sub3(t->e1, t->v[1], t->v[0]);
+	sub3(t->e2, t->v[2], t->v[0]);
+	t->det2_min = 1e-12f * dot3(t->e1, t->e1) * dot3(t->e2, t->e2);
+}
+
+static bvh_box tri_box(const tri *t)
+{
+	bvh_box b;
+	for (int a = 0; a < 3; a++) {
+		b.min[a] = fminf(t->v[0][a], fminf(t->v[1][a], t->v[2][a]));
+		b.max[a] = fmaxf(t->v[0][a], fmaxf(t->v[1][a], t->v[2][a]));
+	}
+	return b;
+}
+
+/* Moller-Trumbore: a hit with t in (1e-6, tmax) stores t and returns 1.
+ * Everything is computed before one combined test (1/det may be inf or NaN
+ * then, and fails the test): without the usual early exits there are no
+ * mispredicted branches, which makes brute force over a 70,000-triangle mesh
+ * about three times faster. The accepted hits are those of the textbook form. */
+static int intersect(const ray *r, const tri *tr, float tmax, float *t_out)
+{
+	float p[3], s[3], q[3];
+	cross3(p, r->d, tr->e2);
+	sub3(s, r->o, tr->v[0]);
+	cross3(q, s, tr->e1);
+	float det = dot3(tr->e1, p);
+	float inv_det = 1.0f / det;
+	float u = dot3(s, p) * inv_det;
+	float v = dot3(r->d, q) * inv_det;
+	float t = dot3(tr->e2, q) * inv_det;
+	int ok = (det * det > tr->det2_min) & (u >= 0.0f) & (u <= 1.0f) & (v >= 0.0f) & (u + v <= 1.0f) &
+		 (t > 1e-6f) & (t < tmax);
+	if (ok)
+		*t_out = t;
+	return ok;
+}
+
+/* d need not be normalised; zero components stay exactly zero (with their
+ * sign), so 1/d gives the infinities the slab test is built for. */
+static ray make_ray(const float o[3], const float d[3])
+{
+	ray r;
+	float len = sqrtf(dot3(d, d));
+	for (int a = 0; a < 3; a++) {
+		r.o[a] = o[a];
+		r.d[a] = d[a] / len;
+		r.inv[a] = 1.0f / r.d[a];
+		r.neg[a] = signbit(r.d[a]) != 0;
+	}
+	return r;
+}
+
+/* ---- the slab test and the traversal (the kernel mirrors these) ---- */
+
+/* Ray against box, clipped to [0, closest]. Per axis the entry plane is
+ * chosen by the direction's sign bit, not by fmin(t1, t2): when d = +-0 and
+ * the origin lies exactly in a plane, (plane - o) * inv = 0 * inf = NaN, and
+ * fmaxf/fminf ignore a NaN operand, so that plane simply imposes no limit
+ * (the ray runs inside the closed slab). The fmin(t1, t2) form would instead
+ * return the other plane's +inf and make the ray miss. Off the planes, d = 0
+ * gives +-inf of the right signs: no limit inside the slab, a miss outside.
+ * Returns 1 on a hit and the entry distance (>= 0, never NaN) in *t_entry. */
+static int slab(const bvh_node *b, const ray *r, float closest, float *t_entry)
+{
+	const float lo[3] = { b->min_x, b->min_y, b->min_z };
+	const float hi[3] = { b->max_x, b->max_y, b->max_z };
+	float t_near = 0.0f, t_far = closest;
+	for (int a = 0; a < 3; a++) {
+		float enter = r->neg[a] ? hi[a] : lo[a];
+		float leave = r->neg[a] ? lo[a] : hi[a];
+		t_near = fmaxf(t_near, (enter - r->o[a]) * r->inv[a]);
+		t_far = fminf(t_far, (leave - r->o[a]) * r->inv[a]);
+	}
+	*t_entry = t_near;
+	return t_near <= t_far * BOX_PAD;
+}
+
+/* Pops the next node whose entry distance is not beyond the closest hit;
+ * -1 when the stack runs out. */
+static int pop(const int *stack_node, const float *stack_t, int *sp, float closest)
+{
+	while (*sp > 0) {
+		--*sp;
+		if (stack_t[*sp] <= closest * BOX_PAD)
+			return stack_node[*sp];
+	}
+	return -1;
+}
+
+/* Closest hit by stack traversal. At an interior node both children are
+ * slab-tested against [0, closest]; if both are hit, the one with the smaller
+ * entry distance is visited next (the left one on a tie) and the other is
+ * pushed with its entry distance; if one is hit it is visited; if none, or at a
+ * leaf after testing its triangles, the stack is popped, skipping entries whose
+ * entry distance exceeds the (possibly shrunk) closest hit. The stack needs
+ * depth - 1 entries: stacked nodes have strictly increasing depths. */
+static hit traverse(const bvh_tree *t, const tri *tris, const ray *r, int *stack_node, float *stack_t)
+{
+	hit h = { INFINITY, -1, 0, 0 };
+	float t_entry;
+	if (t->n_prims == 0 || !slab(&t->nodes[0], r, h.t, &t_entry))
+		return h;
+	int sp = 0, node = 0;
+	while (node >= 0) {
+		const bvh_node *n = &t->nodes[node];
+		h.visits++;
+		if (n->count > 0) {
+			for (int i = 0; i < n->count; i++) {
+				int p = t->prim_index[n->left_first + i];
+				float tt;
+				h.tests++;
+				if (intersect(r, &tris[p], h.t, &tt)) {
+					h.t = tt;
+					h.prim = p;
+				}
+			}
+			node = pop(stack_node, stack_t, &sp, h.t);
+			continue;
+		}
+		int l = n->left_first, rr = l + 1;
+		float tl, tr;
+		int hl = slab(&t->nodes[l], r, h.t, &tl);
+		int hr = slab(&t->nodes[rr], r, h.t, &tr);
+		if (hl && hr) {
+			int near = tr < tl ? rr : l;
+			stack_node[sp] = near == l ? rr : l;
+			stack_t[sp++] = near == l ? tr : tl;
+			node = near;
+		} else if (hl || hr) {
+			node = hl ? l : rr;
+		} else {
+			node = pop(stack_node, stack_t, &sp, h.t);
+		}
+	}
+	return h;
+}
+
+static hit brute_force(const tri *tris, int n, const ray *r)
+{
+	hit h = { INFINITY, -1, 0, n };
+	for (int i = 0; i < n; i++) {
+		float tt;
+		if (intersect(r, &tris[i], h.t, &tt)) {
+			h.t = tt;
+			h.prim = i;
+		}
+	}
+	return h;
+}
+
+/* ---- reporting ---- */
+
+static int n_errors;
+
+/* Counts an error and prints the first few. */
+static void fail(const char *fmt, ...)
+{
+	if (n_errors++ >= MAX_REPORTED) {
+		if (n_errors == MAX_REPORTED + 1)
+			printf("  (further errors not shown)\n");
+		return;
+	}
+	va_list ap;
+	va_start(ap, fmt);
+	printf("  FAIL: ");
+	vprintf(fmt, ap);
+	printf("\n");
+	va_end(ap);
+}
+
+/* ---- structural checks ---- */
+
+static bvh_box node_box(const bvh_node *n)
+{
+	bvh_box b = { { n->min_x, n->min_y, n->min_z }, { n->max_x, n->max_y, n->max_z } };
+	return b;
+}
+
+static int box_contains(const bvh_box *outer, const bvh_box *inner)
+{
+	for (int a = 0; a < 3; a++)
+		if (!(outer->min[a] <= inner->min[a] && inner->max[a] <= outer->max[a]))
+			return 0;
+	return 1;
+}
+
+/* Rejects NaN, inverted boxes and infinities alike. */
+static int box_sane(const bvh_box *b)
+{
+	for (int a = 0; a < 3; a++)
+		if (!(b->min[a] <= b->max[a]) || !isfinite(b->min[a]) || !isfinite(b->max[a]))
+			return 0;
+	return 1;
+}
+
+static double area(const bvh_box *b)
+{
+	double d[3];
+	for (int a = 0; a < 3; a++)
+		d[a] = (double)b->max[a] - b->min[a];
+	return 2.0 * (d[0] * d[1] + d[1] * d[2] + d[2] * d[0]);
+}
+
+static void check_leaf(const bvh_tree *t, int node, const bvh_box *boxes, int n, int *seen)
+{
+	const bvh_node *nd = &t->nodes[node];
+	bvh_box b = node_box(nd);
+	if (nd->count > BVH_MAX_LEAF || nd->left_first < 0 || nd->left_first + nd->count > t->n_prims) {
+		fail("leaf %d: count %d, first %d out of range", node, nd->count, nd->left_first);
+		return;
+	}
+	for (int i = 0; i < nd->count; i++) {
+		int p = t->prim_index[nd->left_first + i];
+		if (p < 0 || p >= n) {
+			fail("leaf %d: primitive index %d out of range", node, p);
+			continue;
+		}
+		seen[p]++;
+		if (!box_contains(&b, &boxes[p]))
+			fail("leaf %d does not contain the box of primitive %d", node, p);
+	}
+}
+
+/* Returns the child index, or -1 after reporting why the node is broken.
+ * Children must come after their parent, which also rules out cycles. */
+static int check_interior(const bvh_tree *t, int node)
+{
+	const bvh_node *nd = &t->nodes[node];
+	int l = nd->left_first;
+	if (nd->count < 0 || l <= node || l + 1 >= t->n_nodes) {
+		fail("node %d: count %d, children %d out of range", node, nd->count, l);
+		return -1;
+	}
+	bvh_box b = node_box(nd);
+	for (int c = l; c <= l + 1; c++) {
+		bvh_box cb = node_box(&t->nodes[c]);
+		if (!box_contains(&b, &cb))
+			fail("node %d does not contain its child %d", node, c);
+	}
+	return l;
+}
+
+/* Walks the tree from the root: every node once, every primitive once, boxes
+ * nested, depth and SAH cost as recomputed here. */
+static void check_tree(const bvh_tree *t, const bvh_box *boxes, int n)
+{
+	if (n == 0) {
+		if (t->n_nodes != 1 || t->n_prims != 0 || t->nodes[0].count != 0 || t->nodes[0].left_first != 0)
+			fail("empty tree: %d nodes, %d prims", t->n_nodes, t->n_prims);
+		return;
+	}
+	if (t->n_prims != n || t->n_nodes < 1 || t->n_nodes > 2 * n - 1) {
+		fail("tree of %d prims has %d nodes and n_prims %d", n, t->n_nodes, t->n_prims);
+		return;
+	}
+	int *seen = calloc((size_t)n, sizeof *seen);
+	char *reached = calloc((size_t)t->n_nodes, 1);
+	int *stack = malloc((size_t)t->n_nodes * 2 * sizeof *stack);
+	if (!seen || !reached || !stack) {
+		fail("out of memory in check_tree");
+		goto done;
+	}
+	int sp = 0, max_depth = 0, n_reached = 0;
+	bvh_box root = node_box(&t->nodes[0]);
+	double sah = 0.0, root_area = area(&root);
+	stack[sp++] = 0;
+	stack[sp++] = 1;
+	while (sp > 0) {
+		int depth = stack[--sp], node = stack[--sp];
+		if (reached[node]++) {
+			fail("node %d reached twice", node);
+			continue;
+		}
+		n_reached++;
+		max_depth = depth > max_depth ? depth : max_depth;
+		const bvh_node *nd = &t->nodes[node];
+		bvh_box b = node_box(nd);
+		if (!box_sane(&b))
+			fail("node %d has a NaN, infinite or inverted box", node);
+		double ratio = root_area > 0.0 ? area(&b) / root_area : 1.0;
+		sah += nd->count > 0 ? ratio * nd->count : ratio;
+		if (nd->count > 0) {
+			check_leaf(t, node, boxes, n, seen);
+			continue;
+		}
+		int l = check_interior(t, node);
+		if (l < 0 || sp + 4 > 2 * t->n_nodes)
+			continue;
+		stack[sp++] = l;
+		stack[sp++] = depth + 1;
+		stack[sp++] = l + 1;
+		stack[sp++] = depth + 1;
+	}
+	for (int p = 0; p < n; p++)
+		if (seen[p] != 1)
+			fail("primitive %d appears %d times in leaves", p, seen[p]);
+	if (n_reached != t->n_nodes)
+		fail("%d of %d nodes reachable from the root", n_reached, t->n_nodes);
+	if (max_depth != t->depth)
+		fail("depth %d, recomputed %d", t->depth, max_depth);
+	if (!(fabs(sah - t->sah_cost) <= 1e-4 * sah))
+		fail("sah_cost %.6f, recomputed %.6f", t->sah_cost, sah);
+done:
+	free(seen);
+	free(reached);
+	free(stack);
+}
+
+/* ---- the property check: BVH closest hit == brute-force closest hit ---- */
+
+typedef struct {
+	int rays, hits, flagged, flagged_hits;
+	long long visits, tests;
+	double ms_bvh;
+} stats;
+
+/* Equal when both miss, or both hit at bitwise the same distance; a different
+ * primitive is accepted only if it really hits at that same distance (a tie). */
+static int same_hit(const hit *a, const hit *b, const tri *tris, const ray *r)
+{
+	if (a->prim < 0 || b->prim < 0)
+		return a->prim == b->prim;
+	if (memcmp(&a->t, &b->t, sizeof a->t) != 0)
+		return 0;
+	if (a->prim == b->prim)
+		return 1;
+	float tt;
+	return intersect(r, &tris[a->prim], INFINITY, &tt) && memcmp(&tt, &a->t, sizeof tt) == 0;
+}
+
+/* flags (may be NULL) marks rays whose hits are counted separately. */
+static void check_rays(const bvh_tree *t, const tri *tris, int n, const ray *rays, int n_rays,
+		       const char *flags, stats *st)
+{
+	int depth = t->depth > 0 ? t->depth : 1;
+	int *stack_node = malloc((size_t)depth * sizeof *stack_node);
+	float *stack_t = malloc((size_t)depth * sizeof *stack_t);
+	hit *got = malloc((size_t)n_rays * sizeof *got);
+	memset(st, 0, sizeof *st);
+	if (!stack_node || !stack_t || !got) {
+		fail("out of memory in check_rays");
+		goto done;
+	}
+	double t0 = now_ms();
+	for (int i = 0; i < n_rays; i++)
+		got[i] = traverse(t, tris, &rays[i], stack_node, stack_t);
+	st->ms_bvh = now_ms() - t0;
+	for (int i = 0; i < n_rays; i++) {
+		hit want = brute_force(tris, n, &rays[i]);
+		const ray *r = &rays[i];
+		st->rays++;
+		st->hits += want.prim >= 0;
+		st->visits += got[i].visits;
+		st->tests += got[i].tests;
+		if (flags && flags[i]) {
+			st->flagged++;
+			st->flagged_hits += want.prim >= 0;
+		}
+		if (!same_hit(&got[i], &want, tris, r))
+			fail("ray %d o (%.9g %.9g %.9g) d (%a %a %a): bvh t %.9g prim %d, brute force t %.9g prim %d",
+			     i, r->o[0], r->o[1], r->o[2], r->d[0], r->d[1], r->d[2],
+			     got[i].t, got[i].prim, want.t, want.prim);
+	}
+done:
+	free(stack_node);
+	free(stack_t);
+	free(got);
+}
+
+static void print_stats(const char *name, const stats *st)
+{
+	printf("  %s: %d rays, %d hits, %.2f node visits/ray, %.2f triangle tests/ray, traversal %.1f ms\n",
+	       name, st->rays, st->hits, (double)st->visits / st->rays, (double)st->tests / st->rays, st->ms_bvh);
+	if (st->flagged)
+		printf("  %s: %d rays lying in a box face plane (0 * inf in the slab test), %d of them hit\n",
+		       name, st->flagged, st->flagged_hits);
+}
+
+/* ---- building ---- */
+
+static bvh_box *make_boxes(const tri *tris, int n)
+{
+	bvh_box *boxes = malloc((size_t)(n > 0 ? n : 1) * sizeof *boxes);
+	for (int i = 0; boxes && i < n; i++)
+		boxes[i] = tri_box(&tris[i]);
+	return boxes;
+}
+
+/* Builds (best time of a few builds when timing matters), checks the
+ * structure and prints the tree's figures. Returns 0 on success. */
+static int build_checked(const char *name, const tri *tris, int n, int repeats, bvh_tree *t)
+{
+	bvh_box *boxes = make_boxes(tris, n);
+	if (!boxes) {
+		fail("%s: out of memory", name);
+		return -1;
+	}
+	double best = INFINITY;
+	int rc = 0;
+	for (int k = 0; k < repeats && rc == 0; k++) {
+		if (k > 0)
+			bvh_free(t);
+		double t0 = now_ms();
+		rc = bvh_build(boxes, n, t);
+		double ms = now_ms() - t0;
+		best = ms < best ? ms : best;
+	}
+	if (rc != 0) {
+		fail("%s: bvh_build returned %d", name, rc);
+		free(boxes);
+		return -1;
+	}
+	int before = n_errors;
+	check_tree(t, boxes, n);
+	printf("  %s: %d triangles, %d nodes, depth %d, SAH cost %.3f, build %.2f ms%s\n", name, n,
+	       t->n_nodes, t->depth, t->sah_cost, best, n_errors == before ? ", structure ok" : "");
+	free(boxes);
+	return n_errors == before ? 0 : -1;
+}
+
+/* ---- random soups ---- */
+
+static void random_point(rng *r, float p[3])
+{
+	for (int a = 0; a < 3; a++)
+		p[a] = rng_f(r);
+}
+
+static float clamp01(float x)
+{
+	return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x);
+}
+
+/* Vertex near c, up to size away on each axis, kept in the unit cube. */
+static void near_point(rng *r, const float c[3], float size, float p[3])
+{
+	for (int a = 0; a < 3; a++)
+		p[a] = clamp01(c[a] + rng_range(r, -size, size));
+}
+
+/* A triangle with an edge in the plane axis = c, where c is on a 1/64 grid,
+ * and its third vertex off that plane: the plane is then a face of the
+ * triangle's box, and rays lying in it can hit the edge. */
+static void edge_on_plane(rng *r, tri *t, int axis)
+{
+	float c = (float)(1 + rng_int(r, 62)) / 64.0f, centre[3];
+	random_point(r, centre);
+	for (int k = 0; k < 3; k++)
+		near_point(r, centre, 0.05f, t->v[k]);
+	t->v[0][axis] = c;
+	t->v[1][axis] = c;
+	t->v[2][axis] = c + (rng_f(r) < 0.5f ? -1.0f : 1.0f) * rng_range(r, 0.002f, 0.05f);
+}
+
+/* Random soup in the unit cube: about 3% with two identical vertices, 3%
+ * collinear (half exactly, along an axis), 3% with all vertices identical, 6%
+ * flat in z, 3% flat in x or y, 4% edge_on_plane (axis noted in edge_axis[]),
+ * the rest ordinary triangles of assorted sizes. */
+static void make_soup(rng *r, tri *tris, int n, signed char *edge_axis)
+{
+	for (int i = 0; i < n; i++) {
+		tri *t = &tris[i];
+		float u = rng_f(r), centre[3], size = 0.002f + 0.06f * rng_f(r) * rng_f(r);
+		if (rng_f(r) < 0.01f)
+			size = 0.5f;
+		random_point(r, centre);
+		for (int k = 0; k < 3; k++)
+			near_point(r, centre, size, t->v[k]);
+		edge_axis[i] = -1;
+		if (u < 0.03f) {
+			memcpy(t->v[1], t->v[0], sizeof t->v[0]);
+		} else if (u < 0.045f) {
+			int a = rng_int(r, 3);
+			memcpy(t->v[1], t->v[0], sizeof t->v[0]);
+			memcpy(t->v[2], t->v[0], sizeof t->v[0]);
+			t->v[1][a] = clamp01(t->v[0][a] + size);
+			t->v[2][a] = clamp01(t->v[0][a] - size);
+		} else if (u < 0.06f) {
+			float s = rng_range(r, -0.5f, 1.5f);
+			for (int a = 0; a < 3; a++)
+				t->v[2][a] = t->v[0][a] + s * (t->v[1][a] - t->v[0][a]);
+		} else if (u < 0.09f) {
+			memcpy(t->v[1], t->v[0], sizeof t->v[0]);
+			memcpy(t->v[2], t->v[0], sizeof t->v[0]);
+		} else if (u < 0.15f) {
+			t->v[1][2] = t->v[2][2] = t->v[0][2];
+		} else if (u < 0.18f) {
+			int a = rng_int(r, 2);
+			t->v[1][a] = t->v[2][a] = t->v[0][a];
+		} else if (u < 0.22f) {
+			edge_axis[i] = (signed char)rng_int(r, 3);
+			edge_on_plane(r, t, edge_axis[i]);
+		}
+		tri_finish(t);
+	}
+}
+
+static void random_direction(rng *r, float d[3])
+{
+	float z = rng_range(r, -1.0f, 1.0f), phi = 6.2831853f * rng_f(r);
+	float s = sqrtf(fmaxf(0.0f, 1.0f - z * z));
+	d[0] = s * cosf(phi);
+	d[1] = s * sinf(phi);
+	d[2] = z;
+}
+
+/* Outside the unit cube, at most 3 away from it. */
+static void outside_point(rng *r, float p[3])
+{
+	for (;;) {
+		float d2 = 0.0f;
+		for (int a = 0; a < 3; a++) {
+			p[a] = rng_range(r, -3.0f, 4.0f);
+			float e = p[a] < 0.0f ? -p[a] : (p[a] > 1.0f ? p[a] - 1.0f : 0.0f);
+			d2 += e * e;
+		}
+		if (d2 > 0.0f && d2 <= 9.0f)
+			return;
+	}
+}
+
+/* A zero of random sign: -0 gives 1/d = -inf, the other half of the cases. */
+static float signed_zero(rng *r)
+{
+	return rng_f(r) < 0.5f ? 0.0f : -0.0f;
+}
+
+/* A ray lying in a face plane of some triangle's box: either along the
+ * edge_on_plane edge (so it can hit it through the NaN case of the slab test)
+ * or through a vertex in one of its coordinate planes. */
+static ray plane_ray(rng *r, const tri *tris, int n, const signed char *edge_axis)
+{
+	int i = rng_int(r, n), axis = rng_int(r, 3), v = rng_int(r, 3);
+	float target[3], o[3], d[3];
+	for (int k = 0; k < 50 && edge_axis[i] < 0; k++)
+		i = rng_int(r, n);
+	if (edge_axis[i] >= 0) {
+		float s = rng_f(r);
+		axis = edge_axis[i];
+		for (int a = 0; a < 3; a++)
+			target[a] = tris[i].v[0][a] + s * (tris[i].v[1][a] - tris[i].v[0][a]);
+		target[axis] = tris[i].v[0][axis];
+	} else {
+		memcpy(target, tris[i].v[v], sizeof target);
+	}
+	for (int a = 0; a < 3; a++)
+		o[a] = target[a] + rng_range(r, -2.0f, 2.0f);
+	o[axis] = target[axis];
+	sub3(d, target, o);
+	d[axis] = signed_zero(r);
+	return make_ray(o, d);
+}
+
+/* Directions exactly along an axis (two zero components) or in a coordinate
+ * plane (one zero component). */
+static ray axis_ray(rng *r, int zeros)
+{
+	float o[3], d[3], target[3];
+	if (rng_f(r) < 0.5f)
+		random_point(r, o);
+	else
+		outside_point(r, o);
+	random_point(r, target);
+	sub3(d, target, o);
+	int keep = rng_int(r, 3);
+	for (int a = 0; a < 3; a++) {
+		int zero = zeros == 2 ? a != keep : a == keep;
+		if (zero) {
+			o[a] = target[a];
+			d[a] = signed_zero(r);
+		}
+	}
+	if (zeros == 2 && d[keep] == 0.0f)
+		d[keep] = 1.0f;
+	return make_ray(o, d);
+}
+
+/* A random point of the triangle (by barycentric coordinates). */
+static void point_on_tri(rng *r, const tri *t, float p[3])
+{
+	float u = rng_f(r), v = rng_f(r);
+	if (u + v > 1.0f) {
+		u = 1.0f - u;
+		v = 1.0f - v;
+	}
+	for (int a = 0; a < 3; a++)
+		p[a] = t->v[0][a] + u * (t->v[1][a] - t->v[0][a]) + v * (t->v[2][a] - t->v[0][a]);
+}
+
+static ray soup_ray(rng *r, const tri *tris, int n, const signed char *edge_axis, char *flag)
+{
+	float u = rng_f(r), o[3], d[3];
+	*flag = 0;
+	if (u < 0.35f) {
+		random_point(r, o);
+		random_direction(r, d);
+	} else if (u < 0.55f) {
+		outside_point(r, o);
+		random_direction(r, d);
+	} else if (u < 0.62f) {
+		float target[3];
+		outside_point(r, o);
+		random_point(r, target);
+		sub3(d, target, o);
+	} else if (u < 0.72f) {
+		float target[3];
+		if (rng_f(r) < 0.5f)
+			random_point(r, o);
+		else
+			outside_point(r, o);
+		point_on_tri(r, &tris[rng_int(r, n)], target);
+		sub3(d, target, o);
+	} else if (u < 0.82f) {
+		return axis_ray(r, 2);
+	} else if (u < 0.90f) {
+		return axis_ray(r, 1);
+	} else {
+		*flag = 1;
+		return plane_ray(r, tris, n, edge_axis);
+	}
+	return make_ray(o, d);
+}
+
+/* The textbook fmin(t1, t2) / fmax(t1, t2) slab test, only to show in
+ * check_slab which boundary cases it gets wrong. */
+static int naive_slab(const bvh_node *b, const ray *r, float closest)
+{
+	const float lo[3] = { b->min_x, b->min_y, b->min_z };
+	const float hi[3] = { b->max_x, b->max_y, b->max_z };
+	float t_near = 0.0f, t_far = closest;
+	for (int a = 0; a < 3; a++) {
+		float t1 = (lo[a] - r->o[a]) * r->inv[a], t2 = (hi[a] - r->o[a]) * r->inv[a];
+		t_near = fmaxf(t_near, fminf(t1, t2));
+		t_far = fminf(t_far, fmaxf(t1, t2));
+	}
+	return t_near <= t_far * BOX_PAD;
+}
+
+/* Unit cases for the slab test around the 0 * inf = NaN corner, against the
+ * box [0,1]^3 and the flat box x = 0.5. */
+static void check_slab(void)
+{
+	static const struct {
+		float box[6], o[3], d[3];
+		int expect;
+	} cases[] = {
+		{ { 0, 0, 0, 1, 1, 1 }, { 0, 0.5f, -1 }, { 0, 0, 1 }, 1 },     /* in the x = min face */
+		{ { 0, 0, 0, 1, 1, 1 }, { 0, 0.5f, -1 }, { -0.0f, 0, 1 }, 1 },
+		{ { 0, 0, 0, 1, 1, 1 }, { 1, 0.5f, -1 }, { 0, 0, 1 }, 1 },     /* in the x = max face */
+		{ { 0, 0, 0, 1, 1, 1 }, { 1, 0.5f, -1 }, { -0.0f, 0, 1 }, 1 },
+		{ { 0, 0, 0, 1, 1, 1 }, { 0, 0, -1 }, { 0, 0, 1 }, 1 },        /* along an edge */
+		{ { 0, 0, 0, 1, 1, 1 }, { 1, 1, 2 }, { 0, -0.0f, -1 }, 1 },
+		{ { 0.5f, 0, 0, 0.5f, 1, 1 }, { 0.5f, 0.5f, -1 }, { 0, 0, 1 }, 1 },   /* in a flat box */
+		{ { 0.5f, 0, 0, 0.5f, 1, 1 }, { 0.5f, 0.5f, -1 }, { -0.0f, 0, 1 }, 1 },
+		{ { 0.5f, 0, 0, 0.5f, 1, 1 }, { -1, 0.5f, 0.5f }, { 1, 0, 0 }, 1 },   /* through a flat box */
+		{ { 0, 0, 0, 1, 1, 1 }, { 0.5f, 0.5f, 0.5f }, { 0, 0, 1 }, 1 },       /* from inside */
+		{ { 0, 0, 0, 1, 1, 1 }, { -0.1f, 0.5f, -1 }, { 0, 0, 1 }, 0 },  /* beside the slab */
+		{ { 0, 0, 0, 1, 1, 1 }, { 1.1f, 0.5f, -1 }, { -0.0f, 0, 1 }, 0 },
+		{ { 0, 0, 0, 1, 1, 1 }, { 0.5f, 0.5f, 2 }, { 0, 0, 1 }, 0 },    /* box behind */
+		{ { 0.5f, 0, 0, 0.5f, 1, 1 }, { 0.4f, 0.5f, -1 }, { 0, 0, 1 }, 0 },
+	};
+	int n = (int)(sizeof cases / sizeof cases[0]), ok = 0, naive_ok = 0;
+	for (int i = 0; i < n; i++) {
+		const float *b = cases[i].box;
+		bvh_node node = { b[0], b[1], b[2], 0, b[3], b[4], b[5], 1 };
+		ray r = make_ray(cases[i].o, cases[i].d);
+		float t;
+		int got = slab(&node, &r, INFINITY, &t);
+		naive_ok += naive_slab(&node, &r, INFINITY) == cases[i].expect;
+		if (got != cases[i].expect || isnan(t))
+			fail("slab case %d: got %d, expected %d (t %g)", i, got, cases[i].expect, t);
+		else
+			ok++;
+	}
+	printf("slab test: %d of %d boundary cases ok (the fmin(t1, t2) form: %d of %d)\n", ok, n, naive_ok, n);
+}
+
+/* Builds over a soup and checks n_rays soup rays. */
+static void soup_test(const char *name, rng *r, int n, int n_rays, int repeats)
+{
+	tri *tris = malloc((size_t)(n > 0 ? n : 1) * sizeof *tris);
+	signed char *edge_axis = malloc((size_t)(n > 0 ? n : 1));
+	ray *rays = malloc((size_t)n_rays * sizeof *rays);
+	char *flags = malloc((size_t)n_rays);
+	bvh_tree t;
+	stats st;
+	if (!tris || !edge_axis || !rays || !flags) {
+		fail("%s: out of memory", name);
+		goto done;
+	}
+	make_soup(r, tris, n, edge_axis);
+	if (build_checked(name, tris, n, repeats, &t) != 0)
+		goto done;
+	for (int i = 0; i < n_rays; i++)
+		rays[i] = soup_ray(r, tris, n, edge_axis, &flags[i]);
+	check_rays(&t, tris, n, rays, n_rays, flags, &st);
+	print_stats(name, &st);
+	bvh_free(&t);
+done:
+	free(tris);
+	free(edge_axis);
+	free(rays);
+	free(flags);
+}
+
+static void empty_test(void)
+{
+	bvh_tree t;
+	if (bvh_build(NULL, 0, &t) != 0) {
+		fail("n = 0: bvh_build failed");
+		return;
+	}
+	check_tree(&t, NULL, 0);
+	ray r = make_ray((const float[3]){ 0, 0, -1 }, (const float[3]){ 0, 0, 1 });
+	hit h = traverse(&t, NULL, &r, NULL, NULL);
+	if (h.prim != -1)
+		fail("n = 0: a ray hit the empty tree");
+	bvh_free(&t);
+	if (t.nodes || t.prim_index || t.n_nodes || t.n_prims)
+		fail("bvh_free did not zero the tree");
+	printf("  n=0: %s\n", "one empty node, every ray misses");
+}
+
+/* ---- OBJ meshes ---- */
+
+typedef struct {
+	float (*v)[3];
+	int n_v, cap_v;
+	tri *t;
+	int n_t, cap_t;
+} mesh;
+
+/* Room for index need: returns p, or a bigger block (*cap updated), or NULL
+ * when out of memory (p is then still valid). */
+static void *grow(void *p, int *cap, int need, size_t elem)
+{
+	if (need < *cap)
+		return p;
+	int c = *cap ? *cap : 1024;
+	while (c <= need)
+		c *= 2;
+	void *q = realloc(p, (size_t)c * elem);
+	if (q)
+		*cap = c;
+	return q;
+}
+
+static int obj_vertex(mesh *m, const char *s)
+{
+	char *end;
+	float x[3];
+	for (int a = 0; a < 3; a++) {
+		x[a] = strtof(s, &end);
+		if (end == s)
+			return -1;
+		s = end;
+	}
+	void *q = grow(m->v, &m->cap_v, m->n_v, sizeof *m->v);
+	if (!q)
+		return -1;
+	m->v = q;
+	memcpy(m->v[m->n_v++], x, sizeof x);
+	return 0;
+}
+
+/* "f a b c ...", each corner "i", "i/j", "i//k" or "i/j/k"; polygons are
+ * split into a fan. Negative indices count back from the last vertex. */
+static int obj_face(mesh *m, const char *s)
+{
+	int idx[64], n = 0;
+	for (;;) {
+		while (*s == ' ' || *s == '\t')
+			s++;
+		if (*s == '\0' || *s == '\n' || *s == '\r')
+			break;
+		char *end;
+		long i = strtol(s, &end, 10);
+		if (end == s || n == 64)
+			return -1;
+		i = i < 0 ? m->n_v + i : i - 1;
+		if (i < 0 || i >= m->n_v)
+			return -1;
+		idx[n++] = (int)i;
+		s = end;
+		while (*s && *s != ' ' && *s != '\t' && *s != '\n' && *s != '\r')
+			s++;
+	}
+	if (n < 3)
+		return -1;
+	for (int k = 2; k < n; k++) {
+		void *q = grow(m->t, &m->cap_t, m->n_t, sizeof *m->t);
+		if (!q)
+			return -1;
+		m->t = q;
+		tri *t = &m->t[m->n_t++];
+		memcpy(t->v[0], m->v[idx[0]], sizeof t->v[0]);
+		memcpy(t->v[1], m->v[idx[k - 1]], sizeof t->v[1]);
+		memcpy(t->v[2], m->v[idx[k]], sizeof t->v[2]);
+		tri_finish(t);
+	}
+	return 0;
+}
+
+static int load_obj(const char *path, mesh *m)
+{
+	char line[4096];
+	int line_no = 0, rc = 0;
+	FILE *f = fopen(path, "r");
+	memset(m, 0, sizeof *m);
+	if (!f) {
+		printf("cannot open %s\n", path);
+		return -1;
+	}
+	while (rc == 0 && fgets(line, sizeof line, f)) {
+		line_no++;
+		if (!strchr(line, '\n') && !feof(f))
+			rc = -1;
+		else if (line[0] == 'v' && (line[1] == ' ' || line[1] == '\t'))
+			rc = obj_vertex(m, line + 2);
+		else if (line[0] == 'f' && (line[1] == ' ' || line[1] == '\t'))
+			rc = obj_face(m, line + 2);
+	}
+	fclose(f);
+	if (rc != 0)
+		printf("%s:%d: cannot parse (or out of memory)\n", path, line_no);
+	return rc;
+}
+
+static void mesh_bounds(const mesh *m, float lo[3], float hi[3])
+{
+	for (int a = 0; a < 3; a++) {
+		lo[a] = INFINITY;
+		hi[a] = -INFINITY;
+	}
+	for (int i = 0; i < m->n_t; i++)
+		for (int k = 0; k < 3; k++)
+			for (int a = 0; a < 3; a++) {
+				lo[a] = fminf(lo[a], m->t[i].v[k][a]);
+				hi[a] = fmaxf(hi[a], m->t[i].v[k][a]);
+			}
+}
+
+/* From a random point on a sphere around the mesh towards a random point in
+ * its box; one ray in ten runs exactly along an axis instead. */
+static ray mesh_ray(rng *r, const float lo[3], const float hi[3])
+{
+	float centre[3], target[3], o[3], d[3], radius = 0.0f;
+	for (int a = 0; a < 3; a++) {
+		centre[a] = 0.5f * (lo[a] + hi[a]);
+		radius += (hi[a] - lo[a]) * (hi[a] - lo[a]);
+		target[a] = rng_range(r, lo[a], hi[a]);
+	}
+	radius = 0.75f * sqrtf(radius);     /* 1.5 times the box's half diagonal */
+	if (rng_f(r) < 0.1f) {
+		int axis = rng_int(r, 3);
+		float s = rng_f(r) < 0.5f ? -1.0f : 1.0f;
+		memcpy(o, target, sizeof o);
+		o[axis] = centre[axis] - s * radius;
+		d[0] = d[1] = d[2] = 0.0f;
+		d[axis] = s;
+		return make_ray(o, d);
+	}
+	random_direction(r, d);
+	for (int a = 0; a < 3; a++)
+		o[a] = centre[a] + radius * d[a];
+	sub3(d, target, o);
+	return make_ray(o, d);
+}
+
+static void mesh_test(const char *path, rng *r)
+{
+	mesh m;
+	bvh_tree t;
+	stats st;
+	ray *rays = NULL;
+	float lo[3], hi[3];
+	printf("mesh %s:\n", path);
+	if (load_obj(path, &m) != 0 || m.n_t == 0) {
+		fail("%s: no triangles loaded", path);
+		goto done;
+	}
+	if (build_checked("mesh", m.t, m.n_t, 5, &t) != 0)
+		goto done;
+	rays = malloc((size_t)N_RAYS * sizeof *rays);
+	if (!rays) {
+		fail("out of memory");
+		bvh_free(&t);
+		goto done;
+	}
+	mesh_bounds(&m, lo, hi);
+	for (int i = 0; i < N_RAYS; i++)
+		rays[i] = mesh_ray(r, lo, hi);
+	check_rays(&t, m.t, m.n_t, rays, N_RAYS, NULL, &st);
+	print_stats("mesh", &st);
+	bvh_free(&t);
+done:
+	free(rays);
+	free(m.v);
+	free(m.t);
+}
+
+int main(int argc, char **argv)
+{
+	rng r = { SEED };
+	printf("test_bvh: seed 0x%016llx, BVH_MAX_LEAF %d\n", (unsigned long long)SEED, BVH_MAX_LEAF);
+	check_slab();
+	printf("tiny trees:\n");
+	empty_test();
+	soup_test("n=1", &r, 1, 20000, 1);
+	soup_test("n=2", &r, 2, 20000, 1);
+	soup_test("n=5", &r, 5, 20000, 1);
+	printf("soup:\n");
+	soup_test("soup", &r, N_SOUP, N_RAYS, 5);
+	if (argc > 1)
+		mesh_test(argv[1], &r);
+	printf("%s: %d error%s\n", n_errors ? "FAIL" : "PASS", n_errors, n_errors == 1 ? "" : "s");
+	return n_errors ? 1 : 0;
+}
