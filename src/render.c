@@ -13,7 +13,7 @@
 	X(materials, (LR)->materials, (LR)->n_materials * sizeof(dev_material), CL_MEM_READ_ONLY) \
 	X(lights, (LR)->lights, (LR)->n_lights * sizeof(dev_light), CL_MEM_READ_ONLY) \
 	X(params, (PARAMS), sizeof(dev_params), CL_MEM_READ_ONLY) \
-	X(accum, NULL, (NPIX) * 4 * sizeof(float), CL_MEM_READ_WRITE)
+	X(film, NULL, (NPIX) * 4 * sizeof(float), CL_MEM_READ_WRITE)
 
 enum {
 #define X(NAME, PTR, BYTES, FLAGS) BUF_##NAME,
@@ -46,7 +46,7 @@ static int run_passes(device_ctx *d, cl_kernel k, cl_mem *bufs, dev_params *para
 {
 	cl_int err;
 	float zero = 0.0f;
-	err = clEnqueueFillBuffer(d->queue, bufs[BUF_accum], &zero, sizeof zero, 0, npix * 4 * sizeof(float),
+	err = clEnqueueFillBuffer(d->queue, bufs[BUF_film], &zero, sizeof zero, 0, npix * 4 * sizeof(float),
 	                          0, NULL, NULL);
 	if (err != CL_SUCCESS)
 		return device_fail("clEnqueueFillBuffer", err);
@@ -68,6 +68,33 @@ static int run_passes(device_ctx *d, cl_kernel k, cl_mem *bufs, dev_params *para
 	return err == CL_SUCCESS ? 0 : device_fail("clFinish", err);
 }
 
+static double gib(double bytes)
+{
+	return bytes / (1024.0 * 1024.0 * 1024.0);
+}
+
+/* Says which buffer does not fit the device, with the numbers, before any is made. */
+static int check_fits(const device_ctx *d, lower_result *lr, const dev_params *params, size_t npix)
+{
+	double total = 0;
+	(void)params;
+#define X(NAME, PTR, BYTES, FLAGS) \
+	if ((double)(BYTES) > (double)d->max_alloc) { \
+		fprintf(stderr, "eclat: the %s buffer needs %.2f GiB, more than the %.2f GiB %s allows " \
+		        "in one buffer\n", #NAME, gib(BYTES), gib(d->max_alloc), d->name); \
+		return -1; \
+	} \
+	total += (double)(BYTES);
+	RENDER_BUFFERS(X, lr, params, npix)
+#undef X
+	if (total > (double)d->global_mem) {
+		fprintf(stderr, "eclat: the scene and image need %.2f GiB, more than the %.2f GiB of %s\n",
+		        gib(total), gib(d->global_mem), d->name);
+		return -1;
+	}
+	return 0;
+}
+
 int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_settings *rs, film *f)
 {
 	size_t npix = (size_t)rs->width * rs->height;
@@ -79,6 +106,8 @@ int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_se
 	params.n_lights = lr->n_lights;
 	params.n_prims = lr->n_prims;
 
+	if (check_fits(d, lr, &params, npix))
+		return -1;
 	cl_int err = CL_SUCCESS;
 	cl_mem bufs[BUF_COUNT] = { 0 };
 	int rc = -1;
@@ -110,7 +139,7 @@ int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_se
 		fprintf(stderr, "eclat: out of memory for a %dx%d film\n", rs->width, rs->height);
 		goto out;
 	}
-	err = clEnqueueReadBuffer(d->queue, bufs[BUF_accum], CL_TRUE, 0, npix * 4 * sizeof *sums, sums,
+	err = clEnqueueReadBuffer(d->queue, bufs[BUF_film], CL_TRUE, 0, npix * 4 * sizeof *sums, sums,
 	                          0, NULL, NULL);
 	if (err != CL_SUCCESS) {
 		device_fail("clEnqueueReadBuffer", err);
