@@ -75,6 +75,8 @@ item:
 
 block:
 	T_BLOCK_KW '{' items '}'      { $$ = $3; $$->kw = $1; $$->loc = L(@1); }
+	| T_IDENT '{' items '}'       { $$ = $3; $$->kw = KW_UNKNOWN; $$->str = $1; $$->loc = L(@1);
+	                                /* the evaluator says "'box' is not supported yet" */ }
 	;
 
 directive:

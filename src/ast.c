@@ -129,8 +129,10 @@ static void dump(const ast_node *n, FILE *out, int indent)
 	case AST_VECTOR: fputs("vector", out); break;
 	case AST_BINARY:
 	case AST_UNARY: fprintf(out, "%c", n->op); break;
-	case AST_COLOR:
 	case AST_BLOCK:
+		fputs(n->kw == KW_UNKNOWN ? n->str : ast_keyword_name(n->kw), out);
+		break;
+	case AST_COLOR:
 	case AST_ARG:
 	case AST_FLAG: fputs(ast_keyword_name(n->kw), out); break;
 	case AST_DECLARE: fprintf(out, "#%s %s", n->op == 'l' ? "local" : "declare", n->str); break;

@@ -57,7 +57,8 @@ enum kw_class {
 	X(RGBT, "rgbt", COLOR)
 
 enum ast_keyword {
-	KW_FILE = -1, /* the block that holds a whole file */
+	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */
+	KW_FILE = -1,    /* the block that holds a whole file */
 #define X(id, name, cls) KW_##id,
 	AST_KEYWORDS(X)
 #undef X

@@ -21,6 +21,8 @@ typedef struct {
 	char *str;
 	scene_object *objs; /* an object: the shapes it is made of */
 	int n_objs;
+	int compound;       /* an object made by union: mat is its own texture */
+	int has_mat;        /* the union has a texture, for its parts without one */
 	scene_material mat;
 } value;
 
@@ -221,6 +223,11 @@ static int eval_color(struct eval *e, const ast_node *n, value *out)
 		[KW_RGBT] = { 0, 1, 2, 4, -1 }, [KW_RGBFT] = { 0, 1, 2, 3, 4 },
 	};
 	int want = n->kw == KW_RGB ? 3 : n->kw == KW_RGBFT ? 5 : 4;
+	if (a.kind == V_COLOR) {   /* rgb C keeps the components rgb names, as POV-Ray does */
+		for (int i = 0; i < want; i++)
+			out->v[slots[n->kw][i]] = a.v[slots[n->kw][i]];
+		return 0;
+	}
 	if (a.kind != V_FLOAT && a.n != want) {
 		diag_error(n->kids[0]->loc, "'%s' takes a vector of %d components, found %d",
 		           ast_keyword_name(n->kw), want, a.n);
@@ -334,10 +341,34 @@ static int is_expression(const ast_node *n)
 	return n->kind <= AST_COLOR;
 }
 
+/* POV-Ray's words for what eclat cannot render yet: a scene that uses one must
+ * not render as a silently different picture. */
+static void unknown_block(const ast_node *b)
+{
+	static const char *const pov[] = {
+		"bicubic_patch", "blob", "box", "cone", "cubic", "cylinder", "difference", "disc",
+		"fog", "height_field", "interior", "intersection", "isosurface", "julia_fractal",
+		"lathe", "material", "media", "merge", "mesh", "mesh2", "normal", "ovus", "parametric",
+		"photons", "plane", "poly", "polygon", "polynomial", "prism", "quadric", "quartic",
+		"radiosity", "rainbow", "sky_sphere", "smooth_triangle", "sor", "sphere_sweep",
+		"superellipsoid", "text", "torus",
+	};
+	for (size_t i = 0; i < sizeof pov / sizeof *pov; i++)
+		if (strcmp(pov[i], b->str) == 0) {
+			diag_error(b->loc, "'%s' is not supported yet", b->str);
+			return;
+		}
+	diag_error(b->loc, "unknown keyword '%s'", b->str);
+}
+
 static int not_valid(const ast_node *item, const char *where)
 {
 	if (is_expression(item))
 		diag_error(item->loc, "unexpected expression in %s", where);
+	else if (item->kind == AST_DECLARE || item->kind == AST_INCLUDE)
+		diag_error(item->loc, "directives are not supported inside %s yet", where);
+	else if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN)
+		unknown_block(item);
 	else
 		diag_error(item->loc, "'%s' is not valid in %s", ast_keyword_name(item->kw), where);
 	return -1;
@@ -465,8 +496,22 @@ static int is_object_kw(int kw)
 static int eval_object(struct eval *e, const ast_node *b, value *out);
 
 /* The items every object accepts after its own arguments. */
-static int object_modifier(struct eval *e, const ast_node *item, value *obj, int compound,
-                           const char *where)
+/* A union's texture goes to its parts that have none of their own. This happens
+ * when the union is used (placed in the scene or in another union), so that
+ * object { U pigment { ... } } still changes the texture of U's bare parts. */
+static void resolve_texture(value *obj)
+{
+	for (int i = 0; obj->compound && obj->has_mat && i < obj->n_objs; i++)
+		if (!obj->objs[i].textured) {
+			obj->objs[i].material = obj->mat;
+			obj->objs[i].textured = true;
+		}
+	obj->has_mat = 0;
+}
+
+/* The items every object accepts after its own arguments: transforms, and a
+ * pigment, finish or texture that changes the object's texture (a union's own). */
+static int object_modifier(struct eval *e, const ast_node *item, value *obj, const char *where)
 {
 	xform t = scene_xform_identity();
 	int rc = transform_item(e, item, &t);
@@ -479,22 +524,14 @@ static int object_modifier(struct eval *e, const ast_node *item, value *obj, int
 	}
 	if (item->kind != AST_BLOCK || (item->kw != KW_PIGMENT && item->kw != KW_FINISH && item->kw != KW_TEXTURE))
 		return not_valid(item, where);
-	/* On a simple object a pigment, finish or texture changes its texture; on a
-	 * union it goes to the parts that have no texture of their own, as in POV-Ray.
-	 * Either way the block is evaluated once. */
-	if (!compound) {
+	if (!obj->compound) {
 		obj->objs[0].textured = true;
 		return eval_material_block(e, item, &obj->objs[0].material);
 	}
-	scene_material m = scene_default_material();
-	if (eval_material_block(e, item, &m))
-		return -1;
-	for (int i = 0; i < obj->n_objs; i++)
-		if (!obj->objs[i].textured) {
-			obj->objs[i].material = m;
-			obj->objs[i].textured = true;
-		}
-	return 0;
+	if (!obj->has_mat)
+		obj->mat = scene_default_material();
+	obj->has_mat = 1;
+	return eval_material_block(e, item, &obj->mat);
 }
 
 /* sphere { <Center>, Radius }  triangle { <A>, <B>, <C> } */
@@ -520,7 +557,7 @@ static int eval_shape(struct eval *e, const ast_node *b, value *out)
 	*out = (value){ .kind = V_OBJECT };
 	add_object(out, &o);
 	for (; i < b->n_kids; i++)
-		if (object_modifier(e, b->kids[i], out, 0, where))
+		if (object_modifier(e, b->kids[i], out, where))
 			return -1;
 	return 0;
 }
@@ -545,7 +582,9 @@ static int eval_compound(struct eval *e, const ast_node *b, value *out)
 		}
 		i = 1;
 	}
-	int modifiers_seen = 0, compound = b->kw == KW_UNION || out->n_objs != 1;
+	int modifiers_seen = 0;
+	if (b->kw == KW_UNION)
+		out->compound = 1;
 	for (; i < b->n_kids; i++) {
 		const ast_node *item = b->kids[i];
 		if (b->kw == KW_UNION && item->kind == AST_BLOCK && is_object_kw(item->kw)) {
@@ -556,13 +595,14 @@ static int eval_compound(struct eval *e, const ast_node *b, value *out)
 			value part;
 			if (eval_object(e, item, &part))
 				return -1;
+			resolve_texture(&part);
 			for (int k = 0; k < part.n_objs; k++)
 				add_object(out, &part.objs[k]);
 			value_free(&part);
 			continue;
 		}
 		modifiers_seen = 1;
-		if (object_modifier(e, item, out, compound, where))
+		if (object_modifier(e, item, out, where))
 			return -1;
 	}
 	return 0;
@@ -778,6 +818,7 @@ static int eval_statement(struct eval *e, const ast_node *item)
 	value v;
 	if (eval_object(e, item, &v))
 		return -1;
+	resolve_texture(&v);
 	for (int i = 0; i < v.n_objs; i++)
 		scene_add_object(e->s, &v.objs[i]);
 	value_free(&v);

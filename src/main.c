@@ -24,11 +24,11 @@
 struct options {
 	const char *scene, *output, *kernel_dir;
 	int width, height, samples, seed, max_depth, device, quiet;
-	int list_devices, check, dump_ast;
+	int list_devices, check, dump_ast, dump_scene;
 };
 
 enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_DIR,
-       OPT_CHECK, OPT_DUMP_AST };
+       OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -42,6 +42,7 @@ static const struct option long_options[] = {
 	{ "kernel-dir", required_argument, NULL, OPT_KERNEL_DIR },
 	{ "check", no_argument, NULL, OPT_CHECK },
 	{ "dump-ast", no_argument, NULL, OPT_DUMP_AST },
+	{ "dump-scene", no_argument, NULL, OPT_DUMP_SCENE },
 	{ "quiet", no_argument, NULL, 'q' },
 	{ "help", no_argument, NULL, 'h' },
 	{ "version", no_argument, NULL, 'V' },
@@ -64,9 +65,10 @@ static void usage(FILE *out)
 		"      --device N        OpenCL device to use (default: first GPU, else first CPU)\n"
 		"      --list-devices    list the OpenCL devices and exit\n"
 		"      --kernel-dir DIR  read the kernel sources from DIR instead of the built-in copy\n"
-		"      --check           parse and evaluate the scene, render nothing\n"
+		"      --check           check the scene for errors and warnings, render nothing\n"
 		"      --dump-ast        print the syntax tree and exit\n"
-		"  -q, --quiet           print nothing but errors\n"
+		"      --dump-scene      print the evaluated scene in world space and exit\n"
+		"  -q, --quiet           print only errors and warnings\n"
 		"  -h, --help            show this help and exit\n"
 		"  -V, --version         show the version and exit\n"
 		"\n"
@@ -106,6 +108,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case OPT_KERNEL_DIR: o->kernel_dir = optarg; break;
 		case OPT_CHECK: o->check = 1; break;
 		case OPT_DUMP_AST: o->dump_ast = 1; break;
+		case OPT_DUMP_SCENE: o->dump_scene = 1; o->check = 1; break;
 		case 'q': o->quiet = 1; break;
 		case 'h': usage(stdout); exit(0);
 		case 'V': printf("eclat %s\n", PACKAGE_VERSION); exit(0);
@@ -172,9 +175,10 @@ static int check_output(const char *scene, const char *output)
 static int render_scene(const struct options *o, const scene *s, const char *output)
 {
 	lower_result lr;
-	if (lower_scene(s, &lr)) {
+	if (lower_scene(s, &lr) || o->check) {
+		int rc = diag_error_count() > 0;
 		lower_free(&lr);
-		return 1;
+		return rc;
 	}
 	render_settings rs = {
 		.width = o->width, .height = o->height, .samples = o->samples, .seed = o->seed,
@@ -226,8 +230,11 @@ int main(int argc, char **argv)
 	else if (o.dump_ast) {
 		ast_dump(tree, stdout);
 		rc = 0;
-	} else if (eval_scene(tree, &s) == 0 && diag_error_count() == 0)
-		rc = o.check ? 0 : render_scene(&o, &s, output);
+	} else if (eval_scene(tree, &s) == 0 && diag_error_count() == 0) {
+		if (o.dump_scene)
+			scene_dump(&s, stdout);
+		rc = render_scene(&o, &s, output);
+	}
 	scene_free(&s);
 	ast_free(tree);
 	diag_free_all();

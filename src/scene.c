@@ -184,3 +184,84 @@ int scene_camera_look_at(scene_camera *c, const double p[3], const double sky[3]
 	scale_to(c->right, handedness > 0 ? rl : -rl);
 	return 0;
 }
+
+/* %.6g, with round-off next to zero (and -0) printed as 0, so golden files do
+ * not depend on the last bits of the math library. */
+static void num(FILE *out, double v)
+{
+	fprintf(out, "%.6g", fabs(v) < 1e-9 ? 0.0 : v);
+}
+
+static void vec(FILE *out, const char *label, const double v[3])
+{
+	fprintf(out, *label ? " %s <" : " <", label);
+	for (int i = 0; i < 3; i++) {
+		num(out, v[i]);
+		fputs(i < 2 ? ", " : ">", out);
+	}
+}
+
+static void material(FILE *out, const scene_material *m)
+{
+	fputs(" pigment <", out);
+	for (int i = 0; i < 5; i++) {
+		num(out, m->pigment[i]);
+		fputs(i < 4 ? ", " : ">", out);
+	}
+	fputs(" diffuse ", out);
+	num(out, m->diffuse);
+	double e[3] = { m->emission[0], m->emission[1], m->emission[2] };
+	vec(out, "emission", e);
+}
+
+static void dump_object(FILE *out, const scene_object *o)
+{
+	fprintf(out, "%s:%d:%d: ", diag_source_name(o->loc.file), o->loc.line, o->loc.col);
+	if (o->shape == SHAPE_SPHERE) {
+		double c[3], axis[3][3];
+		scene_xform_point(&o->xf, o->p[0], c);
+		fputs("sphere", out);
+		vec(out, "centre", c);
+		fputs(" radius ", out);
+		num(out, o->radius);
+		for (int i = 0; i < 3; i++) {   /* the images of the radius along x, y, z */
+			double v[3] = { i == 0 ? o->radius : 0, i == 1 ? o->radius : 0, i == 2 ? o->radius : 0 };
+			scene_xform_vector(&o->xf, v, axis[i]);
+			vec(out, i == 0 ? "x" : i == 1 ? "y" : "z", axis[i]);
+		}
+	} else {
+		fputs("triangle", out);
+		for (int i = 0; i < 3; i++) {
+			double w[3];
+			scene_xform_point(&o->xf, o->p[i], w);
+			vec(out, "", w);
+		}
+	}
+	material(out, &o->material);
+	fputc('\n', out);
+}
+
+void scene_dump(const scene *s, FILE *out)
+{
+	const scene_camera *c = &s->camera;
+	fputs("camera", out);
+	vec(out, "location", c->location);
+	vec(out, "direction", c->direction);
+	vec(out, "right", c->right);
+	vec(out, "up", c->up);
+	fputc('\n', out);
+	double bg[3] = { s->background[0], s->background[1], s->background[2] };
+	fputs("background", out);
+	vec(out, "", bg);
+	fprintf(out, " max_trace_level %d\n", s->max_trace_level);
+	for (int i = 0; i < s->n_lights; i++) {
+		const scene_light *l = &s->lights[i];
+		double col[3] = { l->color[0], l->color[1], l->color[2] };
+		fputs("light_source", out);
+		vec(out, "", l->position);
+		vec(out, "color", col);
+		fputc('\n', out);
+	}
+	for (int i = 0; i < s->n_objects; i++)
+		dump_object(out, &s->objects[i]);
+}

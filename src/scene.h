@@ -7,6 +7,7 @@
 #define ECLAT_SCENE_H
 
 #include <stdbool.h>
+#include <stdio.h>
 #include "diag.h"
 
 /* An affine transform: world = m * (p, 1), rows of a 3x4 matrix. */
@@ -70,6 +71,8 @@ void scene_init(scene *s);
 void scene_add_object(scene *s, const scene_object *o);
 void scene_add_light(scene *s, const scene_light *l);
 void scene_free(scene *s);
+/* Writes the scene in world space, one entity a line, for --dump-scene and golden tests. */
+void scene_dump(const scene *s, FILE *out);
 scene_material scene_default_material(void);
 /* POV-Ray's default camera: at the origin looking along +z, 4:3. */
 scene_camera scene_default_camera(void);
