@@ -3,17 +3,37 @@
  * against the closest hit so far. The host guarantees the tree is no deeper than
  * BVH_STACK_SIZE, so the stack cannot overflow. */
 
-/* Slab test. inv_d may hold infinities (axis-parallel rays); fmin and fmax drop
- * the NaN of 0 * inf, so a ray lying in a slab's plane is not lost. Returns the
- * entry distance, or INFINITY when the box is missed or farther than tmax. */
-inline float traverse_box(global const bvh_node *n, float3 o, float3 inv_d, float tmax)
+/* Boxes are tested with a relative slack, so rays through box edges and corners
+ * are not lost to rounding (tests/test_bvh.c shows they are without it). */
+#define BVH_BOX_PAD (1.0f + 4.0f * FLT_EPSILON)
+
+typedef struct {
+	float3 o, inv_d;
+	int3 neg;       /* sign bit of each direction component: which slab plane is entered */
+} traverse_ray;
+
+inline traverse_ray traverse_setup(float3 o, float3 d)
 {
-	float3 t1 = ((float3)(n->min_x, n->min_y, n->min_z) - o) * inv_d;
-	float3 t2 = ((float3)(n->max_x, n->max_y, n->max_z) - o) * inv_d;
-	float3 lo = fmin(t1, t2), hi = fmax(t1, t2);
-	float enter = fmax(fmax(lo.x, lo.y), fmax(lo.z, 0.0f));
-	float leave = fmin(fmin(hi.x, hi.y), fmin(hi.z, tmax));
-	return enter <= leave ? enter : INFINITY;
+	traverse_ray r;
+	r.o = o;
+	r.inv_d = 1.0f / d;   /* +-0 gives +-inf */
+	r.neg = signbit(d);   /* -1 where the sign bit is set */
+	return r;
+}
+
+/* Slab test against [0, tmax], with the entry plane chosen by the direction's sign
+ * bit. A component of 0 * inf (a ray lying in a slab's plane) is NaN, which fmin
+ * and fmax drop, so such a ray counts as inside that slab; the usual
+ * fmin(t1, t2) form would turn it into +inf and miss a box the ray touches.
+ * Returns the entry distance, or INFINITY when the box is missed. */
+inline float traverse_box(global const bvh_node *n, const traverse_ray *r, float tmax)
+{
+	float3 lo = (float3)(n->min_x, n->min_y, n->min_z), hi = (float3)(n->max_x, n->max_y, n->max_z);
+	float3 tn = (select(lo, hi, r->neg) - r->o) * r->inv_d;
+	float3 tf = (select(hi, lo, r->neg) - r->o) * r->inv_d;
+	float enter = fmax(fmax(fmax(0.0f, tn.x), tn.y), tn.z);
+	float leave = fmin(fmin(fmin(tmax, tf.x), tf.y), tf.z);
+	return enter <= leave * BVH_BOX_PAD ? enter : INFINITY;
 }
 
 typedef struct {
@@ -29,10 +49,10 @@ inline traverse_hit traverse_closest(global const bvh_node *nodes, global const 
 	traverse_hit hit = { tmax, -1 };
 	if (n_prims == 0)
 		return hit;
-	float3 inv_d = 1.0f / d;
+	traverse_ray r = traverse_setup(o, d);
 	int stack[BVH_STACK_SIZE], sp = 0, node = 0;
 	*tests += 1;
-	if (traverse_box(&nodes[0], o, inv_d, hit.t) == INFINITY)
+	if (traverse_box(&nodes[0], &r, hit.t) == INFINITY)
 		return hit;
 	for (;;) {
 		global const bvh_node *n = &nodes[node];
@@ -47,8 +67,8 @@ inline traverse_hit traverse_closest(global const bvh_node *nodes, global const 
 			}
 		} else {
 			int a = n->left_first, b = a + 1;
-			float ta = traverse_box(&nodes[a], o, inv_d, hit.t);
-			float tb = traverse_box(&nodes[b], o, inv_d, hit.t);
+			float ta = traverse_box(&nodes[a], &r, hit.t);
+			float tb = traverse_box(&nodes[b], &r, hit.t);
 			*tests += 2;
 			if (ta > tb) {
 				float tt = ta; ta = tb; tb = tt;
@@ -66,7 +86,7 @@ inline traverse_hit traverse_closest(global const bvh_node *nodes, global const 
 			if (sp == 0)
 				return hit;
 			node = stack[--sp];
-			if (traverse_box(&nodes[node], o, inv_d, hit.t) != INFINITY)
+			if (traverse_box(&nodes[node], &r, hit.t) != INFINITY)
 				break;
 		}
 	}
@@ -78,13 +98,13 @@ inline bool traverse_any(global const bvh_node *nodes, global const dev_prim *pr
 {
 	if (n_prims == 0)
 		return false;
-	float3 inv_d = 1.0f / d;
+	traverse_ray r = traverse_setup(o, d);
 	int stack[BVH_STACK_SIZE], sp = 0;
 	stack[sp++] = 0;
 	while (sp > 0) {
 		global const bvh_node *n = &nodes[stack[--sp]];
 		*tests += 1;
-		if (traverse_box(n, o, inv_d, tmax) == INFINITY)
+		if (traverse_box(n, &r, tmax) == INFINITY)
 			continue;
 		if (n->count > 0) {
 			for (int i = n->left_first; i < n->left_first + n->count; i++) {
