@@ -678,7 +678,8 @@ static int eval_camera(struct eval *e, const ast_node *b)
 /* light_source { <Location>, COLOR [TRANSFORMS...] } */
 static int eval_light(struct eval *e, const ast_node *b)
 {
-	scene_light l = { .loc = b->loc };
+	scene_light l = scene_default_light();
+	l.loc = b->loc;
 	double pos[3], col[5];
 	if (b->n_kids < 2 || !is_expression(b->kids[0]) || !is_expression(b->kids[1])) {
 		diag_error(b->loc, "light_source needs a location and a colour");

@@ -84,6 +84,9 @@ void scene_init(scene *s)
 {
 	memset(s, 0, sizeof *s);
 	s->camera = scene_default_camera();
+	s->adc_bailout = 1.0f / 255.0f;
+	for (int i = 0; i < 3; i++)
+		s->ambient_light[i] = 1;
 }
 
 static void *grow(void *p, int *cap, size_t size)
@@ -111,8 +114,31 @@ void scene_add_light(scene *s, const scene_light *l)
 	s->lights[s->n_lights++] = *l;
 }
 
+int scene_add_mesh(scene *s, scene_mesh *m)
+{
+	if (s->n_meshes == s->cap_meshes)
+		s->meshes = grow(s->meshes, &s->cap_meshes, sizeof *m);
+	s->meshes[s->n_meshes] = *m;
+	return s->n_meshes++;
+}
+
+static void mesh_free(scene_mesh *m)
+{
+	free(m->v);
+	free(m->nrm);
+	free(m->uv);
+	free(m->face);
+	free(m->face_nrm);
+	free(m->face_uv);
+	free(m->face_mat);
+	free(m->mats);
+}
+
 void scene_free(scene *s)
 {
+	for (int i = 0; i < s->n_meshes; i++)
+		mesh_free(&s->meshes[i]);
+	free(s->meshes);
 	free(s->objects);
 	free(s->lights);
 	memset(s, 0, sizeof *s);
@@ -122,9 +148,27 @@ scene_material scene_default_material(void)
 {
 	return (scene_material){
 		.pigment = { 0, 0, 0, 0, 0 },
-		.diffuse = 0.6f,
 		.ambient = { 0.1f, 0.1f, 0.1f },
-		.emission = { 0, 0, 0 },
+		.diffuse = 0.6f,
+		.brilliance = 1,
+		.phong_size = 40,
+		.roughness = 0.05f,
+		.reflection_falloff = 1,
+		.reflection_exponent = 1,
+		.ior = 1,
+		.dispersion = 1,
+	};
+}
+
+scene_light scene_default_light(void)
+{
+	return (scene_light){
+		.kind = LIGHT_POINT,
+		.point_at = { 0, 0, 1 },
+		.radius = 30,
+		.falloff = 45,
+		.looks_like = -1,
+		.loc = SRC_NOWHERE,
 	};
 }
 

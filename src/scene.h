@@ -25,55 +25,141 @@ xform scene_xform_then(const xform *a, const xform *b);
 void scene_xform_point(const xform *t, const double p[3], double out[3]);
 void scene_xform_vector(const xform *t, const double v[3], double out[3]);
 
-/* A POV-Ray texture reduced to what the renderer uses. */
+/* A POV-Ray texture and interior, with POV-Ray 3.7's defaults
+ * (scene_default_material). The path tracer turns these into a physically based
+ * material (lower.c, documented in eclat-scene(5)); the Whitted integrator uses
+ * them as POV-Ray does. */
 typedef struct {
-	float pigment[5];   /* red, green, blue, filter, transmit; POV-Ray's default is black */
-	float diffuse;      /* default 0.6 */
-	float ambient[3];   /* default 0.1; not used by the path tracer */
-	float emission[3];  /* default 0 */
+	float pigment[5];        /* red, green, blue, filter, transmit; default black */
+	/* finish */
+	float ambient[3];        /* 0.1 */
+	float diffuse;           /* 0.6 */
+	float brilliance;        /* 1 */
+	float emission[3];       /* 0 */
+	float phong, phong_size; /* 0, 40 */
+	float specular, roughness;          /* 0, 0.05 */
+	float reflection[3];     /* reflection { min [, max] }: at normal incidence, 0 */
+	float reflection_max[3]; /* at grazing incidence; equals reflection when one colour is given */
+	float reflection_falloff;  /* 1 */
+	float reflection_exponent; /* 1 */
+	float metallic;          /* 0; "metallic" alone is 1 */
+	bool reflection_fresnel; /* false */
+	bool roughness_set;      /* roughness was given: metal reflections are rough */
+	bool conserve_energy;    /* false */
+	/* interior */
+	float ior;               /* 1 */
+	float dispersion;        /* 1 */
+	float fade_distance, fade_power; /* 0, 0: no absorption */
+	float fade_color[3];     /* 0 */
 } scene_material;
 
-typedef enum { SHAPE_SPHERE, SHAPE_TRIANGLE } scene_shape;
+typedef enum {
+	SHAPE_SPHERE,          /* p[0] centre, radius */
+	SHAPE_TRIANGLE,        /* p[0..2] corners */
+	SHAPE_SMOOTH_TRIANGLE, /* p[0..2] corners, n[0..2] normals */
+	SHAPE_BOX,             /* p[0], p[1] opposite corners */
+	SHAPE_PLANE,           /* p[0] normal, radius = distance along it */
+	SHAPE_MESH,            /* mesh: index into scene.meshes, shared by every copy */
+} scene_shape;
+
+/* POV-Ray's object flags. */
+enum {
+	OBJ_NO_SHADOW = 1, OBJ_NO_IMAGE = 2, OBJ_NO_REFLECTION = 4, OBJ_HOLLOW = 8,
+	OBJ_DOUBLE_ILLUMINATE = 16,
+};
 
 typedef struct {
 	scene_shape shape;
-	double p[3][3];      /* sphere: p[0] is the centre; triangle: the corners (object space) */
+	double p[3][3];      /* object space, see scene_shape */
+	double n[3][3];
 	double radius;
+	int mesh;
 	xform xf;            /* object to world */
 	scene_material material;
 	bool textured;       /* false: takes the texture of an enclosing union, else the default */
+	int flags;           /* OBJ_ */
 	src_loc loc;
 } scene_object;
 
+/* mesh and mesh2 (and mesh files), in object space. Declared once and placed many
+ * times with object { }, it is stored once. A face's texture is an index into
+ * mats, or -1 for the object's own texture. */
+typedef struct {
+	double (*v)[3];
+	int n_v;
+	double (*nrm)[3];    /* shading normals, may be empty */
+	int n_nrm;
+	double (*uv)[2];
+	int n_uv;
+	int (*face)[3];      /* vertex indices */
+	int (*face_nrm)[3];  /* normal indices, or NULL */
+	int (*face_uv)[3];   /* uv indices, or NULL */
+	int *face_mat;       /* texture index per face, or NULL */
+	int n_faces;
+	scene_material *mats;
+	int n_mats;
+	double inside_vector[3];
+	bool has_inside_vector;
+	src_loc loc;
+} scene_mesh;
+
 typedef struct {
 	double location[3], direction[3], right[3], up[3];  /* final, after look_at */
+	/* focal blur: off when aperture is 0 */
+	double aperture;
+	double focal_point[3];  /* default <0,0,0>: the focal plane passes through it */
+	int blur_samples;
 	src_loc loc;
 } scene_camera;
 
+typedef enum { LIGHT_POINT, LIGHT_SPOT, LIGHT_PARALLEL } scene_light_kind;
+
 typedef struct {
+	scene_light_kind kind;
 	double position[3];
 	float color[3];
+	double point_at[3];          /* spotlight and parallel: default <0,0,1> */
+	float radius, falloff, tightness; /* spotlight, degrees: 30, 45, 0 */
+	/* area_light <axis1>, <axis2>, size1, size2: a rectangle of size1 x size2 lights */
+	bool area;
+	double axis1[3], axis2[3];
+	int size1, size2, adaptive;
+	bool jitter, circular, orient;
+	bool shadowless;
+	float fade_distance, fade_power; /* 0, 0: no falloff, as in POV-Ray */
+	int looks_like;              /* first object index of its looks_like shape, or -1 */
 	src_loc loc;
 } scene_light;
-
 typedef struct {
 	scene_camera camera;
 	scene_object *objects;
 	int n_objects, cap_objects;
 	scene_light *lights;
 	int n_lights, cap_lights;
+	scene_mesh *meshes;
+	int n_meshes, cap_meshes;
 	float background[3];
-	int max_trace_level;  /* global_settings; 0 when the scene does not say */
+	float sky[3];         /* sky_sphere with a solid pigment; used when has_sky */
+	bool has_sky;
+	/* global_settings */
+	int max_trace_level;  /* 0 when the scene does not say */
+	float assumed_gamma;  /* 0 when the scene does not say */
+	float adc_bailout;    /* 1/255 */
+	float ambient_light[3]; /* 1 */
 } scene;
 
 void scene_init(scene *s);
 /* Appends; exits with a message on out of memory. */
 void scene_add_object(scene *s, const scene_object *o);
 void scene_add_light(scene *s, const scene_light *l);
+/* Takes ownership of m's arrays; returns its index. */
+int scene_add_mesh(scene *s, scene_mesh *m);
 void scene_free(scene *s);
 /* Writes the scene in world space, one entity a line, for --dump-scene and golden tests. */
 void scene_dump(const scene *s, FILE *out);
 scene_material scene_default_material(void);
+/* POV-Ray's default light_source fields: a point light. */
+scene_light scene_default_light(void);
 /* POV-Ray's default camera: at the origin looking along +z, 4:3. */
 scene_camera scene_default_camera(void);
 /* POV-Ray 3.7's look_at: points direction at p keeping the lengths of direction,
