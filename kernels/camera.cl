@@ -9,3 +9,18 @@ inline float3 camera_ray_dir(global const dev_params *p, int px, int py, float j
 	float3 d = p->cam_direction.xyz + sx * p->cam_right.xyz + sy * p->cam_up.xyz;
 	return normalize(d);
 }
+
+/* Focal blur: the ray leaves a point of a lens of diameter aperture in the plane
+ * of right and up, toward where the pinhole ray meets the focal plane (through
+ * focal_point, facing direction). */
+inline float3 camera_lens(global const dev_params *p, float3 *dir, float2 disc)
+{
+	float3 o = p->cam_location.xyz;
+	if (p->lens.x <= 0.0f)
+		return o;
+	float3 axis = normalize(p->cam_direction.xyz);
+	float3 focus = o + *dir * (p->lens.y / dot(*dir, axis));
+	o += 0.5f * p->lens.x * (disc.x * normalize(p->cam_right.xyz) + disc.y * normalize(p->cam_up.xyz));
+	*dir = normalize(focus - o);
+	return o;
+}

@@ -1,80 +1,119 @@
 /* integrator_path.cl: the path tracer. One work item per pixel; each launch adds
- * samples_per_pass samples to the pixel's running sum in accum, so the image
- * converges progressively on the device and the host reads it back once. */
+ * samples_per_pass samples to the pixel's running sum in film, so the image
+ * converges progressively on the device and the host reads it when it wants.
+ *
+ * INTEGRATOR_PATH: next-event estimation at every vertex (all light_sources, one
+ * emissive primitive chosen by power) and BSDF sampling, the two weighted by the
+ * power heuristic where both can find the same light; Russian roulette after
+ * three bounces. INTEGRATOR_NAIVE: the reference paper's algorithm, emitters found
+ * only by the bounce rays (light_sources, which no ray can hit, are still sampled). */
 
-/* POV-Ray's point light without distance falloff: a white light of colour C on a
- * surface of albedo a at angle theta is seen as a * C * cos(theta), which is a
- * Lambertian surface under irradiance pi * C * cos(theta). */
-inline float3 direct_point_lights(global const bvh_node *nodes, global const dev_prim *prims,
-                                  global const dev_light *lights, global const dev_params *p,
-                                  float3 x, float3 n, float3 albedo, uint *tests)
-{
-	float3 sum = (float3)(0.0f);
-	for (int i = 0; i < p->n_lights; i++) {
-		float3 to = lights[i].position.xyz - x;
-		float dist = length(to);
-		float3 l = to / dist;
-		float c = dot(n, l);
-		if (c <= 0.0f || dist == 0.0f)
-			continue;
-		if (!traverse_any(nodes, prims, p->n_prims, x, l, 0.0f, dist, tests))
-			sum += albedo * lights[i].color.xyz * c;
-	}
-	return sum;
-}
+#define RR_DEPTH 3
+
+/* Dimensions of one bounce: 0-1 lobe choice and direction (with 2: u.z), 3 roulette,
+ * 4-6 the emitter, 8 on: the light_sources' area samples. */
+#define DIM_LOBE 0
+#define DIM_ROULETTE 3
+#define DIM_EMITTER 4
+#define DIM_AREA 8
 
 inline float3 path_radiance(global const bvh_node *nodes, global const dev_prim *prims,
                             global const dev_material *materials, global const dev_light *lights,
-                            global const dev_params *p, int px, int py, uint key, uint *tests)
+                            global const dev_emitter *emitters, global const dev_params *p,
+                            int px, int py, uint key, uint *counts)
 {
-	float3 o = p->cam_location.xyz;
 	float3 d = camera_ray_dir(p, px, py, rng_uniform(key, 0), rng_uniform(key, 1));
-	float3 radiance = (float3)(0.0f), beta = (float3)(1.0f);
+	float3 o = camera_lens(p, &d, light_square_to_disc(rng_uniform(key, 2), rng_uniform(key, 3)));
+	float3 radiance = (float3)(0.0f), beta = (float3)(1.0f), sigma = (float3)(0.0f);
+	float last_pdf = 0.0f;   /* 0: the last bounce was a single direction, or the camera */
+	counts[COUNT_CAMERA]++;
 	for (int depth = 0;; depth++) {
-		traverse_hit hit = traverse_closest(nodes, prims, p->n_prims, o, d, 0.0f, INFINITY, tests);
+		traverse_hit hit = traverse_closest(nodes, prims, p->n_prims, p->n_planes, o, d, 0.0f,
+		                                    INFINITY, counts);
 		if (hit.prim < 0) {
 			radiance += beta * p->background.xyz;
 			break;
 		}
+		if (sigma.x > 0.0f || sigma.y > 0.0f || sigma.z > 0.0f)
+			beta *= exp(-sigma * hit.t);   /* Beer-Lambert inside an absorbing interior */
 		global const dev_prim *prim = &prims[hit.prim];
 		global const dev_material *m = &materials[prim->material];
 		float3 x = o + hit.t * d;
-		float3 n = prim_normal(prim, x);
-		if (dot(n, d) > 0.0f)
-			n = -n; /* surfaces are two-sided, as in POV-Ray */
-		radiance += beta * m->emission.xyz;
-		float3 albedo = m->albedo.xyz;
-		if (depth >= p->max_depth || (albedo.x <= 0.0f && albedo.y <= 0.0f && albedo.z <= 0.0f))
+		float3 ng = prim_normal(prim, x);
+		bool entering = dot(ng, d) < 0.0f;
+		float3 n = entering ? ng : -ng;   /* surfaces are two-sided, as in POV-Ray */
+		float3 wo = -d;
+
+		if (prim->emitter >= 0) {
+			float w = 1.0f;
+			if (p->integrator == INTEGRATOR_PATH && last_pdf > 0.0f)
+				w = light_power_heuristic(last_pdf, light_pdf(emitters, prim, o, d, hit.t));
+			radiance += beta * w * m->emission.xyz;
+		} else {
+			radiance += beta * m->emission.xyz;
+		}
+		if (depth >= p->max_depth)
 			break;
+
+		material_lobes lobes = material_lobes_at(m, dot(n, wo), entering);
 		/* Leave the surface by a margin relative to the coordinates' magnitude, so
 		 * the next ray does not find the surface it starts on. */
 		float eps = 1e-4f * fmax(1.0f, fmax(fabs(x.x), fmax(fabs(x.y), fabs(x.z))));
-		x += eps * n;
-		radiance += beta * direct_point_lights(nodes, prims, lights, p, x, n, albedo, tests);
+		float3 xa = x + eps * n;   /* above the surface, on the side the ray came from */
 		uint dim = RNG_DIMS_PER_BOUNCE * (uint)(depth + 1);
-		d = material_sample_cosine(n, rng_uniform(key, dim), rng_uniform(key, dim + 1));
-		o = x;
-		beta *= albedo;
+		radiance += beta * light_pov(nodes, prims, lights, p, m, &lobes, xa, n, wo, key,
+		                             dim + DIM_AREA, counts);
+		if (p->integrator == INTEGRATOR_PATH)
+			radiance += beta * light_emitters(nodes, prims, materials, emitters, p, m, &lobes, xa,
+			                                  n, wo, key, dim + DIM_EMITTER, counts);
+
+		float3 u = (float3)(rng_uniform(key, dim + DIM_LOBE), rng_uniform(key, dim + DIM_LOBE + 1),
+		                    rng_uniform(key, dim + DIM_LOBE + 2));
+		material_sample_t s = material_sample(m, &lobes, n, wo, entering, u);
+		if (s.weight.x <= 0.0f && s.weight.y <= 0.0f && s.weight.z <= 0.0f)
+			break;
+		beta *= s.weight;
+		last_pdf = s.pdf;
+		if (s.transmitted) {
+			o = x - eps * n;
+			sigma = entering ? m->absorb.xyz : (float3)(0.0f);
+		} else {
+			o = xa;
+		}
+		d = s.wi;
+		if (depth + 1 >= RR_DEPTH) {
+			float q = clamp(fmax(beta.x, fmax(beta.y, beta.z)), 0.05f, 0.95f);
+			if (rng_uniform(key, dim + DIM_ROULETTE) >= q)
+				break;
+			beta /= q;
+		}
+		counts[COUNT_BOUNCE]++;
 	}
 	return radiance;
 }
 
 kernel void render_pass(global const bvh_node *nodes, global const dev_prim *prims,
                         global const dev_material *materials, global const dev_light *lights,
-                        global const dev_params *p, global float4 *accum)
+                        global const dev_emitter *emitters, global const dev_params *p,
+                        global float4 *film, global uint *counters)
 {
 	int pixel = get_global_id(0);
 	if (pixel >= p->width * p->height)
 		return;
 	int px = pixel % p->width, py = pixel / p->width;
-	float3 sum = (float3)(0.0f);
-	uint tests = 0;
+	uint counts[COUNT_N] = { 0 };
+	float4 acc = film[pixel];
 	for (int s = 0; s < p->samples_per_pass; s++) {
 		uint key = rng_key((uint)pixel, (uint)(p->sample_base + s), (uint)p->seed);
-		float3 l = path_radiance(nodes, prims, materials, lights, p, px, py, key, &tests);
+		uint tests = counts[COUNT_TESTS];
+		float3 l = path_radiance(nodes, prims, materials, lights, emitters, p, px, py, key, counts);
 		/* one bad sample (a NaN from a degenerate hit) must not blacken the pixel */
-		if (isfinite(l.x) && isfinite(l.y) && isfinite(l.z))
-			sum += l;
+		if (!(isfinite(l.x) && isfinite(l.y) && isfinite(l.z)))
+			l = (float3)(0.0f);
+		/* sample by sample, so the sums do not depend on how samples group into passes */
+		acc += (float4)(l, (float)(counts[COUNT_TESTS] - tests));
 	}
-	accum[pixel] += (float4)(sum, 0.0f);
+	film[pixel] = acc;
+	for (int i = 0; i < COUNT_N; i++)
+		atomic_add(&counters[i], counts[i]);
 }

@@ -43,10 +43,50 @@ inline float intersect_sphere(float3 o, float3 d, global const dev_prim *p, floa
 	return tmax;
 }
 
+/* a.xyz is the unit normal, a.w the distance of the plane from the origin along it. */
+inline float intersect_plane(float3 o, float3 d, global const dev_prim *p, float tmin, float tmax)
+{
+	float dn = dot(p->a.xyz, d);
+	if (dn == 0.0f)
+		return tmax;
+	float t = (p->a.w - dot(p->a.xyz, o)) / dn;
+	return t > tmin && t < tmax ? t : tmax;
+}
+
+/* The ray in the unit sphere's space of an ellipsoid; t is the same in both. */
+inline float3 ellipsoid_point(global const dev_prim *p, float3 x)
+{
+	return (float3)(dot(p->a.xyz, x) + p->a.w, dot(p->b.xyz, x) + p->b.w, dot(p->c.xyz, x) + p->c.w);
+}
+
+inline float intersect_ellipsoid(float3 o, float3 d, global const dev_prim *p, float tmin, float tmax)
+{
+	float3 oo = ellipsoid_point(p, o);
+	float3 dd = (float3)(dot(p->a.xyz, d), dot(p->b.xyz, d), dot(p->c.xyz, d));
+	float a = dot(dd, dd), b = dot(oo, dd);
+	float3 f = oo - (b / a) * dd;   /* as for spheres: the closest point keeps precision */
+	float disc = a * (1.0f - dot(f, f));
+	if (disc < 0.0f)
+		return tmax;
+	float s = sqrt(disc);
+	float q = b > 0.0f ? -b - s : -b + s;   /* no cancellation (Numerical Recipes) */
+	float t0 = q / a, t1 = q != 0.0f ? (dot(oo, oo) - 1.0f) / q : t0;
+	float lo = fmin(t0, t1), hi = fmax(t0, t1);
+	if (lo > tmin && lo < tmax)
+		return lo;
+	if (hi > tmin && hi < tmax)
+		return hi;
+	return tmax;
+}
+
 inline float intersect_prim(float3 o, float3 d, global const dev_prim *p, float tmin, float tmax)
 {
-	return p->type == PRIM_SPHERE ? intersect_sphere(o, d, p, tmin, tmax)
-	                              : intersect_triangle(o, d, p, tmin, tmax);
+	switch (p->type) {
+	case PRIM_SPHERE: return intersect_sphere(o, d, p, tmin, tmax);
+	case PRIM_PLANE: return intersect_plane(o, d, p, tmin, tmax);
+	case PRIM_ELLIPSOID: return intersect_ellipsoid(o, d, p, tmin, tmax);
+	default: return intersect_triangle(o, d, p, tmin, tmax);
+	}
 }
 
 /* The geometric normal at a point of the primitive, not yet facing the ray. */
@@ -54,5 +94,11 @@ inline float3 prim_normal(global const dev_prim *p, float3 at)
 {
 	if (p->type == PRIM_SPHERE)
 		return normalize(at - p->a.xyz);
+	if (p->type == PRIM_PLANE)
+		return p->a.xyz;
+	if (p->type == PRIM_ELLIPSOID) {   /* the normal maps by the transposed inverse */
+		float3 q = ellipsoid_point(p, at);
+		return normalize(q.x * p->a.xyz + q.y * p->b.xyz + q.z * p->c.xyz);
+	}
 	return normalize(cross(p->b.xyz, p->c.xyz));
 }

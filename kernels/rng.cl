@@ -28,4 +28,4 @@ inline float rng_uniform(uint key, uint dim)
 }
 
 /* Dimensions used per bounce; bounce b uses RNG_DIMS_PER_BOUNCE * b + 0, 1, ... */
-#define RNG_DIMS_PER_BOUNCE 8
+#define RNG_DIMS_PER_BOUNCE 64

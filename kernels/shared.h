@@ -27,37 +27,73 @@ typedef struct {
  * deeper tree rather than let a ray silently miss. */
 #define BVH_STACK_SIZE 64
 
-enum { PRIM_TRIANGLE = 0, PRIM_SPHERE = 1 };
+enum { PRIM_TRIANGLE = 0, PRIM_SPHERE = 1, PRIM_PLANE = 2, PRIM_ELLIPSOID = 3 };
 
 /* A primitive in world space, 64 bytes.
  * Triangle: a = v0, b = v1 - v0, c = v2 - v0 (the Moller-Trumbore edges).
- * Sphere: a.xyz = centre, a.w = radius; b and c unused. */
+ * Sphere: a.xyz = centre, a.w = radius; b and c unused.
+ * Plane: a.xyz = unit normal, a.w = distance along it; planes are unbounded, so
+ * they sit after the BVH's primitives and every ray tests them all.
+ * Ellipsoid (a sphere scaled unevenly): a, b, c are the rows of the affine map from
+ * world space to the unit sphere's space.
+ * emitter: index into the emitter table when the material emits, else -1. */
 typedef struct {
 	float4 a, b, c;
-	int type, material, object, pad;
+	int type, material, object, emitter;
 } dev_prim;
 
-/* A physically based material, 32 bytes, already multiplied out from POV-Ray's
- * pigment and finish: albedo = pigment * diffuse, emission = pigment * emission. */
+/* A physically based material, 112 bytes, made by lower.c from POV-Ray's texture
+ * and interior (eclat-scene(5), HOW MATERIALS ARE RENDERED). Layers from the top:
+ * a clear coat, a reflection layer, a dielectric transmission, a Lambertian base.
+ * The layer weights are taken at the outgoing direction and sum to at most 1. */
 typedef struct {
-	float4 albedo;
-	float4 emission;
+	float4 diffuse;     /* rgb: Lambertian albedo of the opaque part */
+	float4 emission;    /* rgb: emitted radiance, both sides */
+	float4 reflect;     /* rgb: reflection at normal incidence; w: GGX alpha, 0 for a mirror */
+	float4 reflect_max; /* rgb: reflection at grazing incidence; w: falloff exponent,
+	                     * or -1: Fresnel's equations with the ior decide between the two */
+	float4 transmit;    /* rgb: tint of transmitted light; w: ior (1: no refraction) */
+	float4 absorb;      /* rgb: absorption per unit length inside; w: transmitted fraction */
+	float4 coat;        /* x: coat strength, y: coat GGX alpha, z: coat reflectance at normal incidence */
 } dev_material;
 
-/* A point light, 32 bytes: position.xyz and colour.xyz (POV-Ray's light_source). */
+/* A light_source, 96 bytes. POV-Ray's lights are invisible and do not fall off
+ * with distance unless fade_power is given; every vertex samples all of them. */
+enum { LIGHT_KIND_POINT = 0, LIGHT_KIND_SPOT = 1, LIGHT_KIND_PARALLEL = 2 };
 typedef struct {
-	float4 position;
-	float4 color;
+	float4 position;    /* w: fade_distance (0: no fade) */
+	float4 color;       /* w: fade_power */
+	float4 axis1;       /* area light: the rectangle's first side; w: 1 for an area light */
+	float4 axis2;       /* area light: the second side; w: 1 for a circular area light */
+	float4 spot;        /* xyz: unit direction the light points to; w: cos(radius) */
+	float cos_falloff, tightness;
+	int kind, shadowless;
 } dev_light;
 
-/* Everything a render pass needs besides the buffers, 112 bytes. The camera vectors
- * are POV-Ray's after look_at: a primary ray is direction + sx * right + sy * up
- * with sx, sy in [-0.5, 0.5], sy upwards. */
+/* An emissive primitive, chosen for next-event estimation with probability
+ * proportional to its power. 16 bytes. */
+typedef struct {
+	float cdf;          /* the probabilities of the emitters up to and with this one */
+	float pdf;          /* the probability of choosing this one */
+	float area;
+	int prim;
+} dev_emitter;
+
+enum { INTEGRATOR_PATH = 0, INTEGRATOR_NAIVE = 1 };
+
+/* Ray and test counters, added up per pass by the kernel. */
+enum { COUNT_CAMERA, COUNT_BOUNCE, COUNT_SHADOW, COUNT_TESTS, COUNT_N };
+
+/* Everything a render pass needs besides the buffers, 144 bytes. The camera
+ * vectors are POV-Ray's after look_at: a primary ray is direction + sx * right +
+ * sy * up with sx, sy in [-0.5, 0.5], sy upwards. */
 typedef struct {
 	float4 cam_location, cam_direction, cam_right, cam_up;
-	float4 background;
+	float4 background;  /* rgb: what rays that leave the scene see */
+	float4 lens;        /* x: aperture (0: pinhole), y: focal distance along direction */
 	int width, height, max_depth, seed;
 	int n_lights, sample_base, samples_per_pass, n_prims;
+	int n_planes, n_emitters, integrator, pad;
 } dev_params;
 
 #endif

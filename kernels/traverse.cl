@@ -41,16 +41,34 @@ typedef struct {
 	int prim;      /* -1: no hit */
 } traverse_hit;
 
-/* Closest hit in (tmin, tmax). tests counts box and primitive tests (the heat map). */
+/* The unbounded primitives (planes) after the BVH's n_prims: every ray tests them. */
+inline traverse_hit traverse_planes(global const dev_prim *prims, int n_prims, int n_planes,
+                                    float3 o, float3 d, float tmin, traverse_hit hit, uint *counts)
+{
+	for (int i = n_prims; i < n_prims + n_planes; i++) {
+		float t = intersect_plane(o, d, &prims[i], tmin, hit.t);
+		counts[COUNT_TESTS]++;
+		if (t < hit.t) {
+			hit.t = t;
+			hit.prim = i;
+		}
+	}
+	return hit;
+}
+
+/* Closest hit in (tmin, tmax). counts[COUNT_TESTS] adds up box and primitive
+ * tests (the heat map's measure). */
 inline traverse_hit traverse_closest(global const bvh_node *nodes, global const dev_prim *prims,
-                                     int n_prims, float3 o, float3 d, float tmin, float tmax,
-                                     uint *tests)
+                                     int n_prims, int n_planes, float3 o, float3 d, float tmin,
+                                     float tmax, uint *counts)
 {
 	traverse_hit hit = { tmax, -1 };
+	hit = traverse_planes(prims, n_prims, n_planes, o, d, tmin, hit, counts);
 	if (n_prims == 0)
 		return hit;
 	traverse_ray r = traverse_setup(o, d);
 	int stack[BVH_STACK_SIZE], sp = 0, node = 0;
+	uint *tests = &counts[COUNT_TESTS];
 	*tests += 1;
 	if (traverse_box(&nodes[0], &r, hit.t) == INFINITY)
 		return hit;
@@ -94,10 +112,14 @@ inline traverse_hit traverse_closest(global const bvh_node *nodes, global const 
 
 /* Any hit in (tmin, tmax): shadow rays stop at the first occluder. */
 inline bool traverse_any(global const bvh_node *nodes, global const dev_prim *prims, int n_prims,
-                         float3 o, float3 d, float tmin, float tmax, uint *tests)
+                         int n_planes, float3 o, float3 d, float tmin, float tmax, uint *counts)
 {
+	traverse_hit planes = { tmax, -1 };
+	if (traverse_planes(prims, n_prims, n_planes, o, d, tmin, planes, counts).prim >= 0)
+		return true;
 	if (n_prims == 0)
 		return false;
+	uint *tests = &counts[COUNT_TESTS];
 	traverse_ray r = traverse_setup(o, d);
 	int stack[BVH_STACK_SIZE], sp = 0;
 	stack[sp++] = 0;

@@ -13,7 +13,14 @@ extern "C" {
  * clamped; EXR, HDR, TIFF and PFM stay linear floats, unclamped. The file appears
  * whole or not at all: the image is written to a temporary file beside it and
  * renamed. Returns 0, or -1 with a message in err. */
-int image_write(const char *path, const float *rgb, int width, int height, char *err, size_t errlen);
+/* What the file records about the render (EXR keeps it as metadata). */
+typedef struct {
+	const char *scene;   /* the scene file's name */
+	long samples;        /* per pixel */
+} image_meta;
+
+int image_write(const char *path, const float *rgb, int width, int height, const image_meta *meta,
+                char *err, size_t errlen);
 
 /* 1 when the extension of path names a format OpenImageIO can write. */
 int image_format_known(const char *path);

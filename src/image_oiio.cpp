@@ -37,8 +37,8 @@ extern "C" int image_format_known(const char *path)
 	return out ? 1 : 0;
 }
 
-extern "C" int image_write(const char *path, const float *rgb, int width, int height, char *err,
-                           size_t errlen)
+extern "C" int image_write(const char *path, const float *rgb, int width, int height,
+                           const image_meta *meta, char *err, size_t errlen)
 {
 	std::string p(path);
 	auto out = ImageOutput::create(p);
@@ -48,6 +48,10 @@ extern "C" int image_write(const char *path, const float *rgb, int width, int he
 	ImageSpec spec(width, height, 3, linear ? TypeDesc::FLOAT : TypeDesc::UINT8);
 	spec.attribute("oiio:ColorSpace", linear ? "Linear" : "sRGB");
 	spec.attribute("Software", "eclat " PACKAGE_VERSION);
+	if (meta && meta->scene)
+		spec.attribute("eclat:scene", meta->scene);
+	if (meta)
+		spec.attribute("eclat:samples", (int)meta->samples);
 
 	std::vector<float> pixels(rgb, rgb + (size_t)width * height * 3);
 	if (!linear)

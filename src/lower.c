@@ -1,5 +1,6 @@
-/* lower.c: bakes transforms into world-space primitives, builds the BVH and
- * reorders the primitives into its leaf order, so a leaf is a contiguous range. */
+/* lower.c: bakes transforms into world-space primitives, maps POV-Ray textures to
+ * physically based materials, builds the BVH and reorders the primitives into its
+ * leaf order (so a leaf is a contiguous range), and lists the emitters. */
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -14,18 +15,158 @@ _Static_assert(sizeof(bvh_node) == 32, "bvh_node is 32 bytes");
 _Static_assert(offsetof(bvh_node, max_x) == 16, "bvh_node max at 16");
 _Static_assert(sizeof(dev_prim) == 64, "dev_prim is 64 bytes");
 _Static_assert(offsetof(dev_prim, type) == 48, "dev_prim ints at 48");
-_Static_assert(sizeof(dev_material) == 32, "dev_material is 32 bytes");
-_Static_assert(sizeof(dev_light) == 32, "dev_light is 32 bytes");
-_Static_assert(sizeof(dev_params) == 112, "dev_params is 112 bytes");
-_Static_assert(offsetof(dev_params, width) == 80, "dev_params ints at 80");
+_Static_assert(sizeof(dev_material) == 112, "dev_material is 112 bytes");
+_Static_assert(sizeof(dev_light) == 96, "dev_light is 96 bytes");
+_Static_assert(offsetof(dev_light, cos_falloff) == 80, "dev_light scalars at 80");
+_Static_assert(sizeof(dev_emitter) == 16, "dev_emitter is 16 bytes");
+_Static_assert(sizeof(dev_params) == 144, "dev_params is 144 bytes");
+_Static_assert(offsetof(dev_params, width) == 96, "dev_params ints at 96");
+
+/* Growing arrays of primitives and materials while lowering. */
+struct lowering {
+	dev_prim *prims;
+	int n, cap;
+	dev_prim *planes;
+	int n_planes, cap_planes;
+	dev_material *mats;
+	int n_mats, cap_mats;
+	int n_degenerate;
+};
+
+static void *grow(void *p, int *cap, size_t size)
+{
+	*cap = *cap ? 2 * *cap : 64;
+	p = realloc(p, (size_t)*cap * size);
+	if (!p) {
+		fprintf(stderr, "eclat: out of memory\n");
+		exit(1);
+	}
+	return p;
+}
 
 static float4 f4(const double v[3], double w)
 {
 	return (float4){ (float)v[0], (float)v[1], (float)v[2], (float)w };
 }
 
-/* The uniform scale of a similarity transform, or -1 when the transform
- * stretches unevenly (a sphere would become an ellipsoid). */
+static float clamp01(float v)
+{
+	return v < 0 ? 0 : v > 1 ? 1 : v;
+}
+
+/* ---- materials ---- */
+
+/* POV-Ray's roughness is a Blinn exponent's reciprocal, phong_size a Phong
+ * exponent (about a quarter of Blinn's); a Blinn exponent e matches GGX with
+ * alpha = sqrt(2 / (e + 2)) (Walter et al. 2007). */
+static float alpha_from_blinn(double e)
+{
+	float a = (float)sqrt(2.0 / (e + 2.0));
+	return a < 0.01f ? 0.01f : a > 1 ? 1 : a;
+}
+
+dev_material lower_material(const scene_material *m)
+{
+	dev_material d = { 0 };
+	float rgb[3] = { m->pigment[0], m->pigment[1], m->pigment[2] };
+	float t = clamp01(m->pigment[3] + m->pigment[4]);
+	float tint[3], refl[3], refl_max[3];
+	for (int i = 0; i < 3; i++) {
+		tint[i] = t > 0 ? clamp01((m->pigment[3] * rgb[i] + m->pigment[4]) / t) : 1;
+		float metal = (1 - m->metallic) + m->metallic * rgb[i];
+		refl[i] = clamp01(m->reflection[i] * metal);
+		refl_max[i] = clamp01(m->reflection_max[i] * metal);
+	}
+	float fade = m->fade_distance > 0 && m->fade_power > 0;
+	d.diffuse = (float4){ clamp01(rgb[0] * m->diffuse) * (1 - t), clamp01(rgb[1] * m->diffuse) * (1 - t),
+	                      clamp01(rgb[2] * m->diffuse) * (1 - t), 0 };
+	d.emission = (float4){ rgb[0] * m->emission[0], rgb[1] * m->emission[1], rgb[2] * m->emission[2], 0 };
+	d.reflect = (float4){ refl[0], refl[1], refl[2],
+	                      m->roughness_set ? alpha_from_blinn(1.0 / fmax(m->roughness, 1e-6)) : 0 };
+	d.reflect_max = (float4){ refl_max[0], refl_max[1], refl_max[2],
+	                          m->reflection_fresnel ? -1 : m->reflection_falloff };
+	d.transmit = (float4){ tint[0], tint[1], tint[2], m->ior > 0 ? m->ior : 1 };
+	d.absorb = (float4){ fade ? (1 - clamp01(m->fade_color[0])) / m->fade_distance : 0,
+	                     fade ? (1 - clamp01(m->fade_color[1])) / m->fade_distance : 0,
+	                     fade ? (1 - clamp01(m->fade_color[2])) / m->fade_distance : 0, t };
+	float coat = clamp01(fmaxf(m->phong, m->specular));
+	float alpha = m->phong >= m->specular ? alpha_from_blinn(4.0 * m->phong_size)
+	                                      : alpha_from_blinn(1.0 / fmax(m->roughness, 1e-6));
+	d.coat = (float4){ coat, alpha, 0.04f, 0 };   /* 0.04: a clear coat of ior 1.5 */
+	return d;
+}
+
+static int add_material(struct lowering *lw, const scene_material *m)
+{
+	if (lw->n_mats == lw->cap_mats)
+		lw->mats = grow(lw->mats, &lw->cap_mats, sizeof *lw->mats);
+	lw->mats[lw->n_mats] = lower_material(m);
+	return lw->n_mats++;
+}
+
+/* ---- shapes ---- */
+
+static void add_prim(struct lowering *lw, dev_prim p, int material, int object)
+{
+	p.material = material;
+	p.object = object;
+	p.emitter = -1;
+	if (p.type == PRIM_PLANE) {
+		if (lw->n_planes == lw->cap_planes)
+			lw->planes = grow(lw->planes, &lw->cap_planes, sizeof p);
+		lw->planes[lw->n_planes++] = p;
+		return;
+	}
+	if (lw->n == lw->cap)
+		lw->prims = grow(lw->prims, &lw->cap, sizeof p);
+	lw->prims[lw->n++] = p;
+}
+
+static void add_triangle(struct lowering *lw, const double v[3][3], int material, int object,
+                         src_loc loc)
+{
+	double e1[3], e2[3];
+	for (int k = 0; k < 3; k++) {
+		e1[k] = v[1][k] - v[0][k];
+		e2[k] = v[2][k] - v[0][k];
+	}
+	double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+	                e1[0] * e2[1] - e1[1] * e2[0] };
+	if (n[0] == 0 && n[1] == 0 && n[2] == 0) {
+		if (lw->n_degenerate++ == 0)
+			diag_warning(loc, "triangle with no area skipped");
+		return;
+	}
+	add_prim(lw, (dev_prim){ .a = f4(v[0], 0), .b = f4(e1, 0), .c = f4(e2, 0), .type = PRIM_TRIANGLE },
+	         material, object);
+}
+
+static double det3(const xform *t)
+{
+	const double (*m)[4] = t->m;
+	return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+	       m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+	       m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+/* The inverse of an affine transform; -1 when it is singular. */
+static int invert(const xform *t, xform *inv)
+{
+	double d = det3(t);
+	if (fabs(d) < 1e-300)
+		return -1;
+	const double (*m)[4] = t->m;
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++) {
+			int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
+			inv->m[i][j] = (m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1]) / d;
+		}
+	for (int i = 0; i < 3; i++)
+		inv->m[i][3] = -(inv->m[i][0] * m[0][3] + inv->m[i][1] * m[1][3] + inv->m[i][2] * m[2][3]);
+	return 0;
+}
+
+/* The uniform scale of a similarity transform, or -1 when it stretches unevenly. */
 static double uniform_scale(const xform *t)
 {
 	double len[3], dots[3];
@@ -41,51 +182,226 @@ static double uniform_scale(const xform *t)
 	return len[0];
 }
 
-static int lower_sphere(const scene_object *o, dev_prim *p)
+/* A sphere moved by a similarity stays a sphere; any other transform makes an
+ * ellipsoid, kept as the map from world space to the unit sphere. */
+static int lower_sphere(struct lowering *lw, const scene_object *o, int mat, int id)
 {
-	double s = uniform_scale(&o->xf), c[3];
-	if (s < 0) {
-		diag_error(o->loc, "a sphere scaled unevenly (an ellipsoid) is not supported yet");
-		return -1;
-	}
-	double r = o->radius * s;
-	if (!(r > 0) || !isfinite(r)) {
+	if (!(o->radius > 0) || !isfinite(o->radius)) {
 		diag_warning(o->loc, "sphere of radius %g skipped", o->radius);
 		return 0;
 	}
-	scene_xform_point(&o->xf, o->p[0], c);
-	*p = (dev_prim){ .a = f4(c, r), .type = PRIM_SPHERE };
-	return 1;
-}
-
-static int lower_triangle(const scene_object *o, dev_prim *p, int *n_degenerate)
-{
-	double v[3][3];
-	for (int i = 0; i < 3; i++)
-		scene_xform_point(&o->xf, o->p[i], v[i]);
-	double e1[3], e2[3];
-	for (int k = 0; k < 3; k++) {
-		e1[k] = v[1][k] - v[0][k];
-		e2[k] = v[2][k] - v[0][k];
-	}
-	double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-	                e1[0] * e2[1] - e1[1] * e2[0] };
-	if (n[0] == 0 && n[1] == 0 && n[2] == 0) {
-		if ((*n_degenerate)++ == 0)
-			diag_warning(o->loc, "triangle with no area skipped");
+	double s = uniform_scale(&o->xf), c[3];
+	if (s > 0) {
+		scene_xform_point(&o->xf, o->p[0], c);
+		add_prim(lw, (dev_prim){ .a = f4(c, o->radius * s), .type = PRIM_SPHERE }, mat, id);
 		return 0;
 	}
-	*p = (dev_prim){ .a = f4(v[0], 0), .b = f4(e1, 0), .c = f4(e2, 0), .type = PRIM_TRIANGLE };
-	return 1;
+	double r[3] = { o->radius, o->radius, o->radius };
+	xform unit = scene_xform_scale(r), to_world, to_unit;
+	xform move = scene_xform_translate(o->p[0]);
+	unit = scene_xform_then(&unit, &move);
+	to_world = scene_xform_then(&unit, &o->xf);
+	if (invert(&to_world, &to_unit)) {
+		diag_error(o->loc, "the sphere's transform is singular (a scale of 0?)");
+		return -1;
+	}
+	dev_prim p = { .type = PRIM_ELLIPSOID };
+	float4 *rows[3] = { &p.a, &p.b, &p.c };
+	for (int i = 0; i < 3; i++)
+		*rows[i] = (float4){ (float)to_unit.m[i][0], (float)to_unit.m[i][1], (float)to_unit.m[i][2],
+		                     (float)to_unit.m[i][3] };
+	add_prim(lw, p, mat, id);
+	return 0;
 }
 
-static dev_material lower_material(const scene_material *m)
+/* POV-Ray's box as its twelve triangles, wound so their normals face out (the
+ * dielectric needs to know which side is inside). */
+static void lower_box(struct lowering *lw, const scene_object *o, int mat, int id)
 {
-	float4 albedo = { m->pigment[0] * m->diffuse, m->pigment[1] * m->diffuse,
-	                  m->pigment[2] * m->diffuse, 0 };
-	float4 emission = { m->pigment[0] * m->emission[0], m->pigment[1] * m->emission[1],
-	                    m->pigment[2] * m->emission[2], 0 };
-	return (dev_material){ albedo, emission };
+	/* corners by bits (x 1, y 2, z 4); each face in the order that makes the cross
+	 * product of its first two edges point out of the box */
+	static const int faces[6][4] = {
+		{ 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 },
+	};
+	double lo[3], hi[3], corner[8][3];
+	for (int k = 0; k < 3; k++) {
+		lo[k] = fmin(o->p[0][k], o->p[1][k]);
+		hi[k] = fmax(o->p[0][k], o->p[1][k]);
+	}
+	for (int c = 0; c < 8; c++) {
+		double p[3] = { c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2] };
+		scene_xform_point(&o->xf, p, corner[c]);
+	}
+	int flip = det3(&o->xf) < 0;   /* a mirroring transform turns the winding over */
+	for (int f = 0; f < 6; f++) {
+		const int *q = faces[f];
+		int order[2][3] = { { q[0], q[1], q[2] }, { q[0], q[2], q[3] } };
+		for (int t = 0; t < 2; t++) {
+			double v[3][3];
+			for (int k = 0; k < 3; k++)
+				memcpy(v[flip ? 2 - k : k], corner[order[t][k]], sizeof v[0]);
+			add_triangle(lw, v, mat, id, o->loc);
+		}
+	}
+}
+
+/* plane { <Normal>, Distance }: the points p with p . n = Distance, n unit length. */
+static int lower_plane(struct lowering *lw, const scene_object *o, int mat, int id)
+{
+	double n[3] = { o->p[0][0], o->p[0][1], o->p[0][2] }, len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+	xform inv;
+	if (len == 0 || invert(&o->xf, &inv)) {
+		diag_error(o->loc, len == 0 ? "a plane needs a normal that is not zero" : "the plane's transform is singular");
+		return -1;
+	}
+	double p0[3] = { n[0] / len * o->radius, n[1] / len * o->radius, n[2] / len * o->radius }, w[3], wn[3];
+	scene_xform_point(&o->xf, p0, w);
+	for (int i = 0; i < 3; i++)   /* normals map by the transposed inverse */
+		wn[i] = inv.m[0][i] * n[0] + inv.m[1][i] * n[1] + inv.m[2][i] * n[2];
+	double wl = sqrt(wn[0] * wn[0] + wn[1] * wn[1] + wn[2] * wn[2]);
+	for (int i = 0; i < 3; i++)
+		wn[i] /= wl;
+	add_prim(lw, (dev_prim){ .a = f4(wn, wn[0] * w[0] + wn[1] * w[1] + wn[2] * w[2]), .type = PRIM_PLANE },
+	         mat, id);
+	return 0;
+}
+
+static void lower_mesh(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id)
+{
+	const scene_mesh *m = &s->meshes[o->mesh];
+	int *face_mats = NULL;
+	if (m->n_mats > 0) {
+		face_mats = malloc(m->n_mats * sizeof *face_mats);
+		if (!face_mats) {
+			fprintf(stderr, "eclat: out of memory\n");
+			exit(1);
+		}
+		for (int i = 0; i < m->n_mats; i++)
+			face_mats[i] = add_material(lw, &m->mats[i]);
+	}
+	int flip = det3(&o->xf) < 0;
+	for (int f = 0; f < m->n_faces; f++) {
+		double v[3][3];
+		for (int k = 0; k < 3; k++)
+			scene_xform_point(&o->xf, m->v[m->face[f][k]], v[flip ? 2 - k : k]);
+		int fm = m->face_mat && m->face_mat[f] >= 0 && m->face_mat[f] < m->n_mats ? face_mats[m->face_mat[f]] : mat;
+		add_triangle(lw, v, fm, id, o->loc);
+	}
+	free(face_mats);
+}
+
+static int lower_object(struct lowering *lw, const scene *s, int id)
+{
+	const scene_object *o = &s->objects[id];
+	int mat = add_material(lw, &o->material);
+	double v[3][3];
+	switch (o->shape) {
+	case SHAPE_SPHERE:
+		return lower_sphere(lw, o, mat, id);
+	case SHAPE_TRIANGLE:
+	case SHAPE_SMOOTH_TRIANGLE:   /* shading normals come with the BVH issue: flat for now */
+		for (int i = 0; i < 3; i++)
+			scene_xform_point(&o->xf, o->p[i], v[i]);
+		add_triangle(lw, v, mat, id, o->loc);
+		return 0;
+	case SHAPE_BOX:
+		lower_box(lw, o, mat, id);
+		return 0;
+	case SHAPE_PLANE:
+		return lower_plane(lw, o, mat, id);
+	case SHAPE_MESH:
+		lower_mesh(lw, s, o, mat, id);
+		return 0;
+	}
+	return 0;
+}
+
+/* ---- lights ---- */
+
+static dev_light lower_light(const scene_light *l)
+{
+	double dir[3] = { l->point_at[0] - l->position[0], l->point_at[1] - l->position[1],
+	                  l->point_at[2] - l->position[2] };
+	double len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+	for (int i = 0; i < 3; i++)
+		dir[i] = len > 0 ? dir[i] / len : (i == 2);
+	double col[3] = { l->color[0], l->color[1], l->color[2] };
+	double falloff = fmax(l->falloff, l->radius);
+	return (dev_light){
+		.position = f4(l->position, l->fade_distance),
+		.color = f4(col, l->fade_power),
+		.axis1 = f4(l->axis1, l->area),
+		.axis2 = f4(l->axis2, l->area && l->circular),
+		.spot = f4(dir, cos(l->radius * M_PI / 180)),
+		.cos_falloff = (float)cos(falloff * M_PI / 180),
+		.tightness = l->tightness,
+		.kind = l->kind == LIGHT_SPOT ? LIGHT_KIND_SPOT : l->kind == LIGHT_PARALLEL ? LIGHT_KIND_PARALLEL
+		                                                                          : LIGHT_KIND_POINT,
+		.shadowless = l->shadowless,
+	};
+}
+
+/* Emissive primitives of the BVH become lights chosen by power (radiance times
+ * area times pi); planes are unbounded and are only found by rays. */
+static void lower_emitters(lower_result *r)
+{
+	double total = 0;
+	r->emitters = malloc((r->n_prims ? r->n_prims : 1) * sizeof *r->emitters);
+	if (!r->emitters) {
+		fprintf(stderr, "eclat: out of memory\n");
+		exit(1);
+	}
+	for (int i = 0; i < r->n_prims; i++) {
+		dev_prim *p = &r->prims[i];
+		float4 e = r->materials[p->material].emission;
+		double lum = 0.2126 * e.x + 0.7152 * e.y + 0.0722 * e.z, area;
+		if (lum <= 0 || p->type == PRIM_ELLIPSOID)
+			continue;
+		if (p->type == PRIM_SPHERE) {
+			area = 4 * M_PI * p->a.w * p->a.w;
+		} else {
+			double cx = p->b.y * p->c.z - p->b.z * p->c.y, cy = p->b.z * p->c.x - p->b.x * p->c.z,
+			       cz = p->b.x * p->c.y - p->b.y * p->c.x;
+			area = 0.5 * sqrt(cx * cx + cy * cy + cz * cz);
+		}
+		p->emitter = r->n_emitters;
+		r->emitters[r->n_emitters++] = (dev_emitter){ .cdf = (float)(lum * area), .area = (float)area, .prim = i };
+		total += lum * area;
+	}
+	double run = 0;
+	for (int i = 0; i < r->n_emitters; i++) {
+		double power = r->emitters[i].cdf;
+		run += power;
+		r->emitters[i].pdf = (float)(power / total);
+		r->emitters[i].cdf = i == r->n_emitters - 1 ? 1.0f : (float)(run / total);
+	}
+}
+
+static void lower_camera(const scene *s, dev_params *p)
+{
+	const scene_camera *c = &s->camera;
+	p->cam_location = f4(c->location, 0);
+	p->cam_direction = f4(c->direction, 0);
+	p->cam_right = f4(c->right, 0);
+	p->cam_up = f4(c->up, 0);
+	const float *bg = s->has_sky ? s->sky : s->background;
+	p->background = (float4){ bg[0], bg[1], bg[2], 0 };
+	double dl = sqrt(c->direction[0] * c->direction[0] + c->direction[1] * c->direction[1] +
+	                 c->direction[2] * c->direction[2]);
+	double focal = 0;
+	for (int i = 0; i < 3; i++)
+		focal += (c->focal_point[i] - c->location[i]) * c->direction[i] / dl;
+	p->lens = (float4){ (float)c->aperture, (float)(focal > 0 ? focal : dl), 0, 0 };
+}
+
+static void *xmalloc(size_t n)
+{
+	void *p = malloc(n ? n : 1);
+	if (!p) {
+		fprintf(stderr, "eclat: out of memory\n");
+		exit(1);
+	}
+	return p;
 }
 
 static bvh_box prim_box(const dev_prim *p)
@@ -99,6 +415,21 @@ static bvh_box prim_box(const dev_prim *p)
 		}
 		return b;
 	}
+	if (p->type == PRIM_ELLIPSOID) {   /* the box of the image of the unit sphere */
+		xform to_unit, to_world;
+		const float4 *rows[3] = { &p->a, &p->b, &p->c };
+		for (int i = 0; i < 3; i++)
+			for (int j = 0; j < 4; j++)
+				to_unit.m[i][j] = ((const float *)rows[i])[j];
+		invert(&to_unit, &to_world);
+		for (int k = 0; k < 3; k++) {
+			double h = sqrt(to_world.m[k][0] * to_world.m[k][0] + to_world.m[k][1] * to_world.m[k][1] +
+			                to_world.m[k][2] * to_world.m[k][2]) * (1 + 1e-5);
+			b.min[k] = (float)(to_world.m[k][3] - h);
+			b.max[k] = (float)(to_world.m[k][3] + h);
+		}
+		return b;
+	}
 	float v[3][3] = { { p->a.x, p->a.y, p->a.z },
 	                  { p->a.x + p->b.x, p->a.y + p->b.y, p->a.z + p->b.z },
 	                  { p->a.x + p->c.x, p->a.y + p->c.y, p->a.z + p->c.z } };
@@ -109,77 +440,55 @@ static bvh_box prim_box(const dev_prim *p)
 	return b;
 }
 
-static void lower_camera(const scene *s, dev_params *p)
+static int build_bvh(struct lowering *lw, lower_result *out)
 {
-	const scene_camera *c = &s->camera;
-	p->cam_location = f4(c->location, 0);
-	p->cam_direction = f4(c->direction, 0);
-	p->cam_right = f4(c->right, 0);
-	p->cam_up = f4(c->up, 0);
-	p->background = (float4){ s->background[0], s->background[1], s->background[2], 0 };
-}
-
-static void *xmalloc(size_t n)
-{
-	void *p = malloc(n ? n : 1);
-	if (!p) {
-		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
+	bvh_box *boxes = xmalloc(lw->n * sizeof *boxes);
+	for (int i = 0; i < lw->n; i++)
+		boxes[i] = prim_box(&lw->prims[i]);
+	int rc = bvh_build(boxes, lw->n, &out->bvh);
+	free(boxes);
+	if (rc != 0) {
+		fprintf(stderr, "eclat: out of memory building the BVH\n");
+		return -1;
 	}
-	return p;
+	if (out->bvh.depth > BVH_STACK_SIZE) {
+		diag_error(SRC_NOWHERE, "the BVH is %d levels deep, more than the %d the kernels can traverse",
+		           out->bvh.depth, BVH_STACK_SIZE);
+		return -1;
+	}
+	out->prims = xmalloc((lw->n + lw->n_planes) * sizeof *out->prims);
+	for (int i = 0; i < lw->n; i++)
+		out->prims[i] = lw->prims[out->bvh.prim_index[i]];
+	memcpy(out->prims + lw->n, lw->planes, lw->n_planes * sizeof *lw->planes);
+	out->n_prims = lw->n;
+	out->n_planes = lw->n_planes;
+	return 0;
 }
 
 int lower_scene(const scene *s, lower_result *out)
 {
 	memset(out, 0, sizeof *out);
-	dev_prim *prims = xmalloc(s->n_objects * sizeof *prims);
-	out->materials = xmalloc(s->n_objects * sizeof *out->materials);
-	int n = 0, n_degenerate = 0, rc = 0;
-	for (int i = 0; i < s->n_objects; i++) {
-		const scene_object *o = &s->objects[i];
-		int kept = o->shape == SHAPE_SPHERE ? lower_sphere(o, &prims[n])
-		                                    : lower_triangle(o, &prims[n], &n_degenerate);
-		if (kept < 0)
+	struct lowering lw = { 0 };
+	int rc = 0;
+	for (int i = 0; i < s->n_objects; i++)
+		if (lower_object(&lw, s, i))
 			rc = -1;
-		if (kept <= 0)
-			continue;
-		prims[n].material = out->n_materials;
-		prims[n].object = i;
-		out->materials[out->n_materials++] = lower_material(&o->material);
-		n++;
-	}
-	if (n_degenerate > 1)
-		diag_warning(SRC_NOWHERE, "%d triangles with no area skipped in all", n_degenerate);
+	if (lw.n_degenerate > 1)
+		diag_warning(SRC_NOWHERE, "%d triangles with no area skipped in all", lw.n_degenerate);
 
 	out->lights = xmalloc(s->n_lights * sizeof *out->lights);
-	for (int i = 0; i < s->n_lights; i++) {
-		const scene_light *l = &s->lights[i];
-		double c[3] = { l->color[0], l->color[1], l->color[2] };
-		out->lights[i] = (dev_light){ f4(l->position, 0), f4(c, 0) };
-	}
+	for (int i = 0; i < s->n_lights; i++)
+		out->lights[i] = lower_light(&s->lights[i]);
 	out->n_lights = s->n_lights;
+	out->materials = lw.mats;
+	out->n_materials = lw.n_mats;
 	lower_camera(s, &out->params);
-
-	bvh_box *boxes = xmalloc(n * sizeof *boxes);
-	for (int i = 0; i < n; i++)
-		boxes[i] = prim_box(&prims[i]);
-	if (rc == 0 && bvh_build(boxes, n, &out->bvh) != 0) {
-		fprintf(stderr, "eclat: out of memory building the BVH\n");
-		rc = -1;
-	}
-	free(boxes);
-	if (rc == 0 && out->bvh.depth > BVH_STACK_SIZE) {
-		diag_error(SRC_NOWHERE, "the BVH is %d levels deep, more than the %d the kernels can traverse",
-		           out->bvh.depth, BVH_STACK_SIZE);
-		rc = -1;
-	}
-	if (rc == 0) {
-		out->prims = xmalloc(n * sizeof *out->prims);
-		for (int i = 0; i < n; i++)
-			out->prims[i] = prims[out->bvh.prim_index[i]];
-		out->n_prims = n;
-	}
-	free(prims);
+	if (rc == 0)
+		rc = build_bvh(&lw, out);
+	if (rc == 0)
+		lower_emitters(out);
+	free(lw.prims);
+	free(lw.planes);
 	return rc;
 }
 
@@ -188,6 +497,7 @@ void lower_free(lower_result *r)
 	free(r->prims);
 	free(r->materials);
 	free(r->lights);
+	free(r->emitters);
 	bvh_free(&r->bvh);
 	memset(r, 0, sizeof *r);
 }

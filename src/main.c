@@ -1,6 +1,7 @@
 /* main.c: eclat's command line: parse, evaluate, lower, render, write. */
 #include <errno.h>
 #include <getopt.h>
+#include <signal.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,12 +24,13 @@
 
 struct options {
 	const char *scene, *output, *kernel_dir;
-	int width, height, samples, seed, max_depth, device, quiet;
+	int width, height, samples, seed, max_depth, device, quiet, integrator;
 	int list_devices, check, dump_ast, dump_scene;
+	double time_limit, checkpoint;
 };
 
 enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_DIR,
-       OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE };
+       OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -37,6 +39,9 @@ static const struct option long_options[] = {
 	{ "samples", required_argument, NULL, 's' },
 	{ "seed", required_argument, NULL, OPT_SEED },
 	{ "max-depth", required_argument, NULL, OPT_MAX_DEPTH },
+	{ "integrator", required_argument, NULL, OPT_INTEGRATOR },
+	{ "time-limit", required_argument, NULL, OPT_TIME_LIMIT },
+	{ "checkpoint", required_argument, NULL, OPT_CHECKPOINT },
 	{ "device", required_argument, NULL, OPT_DEVICE },
 	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
 	{ "kernel-dir", required_argument, NULL, OPT_KERNEL_DIR },
@@ -62,6 +67,10 @@ static void usage(FILE *out)
 		"  -s, --samples N       samples per pixel (default %d)\n"
 		"      --seed N          random seed (default 0)\n"
 		"      --max-depth N     bounces per path (default: max_trace_level, else %d)\n"
+		"      --integrator NAME path (default): light sampling with MIS; naive: the\n"
+		"                        reference paper's random walk, for comparison\n"
+		"      --time-limit S    stop after S seconds, or at the samples, whichever is first\n"
+		"      --checkpoint S    write the image rendered so far every S seconds\n"
 		"      --device N        OpenCL device to use (default: first GPU, else first CPU)\n"
 		"      --list-devices    list the OpenCL devices and exit\n"
 		"      --kernel-dir DIR  read the kernel sources from DIR instead of the built-in copy\n"
@@ -72,6 +81,8 @@ static void usage(FILE *out)
 		"  -h, --help            show this help and exit\n"
 		"  -V, --version         show the version and exit\n"
 		"\n"
+		"POV-Ray's +WN +HN +OFILE +IFILE switches work too. Ctrl-C finishes the pass\n"
+		"under way and writes the image rendered so far.\n"
 		"The scene language is described in eclat-scene(5), the options in eclat(1).\n",
 		DEFAULT_WIDTH, DEFAULT_HEIGHT, DEFAULT_SAMPLES, DEFAULT_MAX_DEPTH);
 }
@@ -89,11 +100,61 @@ static int int_arg(const char *opt, const char *s, long lo, long hi)
 	return (int)v;
 }
 
+/* A number of seconds > 0, or exit 1 naming the option. */
+static double seconds_arg(const char *opt, const char *s)
+{
+	char *end;
+	errno = 0;
+	double v = strtod(s, &end);
+	if (errno || end == s || *end || !(v > 0) || v > 1e9) {
+		fprintf(stderr, "eclat: %s needs a number of seconds greater than 0, not '%s'\n", opt, s);
+		exit(1);
+	}
+	return v;
+}
+
+static int integrator_arg(const char *s)
+{
+	if (strcmp(s, "path") == 0)
+		return INTEGRATOR_PATH;
+	if (strcmp(s, "naive") == 0)
+		return INTEGRATOR_NAIVE;
+	fprintf(stderr, "eclat: --integrator is path or naive, not '%s'\n", s);
+	exit(1);
+}
+
+/* POV-Ray's switches for the common settings: +W640 +H480 +Ofile.png +Iscene.pov
+ * become --width=640 and so on; the strings live as long as argv. */
+static void translate_pov_switches(int argc, char **argv)
+{
+	static const char *const map[][2] = { { "W", "--width=" }, { "H", "--height=" },
+	                                      { "O", "--output=" }, { "I", "" } };
+	for (int i = 1; i < argc; i++) {
+		if (argv[i][0] != '+' || !argv[i][1])
+			continue;
+		size_t k = 0;
+		while (k < 4 && argv[i][1] != map[k][0][0])
+			k++;
+		if (k == 4 || !argv[i][2]) {
+			fprintf(stderr, "eclat: unsupported POV-Ray switch '%s' (eclat knows +WN +HN +OFILE +IFILE)\n",
+			        argv[i]);
+			exit(1);
+		}
+		size_t n = strlen(map[k][1]) + strlen(argv[i] + 2) + 1;
+		char *opt = malloc(n);
+		if (!opt)
+			exit(1);
+		snprintf(opt, n, "%s%s", map[k][1], argv[i] + 2);
+		argv[i] = opt;   /* kept until exit, like argv itself */
+	}
+}
+
 static void parse_options(int argc, char **argv, struct options *o)
 {
 	*o = (struct options){ .width = DEFAULT_WIDTH, .height = DEFAULT_HEIGHT,
 	                       .samples = DEFAULT_SAMPLES, .max_depth = -1, .device = -1 };
 	o->kernel_dir = getenv("ECLAT_KERNEL_DIR");
+	translate_pov_switches(argc, argv);
 	int c;
 	while ((c = getopt_long(argc, argv, "o:W:H:s:qhV", long_options, NULL)) != -1) {
 		switch (c) {
@@ -104,6 +165,9 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case OPT_SEED: o->seed = int_arg("--seed", optarg, 0, INT_MAX); break;
 		case OPT_MAX_DEPTH: o->max_depth = int_arg("--max-depth", optarg, 0, 256); break;
 		case OPT_DEVICE: o->device = int_arg("--device", optarg, 0, 63); break;
+		case OPT_INTEGRATOR: o->integrator = integrator_arg(optarg); break;
+		case OPT_TIME_LIMIT: o->time_limit = seconds_arg("--time-limit", optarg); break;
+		case OPT_CHECKPOINT: o->checkpoint = seconds_arg("--checkpoint", optarg); break;
 		case OPT_LIST_DEVICES: o->list_devices = 1; break;
 		case OPT_KERNEL_DIR: o->kernel_dir = optarg; break;
 		case OPT_CHECK: o->check = 1; break;
@@ -172,6 +236,48 @@ static int check_output(const char *scene, const char *output)
 	return 0;
 }
 
+/* The signal that asked the render to stop, or 0: the pass under way finishes,
+ * the image so far is written, and eclat exits 128 + the signal's number. */
+static volatile sig_atomic_t stop_signal;
+
+static void on_signal(int sig)
+{
+	stop_signal = sig;
+}
+
+static void catch_signals(void)
+{
+	struct sigaction sa = { .sa_handler = on_signal, .sa_flags = SA_RESETHAND };
+	sigemptyset(&sa.sa_mask);
+	sigaction(SIGINT, &sa, NULL);    /* a second Ctrl-C kills at once */
+	sigaction(SIGTERM, &sa, NULL);
+}
+
+struct output {
+	const char *path, *scene;
+};
+
+static int write_film(const film *f, void *ctx)
+{
+	const struct output *out = ctx;
+	image_meta meta = { out->scene, f->samples };
+	char err[512];
+	if (image_write(out->path, f->rgb, f->width, f->height, &meta, err, sizeof err) == 0)
+		return 0;
+	fprintf(stderr, "eclat: %s\n", err);
+	return -1;
+}
+
+static void summary(const render_settings *rs, const render_stats *st, const device_ctx *d)
+{
+	double s = st->seconds > 0 ? st->seconds : 1e-9, m = 1e-6 / s;
+	double paths = (double)rs->width * rs->height * st->samples;
+	fprintf(stderr, "eclat: %dx%d, %ld samples in %.2f s on %s: %.2f M paths/s, %.2f M rays/s "
+	        "(camera %.2f, bounce %.2f, shadow %.2f)\n", rs->width, rs->height, st->samples, s, d->name,
+	        paths * m, (st->counts[COUNT_CAMERA] + st->counts[COUNT_BOUNCE] + st->counts[COUNT_SHADOW]) * m,
+	        st->counts[COUNT_CAMERA] * m, st->counts[COUNT_BOUNCE] * m, st->counts[COUNT_SHADOW] * m);
+}
+
 static int render_scene(const struct options *o, const scene *s, const char *output)
 {
 	lower_result lr;
@@ -180,24 +286,27 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		lower_free(&lr);
 		return rc;
 	}
+	struct output out = { output, o->scene };
 	render_settings rs = {
 		.width = o->width, .height = o->height, .samples = o->samples, .seed = o->seed,
 		.max_depth = o->max_depth >= 0 ? o->max_depth
 		           : s->max_trace_level > 0 ? s->max_trace_level : DEFAULT_MAX_DEPTH,
-		.quiet = o->quiet,
+		.integrator = o->integrator, .quiet = o->quiet, .time_limit = o->time_limit,
+		.checkpoint = o->checkpoint, .on_checkpoint = write_film, .ctx = &out, .stop = &stop_signal,
 	};
 	device_ctx dev;
 	cl_program prog = NULL;
 	film f = { 0 };
+	render_stats st;
 	int rc = 1;
+	catch_signals();
 	if (device_open(&dev, o->device) == 0 &&
 	    (prog = device_build(&dev, o->kernel_dir, "-cl-std=CL1.2")) != NULL &&
-	    render_run(&dev, prog, &lr, &rs, &f) == 0) {
-		char err[512];
-		if (image_write(output, f.rgb, f.width, f.height, err, sizeof err) == 0)
-			rc = 0;
-		else
-			fprintf(stderr, "eclat: %s\n", err);
+	    render_run(&dev, prog, &lr, &rs, &f, &st) == 0) {
+		if (!o->quiet)
+			summary(&rs, &st, &dev);
+		if (write_film(&f, &out) == 0)
+			rc = stop_signal ? 128 + stop_signal : 0;
 	}
 	film_free(&f);
 	if (prog)

@@ -1,7 +1,9 @@
-/* render.c: device buffers, kernel arguments and the progressive sample loop. */
+/* render.c: device buffers, kernel arguments and the progressive sample loop,
+ * with progress, a time limit, checkpoints and clean stops between passes. */
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "render.h"
 
@@ -9,11 +11,13 @@
  * releasing them cannot drift apart): name, host pointer, bytes, flags. */
 #define RENDER_BUFFERS(X, LR, PARAMS, NPIX) \
 	X(nodes, (LR)->bvh.nodes, (LR)->bvh.n_nodes * sizeof(bvh_node), CL_MEM_READ_ONLY) \
-	X(prims, (LR)->prims, (LR)->n_prims * sizeof(dev_prim), CL_MEM_READ_ONLY) \
+	X(prims, (LR)->prims, ((LR)->n_prims + (LR)->n_planes) * sizeof(dev_prim), CL_MEM_READ_ONLY) \
 	X(materials, (LR)->materials, (LR)->n_materials * sizeof(dev_material), CL_MEM_READ_ONLY) \
 	X(lights, (LR)->lights, (LR)->n_lights * sizeof(dev_light), CL_MEM_READ_ONLY) \
+	X(emitters, (LR)->emitters, (LR)->n_emitters * sizeof(dev_emitter), CL_MEM_READ_ONLY) \
 	X(params, (PARAMS), sizeof(dev_params), CL_MEM_READ_ONLY) \
-	X(film, NULL, (NPIX) * 4 * sizeof(float), CL_MEM_READ_WRITE)
+	X(film, NULL, (NPIX) * 4 * sizeof(float), CL_MEM_READ_WRITE) \
+	X(counters, NULL, COUNT_N * sizeof(cl_uint), CL_MEM_READ_WRITE)
 
 enum {
 #define X(NAME, PTR, BYTES, FLAGS) BUF_##NAME,
@@ -22,50 +26,23 @@ enum {
 	BUF_COUNT
 };
 
+struct pass_loop {
+	device_ctx *d;
+	cl_kernel k;
+	cl_mem bufs[BUF_COUNT];
+	dev_params params;
+	size_t npix;
+	const render_settings *rs;
+	render_stats *st;
+	float *sums;
+	double t0;
+};
+
 static double now(void)
 {
 	struct timespec ts;
 	clock_gettime(CLOCK_MONOTONIC, &ts);
 	return ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
-/* OpenCL refuses zero-sized buffers; an empty list still gets one element. */
-static cl_mem make_buffer(device_ctx *d, const void *host, size_t bytes, cl_mem_flags flags, cl_int *err)
-{
-	if (bytes == 0) {
-		bytes = 16;
-		host = NULL;
-	}
-	if (host)
-		flags |= CL_MEM_COPY_HOST_PTR;
-	return clCreateBuffer(d->context, flags, bytes, (void *)host, err);
-}
-
-static int run_passes(device_ctx *d, cl_kernel k, cl_mem *bufs, dev_params *params,
-                      const render_settings *rs, size_t npix)
-{
-	cl_int err;
-	float zero = 0.0f;
-	err = clEnqueueFillBuffer(d->queue, bufs[BUF_film], &zero, sizeof zero, 0, npix * 4 * sizeof(float),
-	                          0, NULL, NULL);
-	if (err != CL_SUCCESS)
-		return device_fail("clEnqueueFillBuffer", err);
-	/* A few samples per launch: launches stay short, so progress can be reported
-	 * and a later interrupt loses little. */
-	for (int done = 0; done < rs->samples;) {
-		params->sample_base = done;
-		params->samples_per_pass = rs->samples - done < 4 ? rs->samples - done : 4;
-		err = clEnqueueWriteBuffer(d->queue, bufs[BUF_params], CL_TRUE, 0, sizeof *params, params,
-		                           0, NULL, NULL);
-		if (err != CL_SUCCESS)
-			return device_fail("clEnqueueWriteBuffer", err);
-		err = clEnqueueNDRangeKernel(d->queue, k, 1, NULL, &npix, NULL, 0, NULL, NULL);
-		if (err != CL_SUCCESS)
-			return device_fail("clEnqueueNDRangeKernel", err);
-		done += params->samples_per_pass;
-	}
-	err = clFinish(d->queue);
-	return err == CL_SUCCESS ? 0 : device_fail("clFinish", err);
 }
 
 static double gib(double bytes)
@@ -95,68 +72,177 @@ static int check_fits(const device_ctx *d, lower_result *lr, const dev_params *p
 	return 0;
 }
 
-int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_settings *rs, film *f)
+/* OpenCL refuses zero-sized buffers; an empty list still gets one element. */
+static cl_mem make_buffer(device_ctx *d, const void *host, size_t bytes, cl_mem_flags flags, cl_int *err)
 {
-	size_t npix = (size_t)rs->width * rs->height;
-	dev_params params = lr->params;
-	params.width = rs->width;
-	params.height = rs->height;
-	params.max_depth = rs->max_depth;
-	params.seed = rs->seed;
-	params.n_lights = lr->n_lights;
-	params.n_prims = lr->n_prims;
+	if (bytes == 0) {
+		bytes = 16;
+		host = NULL;
+	}
+	if (host)
+		flags |= CL_MEM_COPY_HOST_PTR;
+	return clCreateBuffer(d->context, flags, bytes, (void *)host, err);
+}
 
-	if (check_fits(d, lr, &params, npix))
-		return -1;
-	cl_int err = CL_SUCCESS;
-	cl_mem bufs[BUF_COUNT] = { 0 };
-	int rc = -1;
-	float *sums = NULL;
-	cl_kernel k = clCreateKernel(prog, "render_pass", &err);
-	if (!k)
+static void format_time(double s, char *out, size_t n)
+{
+	long t = (long)(s + 0.5);
+	if (t >= 3600)
+		snprintf(out, n, "%ld:%02ld:%02ld", t / 3600, t / 60 % 60, t % 60);
+	else
+		snprintf(out, n, "%ld:%02ld", t / 60, t % 60);
+}
+
+static double rays(const render_stats *st)
+{
+	return (double)st->counts[COUNT_CAMERA] + st->counts[COUNT_BOUNCE] + st->counts[COUNT_SHADOW];
+}
+
+/* One line, redrawn in place: samples, speed, time spent and left. */
+static void progress(const struct pass_loop *pl)
+{
+	const render_stats *st = pl->st;
+	double el = now() - pl->t0, frac = (double)st->samples / pl->rs->samples;
+	int width = 24, bar = (int)(frac * width);
+	char elapsed[48], left[48];
+	format_time(el, elapsed, sizeof elapsed);
+	format_time(frac > 0 ? el / frac - el : 0, left, sizeof left);
+	fprintf(stderr, "\r%3d%% [%.*s%*s] %ld/%d samples  %.2f M paths/s  %.2f M rays/s  %s elapsed  %s left ",
+	        (int)(100 * frac), bar, "========================", width - bar, "", st->samples,
+	        pl->rs->samples, pl->npix * (double)st->samples / el * 1e-6, rays(st) / el * 1e-6, elapsed,
+	        left);
+}
+
+static int read_film(struct pass_loop *pl, film *f)
+{
+	cl_int err = clEnqueueReadBuffer(pl->d->queue, pl->bufs[BUF_film], CL_TRUE, 0,
+	                                 pl->npix * 4 * sizeof *pl->sums, pl->sums, 0, NULL, NULL);
+	if (err != CL_SUCCESS)
+		return device_fail("clEnqueueReadBuffer", err);
+	film_resolve(f, pl->sums, pl->st->samples);
+	return 0;
+}
+
+static int run_pass(struct pass_loop *pl, int count)
+{
+	cl_uint counts[COUNT_N] = { 0 };
+	pl->params.sample_base = (int)pl->st->samples;
+	pl->params.samples_per_pass = count;
+	cl_int err = clEnqueueWriteBuffer(pl->d->queue, pl->bufs[BUF_params], CL_TRUE, 0, sizeof pl->params,
+	                                  &pl->params, 0, NULL, NULL);
+	if (err == CL_SUCCESS)
+		err = clEnqueueWriteBuffer(pl->d->queue, pl->bufs[BUF_counters], CL_TRUE, 0, sizeof counts,
+		                           counts, 0, NULL, NULL);
+	if (err != CL_SUCCESS)
+		return device_fail("clEnqueueWriteBuffer", err);
+	err = clEnqueueNDRangeKernel(pl->d->queue, pl->k, 1, NULL, &pl->npix, NULL, 0, NULL, NULL);
+	if (err != CL_SUCCESS)
+		return device_fail("clEnqueueNDRangeKernel", err);
+	err = clEnqueueReadBuffer(pl->d->queue, pl->bufs[BUF_counters], CL_TRUE, 0, sizeof counts, counts,
+	                          0, NULL, NULL);
+	if (err != CL_SUCCESS)
+		return device_fail("clEnqueueReadBuffer", err);
+	for (int i = 0; i < COUNT_N; i++)
+		pl->st->counts[i] += counts[i];
+	pl->st->samples += count;
+	return 0;
+}
+
+/* Samples per launch: about a quarter of a million paths, so a pass is short (a
+ * stop or a checkpoint waits for at most one) and the 32-bit counters cannot
+ * overflow. It depends on the image size only, never on timing: the film adds
+ * samples one by one, so the pixels do not depend on it either. */
+static int pass_size(size_t npix)
+{
+	size_t k = (1u << 18) / (npix ? npix : 1);
+	return k < 1 ? 1 : k > 64 ? 64 : (int)k;
+}
+
+static int run_passes(struct pass_loop *pl, film *f)
+{
+	const render_settings *rs = pl->rs;
+	float zero = 0.0f;
+	cl_int err = clEnqueueFillBuffer(pl->d->queue, pl->bufs[BUF_film], &zero, sizeof zero, 0,
+	                                 pl->npix * 4 * sizeof(float), 0, NULL, NULL);
+	if (err != CL_SUCCESS)
+		return device_fail("clEnqueueFillBuffer", err);
+	int tty = !rs->quiet && isatty(STDERR_FILENO), per = pass_size(pl->npix);
+	double last_checkpoint = pl->t0;
+	while (pl->st->samples < rs->samples) {
+		int left = rs->samples - (int)pl->st->samples;
+		if (run_pass(pl, left < per ? left : per))
+			return -1;
+		if (tty)
+			progress(pl);
+		if ((rs->stop && *rs->stop) || (rs->time_limit > 0 && now() - pl->t0 >= rs->time_limit))
+			break;
+		if (rs->checkpoint > 0 && rs->on_checkpoint && now() - last_checkpoint >= rs->checkpoint &&
+		    pl->st->samples < rs->samples) {
+			if (read_film(pl, f) || rs->on_checkpoint(f, rs->ctx))
+				return -1;
+			last_checkpoint = now();
+		}
+	}
+	if (tty)
+		fputc('\n', stderr);
+	return read_film(pl, f);
+}
+
+static int setup(struct pass_loop *pl, cl_program prog, lower_result *lr)
+{
+	cl_int err;
+	pl->k = clCreateKernel(prog, "render_pass", &err);
+	if (!pl->k)
 		return device_fail("clCreateKernel", err);
+	err = CL_SUCCESS;
 #define X(NAME, PTR, BYTES, FLAGS) \
 	if (err == CL_SUCCESS) \
-		bufs[BUF_##NAME] = make_buffer(d, PTR, BYTES, FLAGS, &err);
-	RENDER_BUFFERS(X, lr, &params, npix)
+		pl->bufs[BUF_##NAME] = make_buffer(pl->d, PTR, BYTES, FLAGS, &err);
+	RENDER_BUFFERS(X, lr, &pl->params, pl->npix)
 #undef X
-	if (err != CL_SUCCESS) {
-		device_fail("clCreateBuffer", err);
-		goto out;
-	}
+	if (err != CL_SUCCESS)
+		return device_fail("clCreateBuffer", err);
 	for (int i = 0; i < BUF_COUNT && err == CL_SUCCESS; i++)
-		err = clSetKernelArg(k, i, sizeof(cl_mem), &bufs[i]);
-	if (err != CL_SUCCESS) {
-		device_fail("clSetKernelArg", err);
-		goto out;
-	}
+		err = clSetKernelArg(pl->k, i, sizeof(cl_mem), &pl->bufs[i]);
+	return err == CL_SUCCESS ? 0 : device_fail("clSetKernelArg", err);
+}
 
-	double t0 = now();
-	if (run_passes(d, k, bufs, &params, rs, npix))
-		goto out;
-	sums = malloc(npix * 4 * sizeof *sums);
-	if (!sums || film_init(f, rs->width, rs->height)) {
+int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_settings *rs, film *f,
+               render_stats *st)
+{
+	struct pass_loop pl = { .d = d, .npix = (size_t)rs->width * rs->height, .rs = rs, .st = st };
+	memset(st, 0, sizeof *st);
+	pl.params = lr->params;
+	pl.params.width = rs->width;
+	pl.params.height = rs->height;
+	pl.params.max_depth = rs->max_depth;
+	pl.params.seed = rs->seed;
+	pl.params.integrator = rs->integrator;
+	pl.params.n_lights = lr->n_lights;
+	pl.params.n_prims = lr->n_prims;
+	pl.params.n_planes = lr->n_planes;
+	pl.params.n_emitters = lr->n_emitters;
+	if (check_fits(d, lr, &pl.params, pl.npix))
+		return -1;
+	int rc = -1;
+	pl.sums = malloc(pl.npix * 4 * sizeof *pl.sums);
+	if (!pl.sums || film_init(f, rs->width, rs->height)) {
 		fprintf(stderr, "eclat: out of memory for a %dx%d film\n", rs->width, rs->height);
 		goto out;
 	}
-	err = clEnqueueReadBuffer(d->queue, bufs[BUF_film], CL_TRUE, 0, npix * 4 * sizeof *sums, sums,
-	                          0, NULL, NULL);
-	if (err != CL_SUCCESS) {
-		device_fail("clEnqueueReadBuffer", err);
-		film_free(f);
-		goto out;
+	if (setup(&pl, prog, lr) == 0) {
+		pl.t0 = now();
+		rc = run_passes(&pl, f);
+		st->seconds = now() - pl.t0;
 	}
-	film_resolve(f, sums, rs->samples);
-	double secs = now() - t0;
-	if (!rs->quiet)
-		fprintf(stderr, "eclat: %dx%d, %d samples in %.2f s on %s (%.2f M paths/s)\n", rs->width,
-		        rs->height, rs->samples, secs, d->name, npix * (double)rs->samples / secs * 1e-6);
-	rc = 0;
+	if (rc)
+		film_free(f);
 out:
-	free(sums);
+	free(pl.sums);
 	for (int i = 0; i < BUF_COUNT; i++)
-		if (bufs[i])
-			clReleaseMemObject(bufs[i]);
-	clReleaseKernel(k);
+		if (pl.bufs[i])
+			clReleaseMemObject(pl.bufs[i]);
+	if (pl.k)
+		clReleaseKernel(pl.k);
 	return rc;
 }

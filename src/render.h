@@ -2,19 +2,37 @@
 #ifndef ECLAT_RENDER_H
 #define ECLAT_RENDER_H
 
+#include <signal.h>
+#include <stdint.h>
+
 #include "device.h"
 #include "film.h"
 #include "lower.h"
 
-typedef struct {
+typedef struct render_settings {
 	int width, height;
-	int samples;      /* per pixel */
+	int samples;           /* per pixel, at most */
 	int seed;
-	int max_depth;    /* bounces */
+	int max_depth;         /* bounces */
+	int integrator;        /* INTEGRATOR_PATH or INTEGRATOR_NAIVE */
 	int quiet;
+	double time_limit;     /* seconds; 0: none. The render stops after the pass that passes it. */
+	double checkpoint;     /* seconds between calls of on_checkpoint; 0: none */
+	int (*on_checkpoint)(const film *f, void *ctx);
+	void *ctx;
+	volatile sig_atomic_t *stop;  /* set (by a signal handler): finish the pass and return */
 } render_settings;
 
-/* Returns 0 with f filled (film_init'ed here), or -1 after printing the OpenCL error. */
-int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_settings *rs, film *f);
+typedef struct {
+	double seconds;
+	long samples;                /* per pixel, done */
+	uint64_t counts[COUNT_N];    /* camera, bounce and shadow rays, box and primitive tests */
+} render_stats;
+
+/* Renders up to rs->samples samples per pixel into f (film_init'ed here). Returns
+ * 0 with f holding the samples done (fewer when stopped or out of time), or -1
+ * after printing the OpenCL error. */
+int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_settings *rs, film *f,
+               render_stats *st);
 
 #endif

@@ -1,0 +1,182 @@
+/* light.cl: next-event estimation.
+ *
+ * POV-Ray's light_sources are invisible: no ray can hit them, so every vertex
+ * samples each of them. With no fade they do not fall off with distance: a light
+ * of colour C gives a Lambertian surface of albedo a the radiance a * C * cos, the
+ * radiance of that surface under irradiance pi * C * cos. An area_light spreads
+ * the same total over its rectangle (or disc), as POV-Ray spreads it over its grid.
+ *
+ * Emissive surfaces are lights that rays can also hit: one is chosen by power,
+ * a point on it sampled by area (triangles) or by solid angle (spheres seen from
+ * outside), and both strategies are weighted by the power heuristic. */
+
+/* Concentric map of the square to the unit disc (Shirley and Chiu), for circular
+ * area lights and the lens. */
+inline float2 light_square_to_disc(float u, float v)
+{
+	float a = 2.0f * u - 1.0f, b = 2.0f * v - 1.0f;
+	if (a == 0.0f && b == 0.0f)
+		return (float2)(0.0f);
+	float r, phi;
+	if (fabs(a) > fabs(b)) {
+		r = a;
+		phi = (M_PI_F / 4.0f) * (b / a);
+	} else {
+		r = b;
+		phi = (M_PI_F / 2.0f) - (M_PI_F / 4.0f) * (a / b);
+	}
+	return r * (float2)(cos(phi), sin(phi));
+}
+
+/* POV-Ray's fade: 2 / (1 + (d / fade_distance) ^ fade_power). */
+inline float light_fade(global const dev_light *l, float dist)
+{
+	float fd = l->position.w, fp = l->color.w;
+	return fd > 0.0f && fp > 0.0f ? 2.0f / (1.0f + pow(dist / fd, fp)) : 1.0f;
+}
+
+/* POV-Ray's spotlight: full inside radius, a smooth step to zero at falloff,
+ * sharpened by cos^tightness. */
+inline float light_spot(global const dev_light *l, float3 to_surface)
+{
+	float c = dot(to_surface, l->spot.xyz);
+	if (c < l->cos_falloff)
+		return 0.0f;
+	float k = l->tightness > 0.0f ? pow(c, l->tightness) : 1.0f;
+	if (c < l->spot.w) {
+		float t = (c - l->cos_falloff) / (l->spot.w - l->cos_falloff);
+		k *= t * t * (3.0f - 2.0f * t);
+	}
+	return k;
+}
+
+/* The sum over all light_sources of their contribution at x (normal n, facing wo). */
+inline float3 light_pov(global const bvh_node *nodes, global const dev_prim *prims,
+                        global const dev_light *lights, global const dev_params *p,
+                        global const dev_material *m, const material_lobes *lobes,
+                        float3 x, float3 n, float3 wo, uint key, uint dim, uint *counts)
+{
+	float3 sum = (float3)(0.0f);
+	for (int i = 0; i < p->n_lights; i++) {
+		global const dev_light *l = &lights[i];
+		float3 pos = l->position.xyz;
+		if (l->axis1.w > 0.0f) {
+			float u = rng_uniform(key, dim + 2 * i), v = rng_uniform(key, dim + 2 * i + 1);
+			float2 q = l->axis2.w > 0.0f ? 0.5f * light_square_to_disc(u, v) : (float2)(u - 0.5f, v - 0.5f);
+			pos += q.x * l->axis1.xyz + q.y * l->axis2.xyz;
+		}
+		float3 wi;
+		float dist, k = 1.0f;
+		if (l->kind == LIGHT_KIND_PARALLEL) {
+			wi = -l->spot.xyz;
+			dist = fmax(dot(pos - x, wi), 0.0f);  /* only what lies before the light's plane shadows */
+		} else {
+			float3 to = pos - x;
+			dist = length(to);
+			if (dist <= 0.0f)
+				continue;
+			wi = to / dist;
+			k = light_fade(l, dist);
+			if (l->kind == LIGHT_KIND_SPOT)
+				k *= light_spot(l, -wi);
+		}
+		float pdf;
+		float3 f = material_eval(m, lobes, n, wo, wi, &pdf);
+		if (k <= 0.0f || (f.x <= 0.0f && f.y <= 0.0f && f.z <= 0.0f))
+			continue;
+		if (!l->shadowless && dist > 0.0f) {
+			counts[COUNT_SHADOW]++;
+			if (traverse_any(nodes, prims, p->n_prims, p->n_planes, x, wi, 0.0f, dist, counts))
+				continue;
+		}
+		sum += M_PI_F * k * l->color.xyz * f;
+	}
+	return sum;
+}
+
+/* The index of the emitter whose cdf interval holds u. */
+inline int light_choose(global const dev_emitter *em, int n, float u)
+{
+	int lo = 0, hi = n - 1;
+	while (lo < hi) {
+		int mid = (lo + hi) / 2;
+		if (em[mid].cdf > u)
+			hi = mid;
+		else
+			lo = mid + 1;
+	}
+	return lo;
+}
+
+/* The solid-angle pdf of sampling direction wi from x toward the emissive
+ * primitive prim, hit at distance t: what MIS needs for rays that hit emitters. */
+inline float light_pdf(global const dev_emitter *em, global const dev_prim *prim, float3 x,
+                       float3 wi, float t)
+{
+	global const dev_emitter *e = &em[prim->emitter];
+	if (prim->type == PRIM_SPHERE) {
+		float3 c = prim->a.xyz;
+		float r = prim->a.w, d2 = dot(c - x, c - x);
+		if (d2 > r * r * 1.0001f) {
+			float cos_max = sqrt(fmax(0.0f, 1.0f - r * r / d2));
+			return e->pdf / (2.0f * M_PI_F * (1.0f - cos_max));
+		}
+		float3 nl = normalize(x + t * wi - c);
+		return e->pdf * t * t / (e->area * fabs(dot(nl, wi)));
+	}
+	float3 nl = normalize(cross(prim->b.xyz, prim->c.xyz));
+	float cos_l = fabs(dot(nl, wi));
+	return cos_l > 0.0f ? e->pdf * t * t / (e->area * cos_l) : 0.0f;
+}
+
+inline float light_power_heuristic(float a, float b)
+{
+	return a * a / (a * a + b * b);
+}
+
+/* One sample of one emissive primitive, weighted against BSDF sampling. */
+inline float3 light_emitters(global const bvh_node *nodes, global const dev_prim *prims,
+                             global const dev_material *materials, global const dev_emitter *em,
+                             global const dev_params *p, global const dev_material *m,
+                             const material_lobes *lobes, float3 x, float3 n, float3 wo,
+                             uint key, uint dim, uint *counts)
+{
+	if (p->n_emitters == 0)
+		return (float3)(0.0f);
+	global const dev_emitter *e = &em[light_choose(em, p->n_emitters, rng_uniform(key, dim))];
+	global const dev_prim *prim = &prims[e->prim];
+	float u1 = rng_uniform(key, dim + 1), u2 = rng_uniform(key, dim + 2);
+	float3 wi, pos;
+	if (prim->type == PRIM_SPHERE && dot(prim->a.xyz - x, prim->a.xyz - x) > prim->a.w * prim->a.w * 1.0001f) {
+		float3 axis = prim->a.xyz - x;
+		float d2 = dot(axis, axis), r = prim->a.w;
+		float cos_max = sqrt(fmax(0.0f, 1.0f - r * r / d2));
+		float cos_t = 1.0f - u1 * (1.0f - cos_max), sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t));
+		float3 t, b, w = axis * rsqrt(d2);
+		material_basis(w, &t, &b);
+		wi = normalize(sin_t * cos(2.0f * M_PI_F * u2) * t + sin_t * sin(2.0f * M_PI_F * u2) * b + cos_t * w);
+		float th = intersect_sphere(x, wi, prim, 0.0f, INFINITY);
+		if (th == INFINITY)
+			return (float3)(0.0f);
+		pos = x + th * wi;
+	} else if (prim->type == PRIM_SPHERE) {
+		float z = 1.0f - 2.0f * u1, s = sqrt(fmax(0.0f, 1.0f - z * z)), phi = 2.0f * M_PI_F * u2;
+		pos = prim->a.xyz + prim->a.w * (float3)(s * cos(phi), s * sin(phi), z);
+		wi = normalize(pos - x);
+	} else {
+		float su = sqrt(u1);
+		pos = prim->a.xyz + su * (1.0f - u2) * prim->b.xyz + su * u2 * prim->c.xyz;
+		wi = normalize(pos - x);
+	}
+	float dist = length(pos - x);
+	float pdf_light = light_pdf(em, prim, x, wi, dist), pdf_bsdf;
+	float3 f = material_eval(m, lobes, n, wo, wi, &pdf_bsdf);
+	if (pdf_light <= 0.0f || (f.x <= 0.0f && f.y <= 0.0f && f.z <= 0.0f))
+		return (float3)(0.0f);
+	counts[COUNT_SHADOW]++;
+	/* stop short of the emitter itself */
+	if (traverse_any(nodes, prims, p->n_prims, p->n_planes, x, wi, 0.0f, dist * (1.0f - 1e-4f), counts))
+		return (float3)(0.0f);
+	float3 le = materials[prim->material].emission.xyz;
+	return le * f * (light_power_heuristic(pdf_light, pdf_bsdf) / pdf_light);
+}
