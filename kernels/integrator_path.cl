@@ -17,10 +17,17 @@
 #define DIM_EMITTER 4
 #define DIM_AREA 8
 
+/* What the camera ray found first, for the AOVs. */
+typedef struct {
+	float3 albedo, normal;
+	float depth;
+	int object;    /* -1: nothing */
+} first_hit;
+
 inline float3 path_radiance(global const bvh_node *nodes, global const dev_prim *prims,
                             global const dev_material *materials, global const dev_light *lights,
                             global const dev_emitter *emitters, global const dev_params *p,
-                            int px, int py, uint key, uint *counts)
+                            int px, int py, uint key, uint *counts, first_hit *first)
 {
 	float3 d = camera_ray_dir(p, px, py, rng_uniform(key, 0), rng_uniform(key, 1));
 	float3 o = camera_lens(p, &d, light_square_to_disc(rng_uniform(key, 2), rng_uniform(key, 3)));
@@ -43,6 +50,12 @@ inline float3 path_radiance(global const bvh_node *nodes, global const dev_prim 
 		bool entering = dot(ng, d) < 0.0f;
 		float3 n = entering ? ng : -ng;   /* surfaces are two-sided, as in POV-Ray */
 		float3 wo = -d;
+		if (depth == 0) {
+			first->albedo = clamp(m->diffuse.xyz + m->reflect.xyz + m->absorb.w * m->transmit.xyz, 0.0f, 1.0f);
+			first->normal = n;
+			first->depth = hit.t;
+			first->object = prim->object;
+		}
 
 		if (prim->emitter >= 0) {
 			float w = 1.0f;
@@ -95,7 +108,7 @@ inline float3 path_radiance(global const bvh_node *nodes, global const dev_prim 
 kernel void render_pass(global const bvh_node *nodes, global const dev_prim *prims,
                         global const dev_material *materials, global const dev_light *lights,
                         global const dev_emitter *emitters, global const dev_params *p,
-                        global float4 *film, global uint *counters)
+                        global float4 *film, global uint *counters, global float4 *aov)
 {
 	int pixel = get_global_id(0);
 	if (pixel >= p->width * p->height)
@@ -103,10 +116,25 @@ kernel void render_pass(global const bvh_node *nodes, global const dev_prim *pri
 	int px = pixel % p->width, py = pixel / p->width;
 	uint counts[COUNT_N] = { 0 };
 	float4 acc = film[pixel];
+	float4 a0 = 0.0f, a1 = 0.0f, a2 = 0.0f;
+	if (p->aov) {
+		a0 = aov[AOV_FLOAT4S * pixel];
+		a1 = aov[AOV_FLOAT4S * pixel + 1];
+		a2 = aov[AOV_FLOAT4S * pixel + 2];
+	}
 	for (int s = 0; s < p->samples_per_pass; s++) {
 		uint key = rng_key((uint)pixel, (uint)(p->sample_base + s), (uint)p->seed);
 		uint tests = counts[COUNT_TESTS];
-		float3 l = path_radiance(nodes, prims, materials, lights, emitters, p, px, py, key, counts);
+		first_hit first = { (float3)(0.0f), (float3)(0.0f), 0.0f, -1 };
+		float3 l = path_radiance(nodes, prims, materials, lights, emitters, p, px, py, key, counts,
+		                         &first);
+		if (first.object >= 0) {
+			a0 += (float4)(first.albedo, 1.0f);
+			a1 += (float4)(first.normal, 0.0f);
+			a2.x += first.depth;
+		}
+		if (p->sample_base + s == 0)
+			a2.y = (float)first.object;
 		/* one bad sample (a NaN from a degenerate hit) must not blacken the pixel */
 		if (!(isfinite(l.x) && isfinite(l.y) && isfinite(l.z)))
 			l = (float3)(0.0f);
@@ -114,6 +142,11 @@ kernel void render_pass(global const bvh_node *nodes, global const dev_prim *pri
 		acc += (float4)(l, (float)(counts[COUNT_TESTS] - tests));
 	}
 	film[pixel] = acc;
+	if (p->aov) {
+		aov[AOV_FLOAT4S * pixel] = a0;
+		aov[AOV_FLOAT4S * pixel + 1] = a1;
+		aov[AOV_FLOAT4S * pixel + 2] = a2;
+	}
 	for (int i = 0; i < COUNT_N; i++)
 		atomic_add(&counters[i], counts[i]);
 }

@@ -93,7 +93,13 @@ typedef struct {
 	float4 lens;        /* x: aperture (0: pinhole), y: focal distance along direction */
 	int width, height, max_depth, seed;
 	int n_lights, sample_base, samples_per_pass, n_prims;
-	int n_planes, n_emitters, integrator, pad;
+	int n_planes, n_emitters, integrator, aov;   /* aov: 1 when the aov buffer is there */
 } dev_params;
+
+/* The aov buffer, when asked for: three float4 a pixel, sums over its samples.
+ * [0] rgb: albedo of the first surface; w: samples that hit a surface
+ * [1] xyz: its shading normal, facing the camera
+ * [2] x: its distance from the camera; y: the object number of sample 0's hit, -1 for none */
+#define AOV_FLOAT4S 3
 
 #endif

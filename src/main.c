@@ -11,6 +11,7 @@
 
 #include "device.h"
 #include "eval.h"
+#include "film.h"
 #include "image.h"
 #include "lower.h"
 #include "parse.h"
@@ -21,16 +22,19 @@
 #define DEFAULT_SAMPLES 64
 #define DEFAULT_MAX_DEPTH 5
 #define MAX_SIZE 32768
+#define MAX_AOVS 8
 
 struct options {
 	const char *scene, *output, *kernel_dir;
 	int width, height, samples, seed, max_depth, device, quiet, integrator;
 	int list_devices, check, dump_ast, dump_scene;
 	double time_limit, checkpoint;
+	const char *aov_name[MAX_AOVS], *aov_file[MAX_AOVS];
+	int n_aovs;
 };
 
 enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_DIR,
-       OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT };
+       OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -42,6 +46,7 @@ static const struct option long_options[] = {
 	{ "integrator", required_argument, NULL, OPT_INTEGRATOR },
 	{ "time-limit", required_argument, NULL, OPT_TIME_LIMIT },
 	{ "checkpoint", required_argument, NULL, OPT_CHECKPOINT },
+	{ "aov", required_argument, NULL, OPT_AOV },
 	{ "device", required_argument, NULL, OPT_DEVICE },
 	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
 	{ "kernel-dir", required_argument, NULL, OPT_KERNEL_DIR },
@@ -71,6 +76,8 @@ static void usage(FILE *out)
 		"                        reference paper's random walk, for comparison\n"
 		"      --time-limit S    stop after S seconds, or at the samples, whichever is first\n"
 		"      --checkpoint S    write the image rendered so far every S seconds\n"
+		"      --aov NAME=FILE   also write an AOV: albedo, normal, depth, id or heat\n"
+		"                        (box and primitive tests per sample); repeatable\n"
 		"      --device N        OpenCL device to use (default: first GPU, else first CPU)\n"
 		"      --list-devices    list the OpenCL devices and exit\n"
 		"      --kernel-dir DIR  read the kernel sources from DIR instead of the built-in copy\n"
@@ -111,6 +118,24 @@ static double seconds_arg(const char *opt, const char *s)
 		exit(1);
 	}
 	return v;
+}
+
+/* --aov NAME=FILE */
+static void aov_arg(struct options *o, char *s)
+{
+	char *eq = strchr(s, '=');
+	if (eq)
+		*eq = '\0';
+	if (!eq || !eq[1] || !film_aov_known(s)) {
+		fprintf(stderr, "eclat: --aov needs NAME=FILE with NAME albedo, normal, depth, id or heat, not '%s'\n", s);
+		exit(1);
+	}
+	if (o->n_aovs == MAX_AOVS) {
+		fprintf(stderr, "eclat: at most %d --aov options\n", MAX_AOVS);
+		exit(1);
+	}
+	o->aov_name[o->n_aovs] = s;
+	o->aov_file[o->n_aovs++] = eq + 1;
 }
 
 static int integrator_arg(const char *s)
@@ -168,6 +193,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case OPT_INTEGRATOR: o->integrator = integrator_arg(optarg); break;
 		case OPT_TIME_LIMIT: o->time_limit = seconds_arg("--time-limit", optarg); break;
 		case OPT_CHECKPOINT: o->checkpoint = seconds_arg("--checkpoint", optarg); break;
+		case OPT_AOV: aov_arg(o, optarg); break;
 		case OPT_LIST_DEVICES: o->list_devices = 1; break;
 		case OPT_KERNEL_DIR: o->kernel_dir = optarg; break;
 		case OPT_CHECK: o->check = 1; break;
@@ -268,6 +294,29 @@ static int write_film(const film *f, void *ctx)
 	return -1;
 }
 
+/* Writes the AOVs asked for; each is an image of its own, linear in EXR. */
+static int write_aovs(const struct options *o, const film *f)
+{
+	float *rgb = malloc((size_t)f->width * f->height * 3 * sizeof *rgb);
+	int rc = rgb ? 0 : -1;
+	for (int i = 0; rc == 0 && i < o->n_aovs; i++) {
+		struct output out = { o->aov_file[i], o->scene };
+		film view = *f;
+		view.rgb = rgb;
+		rc = film_aov(f, o->aov_name[i], rgb) || write_film(&view, &out);
+	}
+	free(rgb);
+	return rc;
+}
+
+static int needs_aov_buffer(const struct options *o)
+{
+	for (int i = 0; i < o->n_aovs; i++)
+		if (strcmp(o->aov_name[i], "heat") != 0)
+			return 1;
+	return 0;
+}
+
 static void summary(const render_settings *rs, const render_stats *st, const device_ctx *d)
 {
 	double s = st->seconds > 0 ? st->seconds : 1e-9, m = 1e-6 / s;
@@ -291,7 +340,8 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		.width = o->width, .height = o->height, .samples = o->samples, .seed = o->seed,
 		.max_depth = o->max_depth >= 0 ? o->max_depth
 		           : s->max_trace_level > 0 ? s->max_trace_level : DEFAULT_MAX_DEPTH,
-		.integrator = o->integrator, .quiet = o->quiet, .time_limit = o->time_limit,
+		.integrator = o->integrator, .quiet = o->quiet, .aov = needs_aov_buffer(o),
+		.time_limit = o->time_limit,
 		.checkpoint = o->checkpoint, .on_checkpoint = write_film, .ctx = &out, .stop = &stop_signal,
 	};
 	device_ctx dev;
@@ -305,7 +355,7 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	    render_run(&dev, prog, &lr, &rs, &f, &st) == 0) {
 		if (!o->quiet)
 			summary(&rs, &st, &dev);
-		if (write_film(&f, &out) == 0)
+		if (write_film(&f, &out) == 0 && write_aovs(o, &f) == 0)
 			rc = stop_signal ? 128 + stop_signal : 0;
 	}
 	film_free(&f);
@@ -327,7 +377,10 @@ int main(int argc, char **argv)
 	if (!output)
 		return 1;
 	int rc = 1;
-	if (!o.dump_ast && !o.check && check_output(o.scene, output)) {
+	int bad_output = !o.dump_ast && !o.check && check_output(o.scene, output);
+	for (int i = 0; i < o.n_aovs && !bad_output && !o.check && !o.dump_ast; i++)
+		bad_output = check_output(o.scene, o.aov_file[i]);
+	if (bad_output) {
 		free(output);
 		return 1;
 	}

@@ -17,7 +17,8 @@
 	X(emitters, (LR)->emitters, (LR)->n_emitters * sizeof(dev_emitter), CL_MEM_READ_ONLY) \
 	X(params, (PARAMS), sizeof(dev_params), CL_MEM_READ_ONLY) \
 	X(film, NULL, (NPIX) * 4 * sizeof(float), CL_MEM_READ_WRITE) \
-	X(counters, NULL, COUNT_N * sizeof(cl_uint), CL_MEM_READ_WRITE)
+	X(counters, NULL, COUNT_N * sizeof(cl_uint), CL_MEM_READ_WRITE) \
+	X(aov, NULL, (PARAMS)->aov ? (NPIX) * AOV_FLOAT4S * 4 * sizeof(float) : 0, CL_MEM_READ_WRITE)
 
 enum {
 #define X(NAME, PTR, BYTES, FLAGS) BUF_##NAME,
@@ -117,6 +118,9 @@ static int read_film(struct pass_loop *pl, film *f)
 {
 	cl_int err = clEnqueueReadBuffer(pl->d->queue, pl->bufs[BUF_film], CL_TRUE, 0,
 	                                 pl->npix * 4 * sizeof *pl->sums, pl->sums, 0, NULL, NULL);
+	if (err == CL_SUCCESS && f->aov)
+		err = clEnqueueReadBuffer(pl->d->queue, pl->bufs[BUF_aov], CL_TRUE, 0,
+		                          pl->npix * AOV_FLOAT4S * 4 * sizeof(float), f->aov, 0, NULL, NULL);
 	if (err != CL_SUCCESS)
 		return device_fail("clEnqueueReadBuffer", err);
 	film_resolve(f, pl->sums, pl->st->samples);
@@ -164,6 +168,9 @@ static int run_passes(struct pass_loop *pl, film *f)
 	float zero = 0.0f;
 	cl_int err = clEnqueueFillBuffer(pl->d->queue, pl->bufs[BUF_film], &zero, sizeof zero, 0,
 	                                 pl->npix * 4 * sizeof(float), 0, NULL, NULL);
+	if (err == CL_SUCCESS && pl->params.aov)
+		err = clEnqueueFillBuffer(pl->d->queue, pl->bufs[BUF_aov], &zero, sizeof zero, 0,
+		                          pl->npix * AOV_FLOAT4S * 4 * sizeof(float), 0, NULL, NULL);
 	if (err != CL_SUCCESS)
 		return device_fail("clEnqueueFillBuffer", err);
 	int tty = !rs->quiet && isatty(STDERR_FILENO), per = pass_size(pl->npix);
@@ -222,11 +229,12 @@ int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_se
 	pl.params.n_prims = lr->n_prims;
 	pl.params.n_planes = lr->n_planes;
 	pl.params.n_emitters = lr->n_emitters;
+	pl.params.aov = rs->aov;
 	if (check_fits(d, lr, &pl.params, pl.npix))
 		return -1;
 	int rc = -1;
 	pl.sums = malloc(pl.npix * 4 * sizeof *pl.sums);
-	if (!pl.sums || film_init(f, rs->width, rs->height)) {
+	if (!pl.sums || film_init(f, rs->width, rs->height, rs->aov)) {
 		fprintf(stderr, "eclat: out of memory for a %dx%d film\n", rs->width, rs->height);
 		goto out;
 	}

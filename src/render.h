@@ -16,6 +16,7 @@ typedef struct render_settings {
 	int max_depth;         /* bounces */
 	int integrator;        /* INTEGRATOR_PATH or INTEGRATOR_NAIVE */
 	int quiet;
+	int aov;               /* 1: keep the first hits' albedo, normal, depth and object (film.aov) */
 	double time_limit;     /* seconds; 0: none. The render stops after the pass that passes it. */
 	double checkpoint;     /* seconds between calls of on_checkpoint; 0: none */
 	int (*on_checkpoint)(const film *f, void *ctx);
