@@ -4,7 +4,9 @@
  * expression, a block, a keyword with one argument, a flag or a directive. Which
  * items a block accepts is the evaluator's business (it knows the types), so the
  * grammar stays small and conflict-free and errors say "'location' is not valid in
- * a sphere" rather than "syntax error". Every node carries its source location. */
+ * a sphere" rather than "syntax error". Directives are nodes too (#if holds its
+ * branches, #while its body): the evaluator runs them, the lexer never does. Every
+ * node carries its source location. */
 #ifndef ECLAT_AST_H
 #define ECLAT_AST_H
 
@@ -14,47 +16,243 @@
 
 /* Keyword classes decide the grammar's shape around a keyword. */
 enum kw_class {
-	KWC_BLOCK,  /* KW { ITEMS }      sphere { <0,0,0>, 1 } */
-	KWC_ARG,    /* KW EXPRESSION     translate <1,0,0> */
-	KWC_FLAG,   /* KW                no_shadow */
-	KWC_COLOR,  /* KW EXPRESSION, a colour value: color rgb <1,0,0> */
+	KWC_BLOCK,   /* KW { ITEMS }        sphere { <0,0,0>, 1 } */
+	KWC_ARG,     /* KW EXPRESSION       translate <1,0,0>; also KW { ITEMS }: reflection { 0.1 } */
+	KWC_FLAG,    /* KW                  no_shadow; what may follow is read as the next items */
+	KWC_COLOR,   /* KW EXPRESSION       color Red: no-op, marks a colour */
+	KWC_RGB,     /* KW EXPRESSION       rgb <1,0,0> */
+	KWC_COMP,    /* KW EXPRESSION       color red 1 green 0.5; also .red */
+	KWC_FUNC,    /* KW ( ARGS )         sqrt(2) */
+	KWC_SPECIAL, /* a token of its own: texture array function deprecated once */
 };
 
-/* Every keyword the lexer knows. ORDER: alphabetical within each class is not
- * required; the lexer looks names up in this table. */
+/* Every keyword the lexer knows, POV-Ray 3.7's spelling. ORDER: none; the lexer
+ * looks names up in this table and tests/man.test reads it (one X a line). */
 #define AST_KEYWORDS(X) \
 	X(BACKGROUND, "background", BLOCK) \
+	X(BOUNDED_BY, "bounded_by", BLOCK) \
+	X(BOX, "box", BLOCK) \
 	X(CAMERA, "camera", BLOCK) \
+	X(CLIPPED_BY, "clipped_by", BLOCK) \
+	X(COLOR_MAP, "color_map", BLOCK) \
+	X(COLOUR_MAP, "colour_map", BLOCK) \
+	X(FACE_INDICES, "face_indices", BLOCK) \
 	X(FINISH, "finish", BLOCK) \
 	X(GLOBAL_SETTINGS, "global_settings", BLOCK) \
+	X(INTERIOR, "interior", BLOCK) \
 	X(LIGHT_SOURCE, "light_source", BLOCK) \
+	X(LOOKS_LIKE, "looks_like", BLOCK) \
+	X(MATERIAL, "material", BLOCK) \
+	X(MESH, "mesh", BLOCK) \
+	X(MESH2, "mesh2", BLOCK) \
+	X(NORMAL, "normal", BLOCK) \
+	X(NORMAL_INDICES, "normal_indices", BLOCK) \
+	X(NORMAL_MAP, "normal_map", BLOCK) \
+	X(NORMAL_VECTORS, "normal_vectors", BLOCK) \
 	X(OBJECT, "object", BLOCK) \
 	X(PIGMENT, "pigment", BLOCK) \
+	X(PIGMENT_MAP, "pigment_map", BLOCK) \
+	X(PLANE, "plane", BLOCK) \
+	X(SKY_SPHERE, "sky_sphere", BLOCK) \
+	X(SMOOTH_TRIANGLE, "smooth_triangle", BLOCK) \
 	X(SPHERE, "sphere", BLOCK) \
-	X(TEXTURE, "texture", BLOCK) \
+	X(TEXTURE_LIST, "texture_list", BLOCK) \
+	X(TEXTURE_MAP, "texture_map", BLOCK) \
 	X(TRIANGLE, "triangle", BLOCK) \
 	X(UNION, "union", BLOCK) \
+	X(UV_INDICES, "uv_indices", BLOCK) \
+	X(VERTEX_VECTORS, "vertex_vectors", BLOCK) \
+	X(ADAPTIVE, "adaptive", ARG) \
+	X(ADC_BAILOUT, "adc_bailout", ARG) \
+	X(AGATE_TURB, "agate_turb", ARG) \
 	X(AMBIENT, "ambient", ARG) \
+	X(AMBIENT_LIGHT, "ambient_light", ARG) \
 	X(ANGLE, "angle", ARG) \
+	X(APERTURE, "aperture", ARG) \
+	X(AREA_LIGHT, "area_light", ARG) \
+	X(ASSUMED_GAMMA, "assumed_gamma", ARG) \
+	X(BLUR_SAMPLES, "blur_samples", ARG) \
+	X(BRICK_SIZE, "brick_size", ARG) \
+	X(BRILLIANCE, "brilliance", ARG) \
+	X(CAUSTICS, "caustics", ARG) \
+	X(CRAND, "crand", ARG) \
 	X(DIFFUSE, "diffuse", ARG) \
 	X(DIRECTION, "direction", ARG) \
+	X(DISPERSION, "dispersion", ARG) \
 	X(EMISSION, "emission", ARG) \
+	X(EXPONENT, "exponent", ARG) \
+	X(FADE_COLOR, "fade_color", ARG) \
+	X(FADE_COLOUR, "fade_colour", ARG) \
+	X(FADE_DISTANCE, "fade_distance", ARG) \
+	X(FADE_POWER, "fade_power", ARG) \
+	X(FALLOFF, "falloff", ARG) \
+	X(FOCAL_POINT, "focal_point", ARG) \
+	X(FREQUENCY, "frequency", ARG) \
+	X(GRADIENT, "gradient", ARG) \
+	X(INSIDE_VECTOR, "inside_vector", ARG) \
+	X(IOR, "ior", ARG) \
+	X(LAMBDA, "lambda", ARG) \
 	X(LOCATION, "location", ARG) \
 	X(LOOK_AT, "look_at", ARG) \
+	X(MATRIX, "matrix", ARG) \
 	X(MAX_TRACE_LEVEL, "max_trace_level", ARG) \
+	X(MORTAR, "mortar", ARG) \
+	X(OCTAVES, "octaves", ARG) \
+	X(OMEGA, "omega", ARG) \
+	X(PHASE, "phase", ARG) \
+	X(PHONG, "phong", ARG) \
+	X(PHONG_SIZE, "phong_size", ARG) \
+	X(POINT_AT, "point_at", ARG) \
+	X(RADIUS, "radius", ARG) \
+	X(REFLECTION, "reflection", ARG) \
 	X(RIGHT, "right", ARG) \
 	X(ROTATE, "rotate", ARG) \
+	X(ROUGHNESS, "roughness", ARG) \
 	X(SCALE, "scale", ARG) \
 	X(SKY, "sky", ARG) \
+	X(SPECULAR, "specular", ARG) \
+	X(SPIRAL1, "spiral1", ARG) \
+	X(SPIRAL2, "spiral2", ARG) \
+	X(TIGHTNESS, "tightness", ARG) \
+	X(TRANSFORM, "transform", ARG) \
 	X(TRANSLATE, "translate", ARG) \
+	X(TURBULENCE, "turbulence", ARG) \
 	X(UP, "up", ARG) \
+	X(UV_VECTORS, "uv_vectors", ARG) \
+	X(AGATE, "agate", FLAG) \
+	X(BOXED, "boxed", FLAG) \
+	X(BOZO, "bozo", FLAG) \
+	X(BRICK, "brick", FLAG) \
+	X(BUMPS, "bumps", FLAG) \
+	X(CELLS, "cells", FLAG) \
+	X(CHECKER, "checker", FLAG) \
+	X(CIRCULAR, "circular", FLAG) \
+	X(CONSERVE_ENERGY, "conserve_energy", FLAG) \
+	X(CRACKLE, "crackle", FLAG) \
+	X(CUBIC_WAVE, "cubic_wave", FLAG) \
+	X(CYLINDRICAL, "cylindrical", FLAG) \
+	X(DENTS, "dents", FLAG) \
+	X(DOUBLE_ILLUMINATE, "double_illuminate", FLAG) \
+	X(FACETS, "facets", FLAG) \
+	X(FISHEYE, "fisheye", FLAG) \
+	X(FRESNEL, "fresnel", FLAG) \
+	X(GRANITE, "granite", FLAG) \
+	X(HEXAGON, "hexagon", FLAG) \
+	X(HOLLOW, "hollow", FLAG) \
+	X(INVERSE, "inverse", FLAG) \
+	X(JITTER, "jitter", FLAG) \
+	X(LEOPARD, "leopard", FLAG) \
+	X(MARBLE, "marble", FLAG) \
+	X(METALLIC, "metallic", FLAG) \
+	X(NO_IMAGE, "no_image", FLAG) \
+	X(NO_REFLECTION, "no_reflection", FLAG) \
+	X(NO_SHADOW, "no_shadow", FLAG) \
+	X(OMNIMAX, "omnimax", FLAG) \
+	X(ONION, "onion", FLAG) \
+	X(ORIENT, "orient", FLAG) \
+	X(ORTHOGRAPHIC, "orthographic", FLAG) \
+	X(PANORAMIC, "panoramic", FLAG) \
+	X(PARALLEL, "parallel", FLAG) \
 	X(PERSPECTIVE, "perspective", FLAG) \
+	X(PLANAR, "planar", FLAG) \
+	X(POLY_WAVE, "poly_wave", FLAG) \
+	X(QUILTED, "quilted", FLAG) \
+	X(RADIAL, "radial", FLAG) \
+	X(RAMP_WAVE, "ramp_wave", FLAG) \
+	X(RIPPLES, "ripples", FLAG) \
+	X(SCALLOP_WAVE, "scallop_wave", FLAG) \
+	X(SHADOWLESS, "shadowless", FLAG) \
+	X(SINE_WAVE, "sine_wave", FLAG) \
+	X(SPHERICAL, "spherical", FLAG) \
+	X(SPOTLIGHT, "spotlight", FLAG) \
+	X(SPOTTED, "spotted", FLAG) \
+	X(TRIANGLE_WAVE, "triangle_wave", FLAG) \
+	X(ULTRA_WIDE_ANGLE, "ultra_wide_angle", FLAG) \
+	X(UV_MAPPING, "uv_mapping", FLAG) \
+	X(WAVES, "waves", FLAG) \
+	X(WOOD, "wood", FLAG) \
+	X(WRINKLES, "wrinkles", FLAG) \
 	X(COLOR, "color", COLOR) \
 	X(COLOUR, "colour", COLOR) \
-	X(RGB, "rgb", COLOR) \
-	X(RGBF, "rgbf", COLOR) \
-	X(RGBFT, "rgbft", COLOR) \
-	X(RGBT, "rgbt", COLOR)
+	X(RGB, "rgb", RGB) \
+	X(RGBF, "rgbf", RGB) \
+	X(RGBFT, "rgbft", RGB) \
+	X(RGBT, "rgbt", RGB) \
+	X(SRGB, "srgb", RGB) \
+	X(SRGBF, "srgbf", RGB) \
+	X(SRGBFT, "srgbft", RGB) \
+	X(SRGBT, "srgbt", RGB) \
+	X(RED, "red", COMP) \
+	X(GREEN, "green", COMP) \
+	X(BLUE, "blue", COMP) \
+	X(FILTER, "filter", COMP) \
+	X(TRANSMIT, "transmit", COMP) \
+	X(GRAY, "gray", COMP) \
+	X(ABS, "abs", FUNC) \
+	X(ACOS, "acos", FUNC) \
+	X(ACOSH, "acosh", FUNC) \
+	X(ASC, "asc", FUNC) \
+	X(ASIN, "asin", FUNC) \
+	X(ASINH, "asinh", FUNC) \
+	X(ATAN, "atan", FUNC) \
+	X(ATAN2, "atan2", FUNC) \
+	X(ATANH, "atanh", FUNC) \
+	X(BITWISE_AND, "bitwise_and", FUNC) \
+	X(BITWISE_OR, "bitwise_or", FUNC) \
+	X(BITWISE_XOR, "bitwise_xor", FUNC) \
+	X(CEIL, "ceil", FUNC) \
+	X(CHR, "chr", FUNC) \
+	X(CONCAT, "concat", FUNC) \
+	X(COS, "cos", FUNC) \
+	X(COSH, "cosh", FUNC) \
+	X(DEFINED, "defined", FUNC) \
+	X(DEGREES, "degrees", FUNC) \
+	X(DIMENSION_SIZE, "dimension_size", FUNC) \
+	X(DIMENSIONS, "dimensions", FUNC) \
+	X(DIV, "div", FUNC) \
+	X(EXP, "exp", FUNC) \
+	X(FILE_EXISTS, "file_exists", FUNC) \
+	X(FLOOR, "floor", FUNC) \
+	X(INSIDE, "inside", FUNC) \
+	X(INT, "int", FUNC) \
+	X(LN, "ln", FUNC) \
+	X(LOG, "log", FUNC) \
+	X(MAX, "max", FUNC) \
+	X(MAX_EXTENT, "max_extent", FUNC) \
+	X(MIN, "min", FUNC) \
+	X(MIN_EXTENT, "min_extent", FUNC) \
+	X(MOD, "mod", FUNC) \
+	X(POW, "pow", FUNC) \
+	X(RADIANS, "radians", FUNC) \
+	X(RAND, "rand", FUNC) \
+	X(SEED, "seed", FUNC) \
+	X(SELECT, "select", FUNC) \
+	X(SIN, "sin", FUNC) \
+	X(SINH, "sinh", FUNC) \
+	X(SQRT, "sqrt", FUNC) \
+	X(STR, "str", FUNC) \
+	X(STRCMP, "strcmp", FUNC) \
+	X(STRLEN, "strlen", FUNC) \
+	X(STRLWR, "strlwr", FUNC) \
+	X(STRUPR, "strupr", FUNC) \
+	X(SUBSTR, "substr", FUNC) \
+	X(TAN, "tan", FUNC) \
+	X(TANH, "tanh", FUNC) \
+	X(TRACE, "trace", FUNC) \
+	X(VAL, "val", FUNC) \
+	X(VAXIS_ROTATE, "vaxis_rotate", FUNC) \
+	X(VCROSS, "vcross", FUNC) \
+	X(VDOT, "vdot", FUNC) \
+	X(VLENGTH, "vlength", FUNC) \
+	X(VNORMALIZE, "vnormalize", FUNC) \
+	X(VROTATE, "vrotate", FUNC) \
+	X(VSTR, "vstr", FUNC) \
+	X(VTURBULENCE, "vturbulence", FUNC) \
+	X(ARRAY, "array", SPECIAL) \
+	X(DEPRECATED, "deprecated", SPECIAL) \
+	X(FUNCTION, "function", SPECIAL) \
+	X(ONCE, "once", SPECIAL) \
+	X(TEXTURE, "texture", SPECIAL)
 
 enum ast_keyword {
 	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */
@@ -65,35 +263,71 @@ enum ast_keyword {
 	KW_COUNT
 };
 
+/* Operators of AST_BINARY that are not one character. */
+enum { OP_LE = 256, OP_GE, OP_NE };
+
 typedef enum {
+	/* expressions; ORDER: AST_IS_EXPRESSION */
 	AST_NUMBER,   /* num */
 	AST_STRING,   /* str */
 	AST_IDENT,    /* str */
-	AST_VECTOR,   /* kids: 2 to 5 components */
-	AST_BINARY,   /* op, kids: left right */
-	AST_UNARY,    /* op, kids: operand */
-	AST_COLOR,    /* kw, kids: operand */
-	AST_BLOCK,    /* kw, kids: items */
+	AST_VECTOR,   /* kids: the components */
+	AST_BINARY,   /* op (+ - * / < > = & | OP_LE OP_GE OP_NE), kids: left right */
+	AST_UNARY,    /* op (- + !), kids: operand */
+	AST_COLOR,    /* kw; color/rgb...: kids operand; red...: kids [base] value */
+	AST_COND,     /* kids: condition, then, else */
+	AST_MEMBER,   /* str = x y z u v t red green blue filter transmit gray, kids: operand */
+	AST_INDEX,    /* kids: array, index */
+	AST_CALL,     /* str = macro or function name, kids: arguments */
+	AST_FUNC,     /* kw = built-in function, kids: arguments */
+	AST_IFEXPR,   /* (#if (C) ITEMS [#else ITEMS] #end): kids as AST_IF; a branch gives one value */
+	/* everything else */
+	AST_BLOCK,    /* kw, kids: items; op 'B': the kids are another block's (#if (C) merge { #else union { #end) */
 	AST_ARG,      /* kw, kids: argument */
 	AST_FLAG,     /* kw */
-	AST_DECLARE,  /* str = name, op = 'd' (#declare) or 'l' (#local), kids: value */
+	AST_ENTRY,    /* [ ITEMS ] of a colour_map and the other maps, kids: items */
+	AST_ARRAY,    /* array[N]...: kids: dimensions (AST_BLOCK), [initialiser (AST_INIT)] */
+	AST_INIT,     /* { ITEMS } of an array initialiser, kids: items or AST_INIT */
+	AST_FUNCTION, /* function [(PARAMS)] { BODY }: kids: parameters (AST_BLOCK of AST_IDENT), body */
+	AST_DECLARE,  /* str = name, op = 'd' (#declare) or 'l' (#local), kids: value, [indices...] */
 	AST_INCLUDE,  /* kids: file name expression */
+	AST_MACRO,    /* str = name, kids: parameters (AST_BLOCK of AST_IDENT), body */
+	AST_IF,       /* op 'i' #if, 'd' #ifdef, 'n' #ifndef; kids: cond, body, [cond, body]..., [else] */
+	AST_WHILE,    /* kids: condition, body */
+	AST_FOR,      /* str = variable, kids: start, end, [step], body */
+	AST_SWITCH,   /* kids: value, body (items with AST_CASE, AST_RANGE, AST_ELSE among them) */
+	AST_CASE,     /* kids: value */
+	AST_RANGE,    /* kids: low, high */
+	AST_ELSE,     /* #else of a #switch */
+	AST_BREAK,
+	AST_UNDEF,    /* str = name */
+	AST_VERSION,  /* kids: version */
+	AST_DEFAULT,  /* kids: items */
+	AST_MESSAGE,  /* op 'd' #debug, 'w' #warning, 'e' #error; kids: text */
+	AST_FILE_IO,  /* str = fopen fclose read write: parsed, not supported */
 } ast_kind;
+
+#define AST_IS_EXPRESSION(k) ((k) <= AST_IFEXPR)
 
 typedef struct ast_node {
 	ast_kind kind;
 	src_loc loc;
 	int kw;      /* enum ast_keyword */
-	int op;      /* operator character */
+	int op;      /* operator character or OP_ */
 	double num;
 	char *str;
 	struct ast_node **kids;
 	int n_kids, cap_kids;
+	int depth;   /* 1 + the deepest kid's: the parser refuses trees deeper than AST_MAX_DEPTH */
 } ast_node;
+
+/* Every stage walks the tree recursively; this bounds the recursion. */
+#define AST_MAX_DEPTH 1000
 
 /* Keyword table look-ups. */
 int ast_keyword_lookup(const char *name, enum kw_class *cls); /* -1 when not a keyword */
 const char *ast_keyword_name(int kw);
+enum kw_class ast_keyword_class(int kw);
 
 /* Constructors, one per grammar action. They take ownership of their arguments and
  * exit with a message on out of memory (a parser cannot recover from that). */
@@ -101,9 +335,19 @@ ast_node *ast_new(ast_kind kind, src_loc loc);
 ast_node *ast_number(src_loc loc, double v);
 ast_node *ast_text(ast_kind kind, src_loc loc, char *s);
 ast_node *ast_op(ast_kind kind, src_loc loc, int op, ast_node *a, ast_node *b);
+ast_node *ast_op3(ast_kind kind, src_loc loc, int op, ast_node *a, ast_node *b, ast_node *c);
 ast_node *ast_keyword(ast_kind kind, src_loc loc, int kw, ast_node *arg);
-ast_node *ast_declare(src_loc loc, int op, char *name, ast_node *value);
+ast_node *ast_named(ast_kind kind, src_loc loc, char *name, ast_node *a, ast_node *b);
+ast_node *ast_declare(src_loc loc, int op, ast_node *target, ast_node *value);
 ast_node *ast_append(ast_node *list, ast_node *kid);
+/* Moves the kids of b to the end of a, frees b. */
+ast_node *ast_concat(ast_node *a, ast_node *b);
+/* Sets a block's keyword (or name, for KW_UNKNOWN) and location. */
+ast_node *ast_block(ast_node *items, int kw, char *name, src_loc loc);
+/* #if (C) THEN... HEAD1 { #else ELSE... HEAD2 { #end BODY }: an #if whose branches
+ * end with the blocks HEAD1 { BODY } and HEAD2 { BODY }, which share BODY. */
+ast_node *ast_if_heads(src_loc loc, ast_node *cond, ast_node *then, ast_node *head1, ast_node *els,
+                       ast_node *head2, ast_node *body);
 
 void ast_free(ast_node *n);
 /* Writes the tree as S-expressions with locations, for --dump-ast and golden tests. */

@@ -1,853 +1,1069 @@
-/* eval.c: walks the syntax tree in file order, as POV-Ray's parser does, giving
- * every expression a typed value and every block its meaning. */
+/* eval.c: walks the syntax tree in file order, as POV-Ray's parser does: the
+ * symbol scopes, the cursor that runs the directives among a block's items
+ * (#if, #while, #for, #switch, macro calls, #include), and the scene's top level.
+ * Expressions are in eval_expr.c, objects in eval_object.c, textures in
+ * eval_material.c, the camera, lights and global settings in eval_world.c. */
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
-#include "eval.h"
+#include "eval_int.h"
 #include "parse.h"
 
-typedef enum {
-	V_FLOAT, V_VECTOR, V_COLOR, V_STRING, V_OBJECT, V_PIGMENT, V_FINISH, V_TEXTURE
-} val_kind;
+/* ---- messages ---- */
 
-/* A value of the language. Pigments, finishes and textures share scene_material:
- * a pigment uses its pigment part, a finish the rest, a texture all of it. */
-typedef struct {
-	val_kind kind;
-	int n;              /* components of a vector (2 to 5); colours have 5 */
-	double v[5];        /* a float is v[0] */
-	char *str;
-	scene_object *objs; /* an object: the shapes it is made of */
-	int n_objs;
-	int compound;       /* an object made by union: mat is its own texture */
-	int has_mat;        /* the union has a texture, for its parts without one */
-	scene_material mat;
-} value;
+#define MAX_NOTES 4
 
-struct symbol {
-	char *name;
-	value val;
-	struct symbol *next;
-};
-
-struct eval {
-	scene *s;
-	struct symbol *symbols;
-	int include_depth;
-};
-
-#define MAX_INCLUDE_DEPTH 64
-
-static const char *kind_name(val_kind k)
+static bool same_context(const struct context *a, const struct context *b)
 {
-	static const char *const names[] = { /* ORDER val_kind */
-		"a float", "a vector", "a colour", "a string", "an object", "a pigment",
-		"a finish", "a texture",
-	};
-	return names[k];
+	return strcmp(diag_source_name(a->from.file), diag_source_name(b->from.file)) == 0 &&
+	       a->from.line == b->from.line && a->from.col == b->from.col &&
+	       (a->macro == b->macro || (a->macro && b->macro && strcmp(a->macro, b->macro) == 0));
 }
 
-static void value_free(value *v)
+/* The chain of includes and macro calls that led to the message, innermost
+ * first; a recursion (the same call again and again) is said once. */
+static void context_notes(struct eval *e)
 {
-	free(v->str);
-	free(v->objs);
-	v->str = NULL;
-	v->objs = NULL;
-}
-
-static value value_copy(const value *v)
-{
-	value c = *v;
-	c.str = v->str ? strdup(v->str) : NULL;
-	if (v->n_objs) {
-		c.objs = malloc(v->n_objs * sizeof *c.objs);
-		if (!c.objs) {
-			fprintf(stderr, "eclat: out of memory\n");
-			exit(1);
+	int shown = 0;
+	for (int i = e->n_ctx - 1; i >= 0; shown++) {
+		if (shown == MAX_NOTES) {
+			diag_note(SRC_NOWHERE, "and %d more includes and macro calls", i + 1);
+			return;
 		}
-		memcpy(c.objs, v->objs, v->n_objs * sizeof *c.objs);
+		int j = i;
+		while (j > 0 && same_context(&e->ctx[j - 1], &e->ctx[i]))
+			j--;
+		if (e->ctx[i].macro)
+			diag_note(e->ctx[i].from, "in macro '%s' called from here", e->ctx[i].macro);
+		else
+			diag_note(e->ctx[i].from, "in file included from here");
+		if (j < i)
+			diag_note(SRC_NOWHERE, "and from the same place %d more time%s", i - j, i - j == 1 ? "" : "s");
+		i = j - 1;
 	}
-	return c;
 }
 
-static void add_object(value *v, const scene_object *o)
+static void check_error_limit(struct eval *e)
 {
-	scene_object *objs = realloc(v->objs, (v->n_objs + 1) * sizeof *objs);
-	if (!objs) {
-		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
+	if (!e->stop && diag_error_count() >= EVAL_MAX_ERRORS) {
+		e->stop = true;
+		diag_note(SRC_NOWHERE, "too many errors; stopped after %d", EVAL_MAX_ERRORS);
 	}
-	v->objs = objs;
-	v->objs[v->n_objs++] = *o;
+}
+
+void eval_error(struct eval *e, src_loc loc, const char *fmt, ...)
+{
+	char msg[1024];
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof msg, fmt, ap);
+	va_end(ap);
+	if (e->stop)
+		return;
+	diag_error(loc, "%s", msg);
+	context_notes(e);
+	check_error_limit(e);
+}
+
+void eval_warning(struct eval *e, src_loc loc, const char *fmt, ...)
+{
+	char msg[1024];
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof msg, fmt, ap);
+	va_end(ap);
+	diag_warning(loc, "%s", msg);
+	context_notes(e);
+}
+
+void eval_warn_once(struct eval *e, src_loc loc, const char *key, const char *fmt, ...)
+{
+	for (int i = 0; i < e->n_warned; i++)
+		if (strcmp(e->warned[i], key) == 0)
+			return;
+	e->warned = eval_xrealloc(e->warned, (e->n_warned + 1) * sizeof *e->warned);
+	e->warned[e->n_warned++] = eval_xstrdup(key);
+	char msg[1024];
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof msg, fmt, ap);
+	va_end(ap);
+	eval_warning(e, loc, "%s", msg);
 }
 
 /* ---- symbols ---- */
 
-static struct symbol *lookup(struct eval *e, const char *name)
+struct symbol {
+	char *name;
+	value val;
+	struct symbol *ref;   /* a macro parameter given a declared identifier: that one */
+	bool undefined;       /* #undef: kept, so that a parameter referring to it stays valid */
+	struct symbol *next;
+};
+
+struct scope {
+	struct symbol **bucket;
+	unsigned n_bucket, count;
+	struct scope *parent;
+};
+
+static unsigned hash(const char *s)
 {
-	for (struct symbol *s = e->symbols; s; s = s->next)
-		if (strcmp(s->name, name) == 0)
-			return s;
+	unsigned h = 2166136261u;
+	while (*s)
+		h = (h ^ (unsigned char)*s++) * 16777619u;
+	return h;
+}
+
+static struct scope *scope_new(unsigned n_bucket)
+{
+	struct scope *s = eval_xrealloc(NULL, sizeof *s);
+	*s = (struct scope){ .n_bucket = n_bucket };
+	s->bucket = eval_xrealloc(NULL, n_bucket * sizeof *s->bucket);
+	memset(s->bucket, 0, n_bucket * sizeof *s->bucket);
+	return s;
+}
+
+static void scope_free(struct scope *s)
+{
+	for (unsigned i = 0; i < s->n_bucket; i++)
+		for (struct symbol *y = s->bucket[i], *next; y; y = next) {
+			next = y->next;
+			eval_value_free(&y->val);
+			free(y->name);
+			free(y);
+		}
+	free(s->bucket);
+	free(s);
+}
+
+static void scope_grow(struct scope *s)
+{
+	unsigned n = s->n_bucket * 4;
+	struct symbol **b = calloc(n, sizeof *b);
+	if (!b)
+		return;  /* longer chains, still correct */
+	for (unsigned i = 0; i < s->n_bucket; i++)
+		for (struct symbol *y = s->bucket[i], *next; y; y = next) {
+			next = y->next;
+			y->next = b[hash(y->name) % n];
+			b[hash(y->name) % n] = y;
+		}
+	free(s->bucket);
+	s->bucket = b;
+	s->n_bucket = n;
+}
+
+static struct symbol *scope_find(const struct scope *s, const char *name)
+{
+	for (struct symbol *y = s->bucket[hash(name) % s->n_bucket]; y; y = y->next)
+		if (strcmp(y->name, name) == 0)
+			return y;
 	return NULL;
 }
 
-static void declare(struct eval *e, const char *name, value v)
+static struct symbol *scope_add(struct scope *s, const char *name)
 {
-	struct symbol *s = lookup(e, name);
-	if (s) {
-		value_free(&s->val);
-		s->val = v;
-		return;
-	}
-	s = malloc(sizeof *s);
-	if (!s || !(s->name = strdup(name))) {
-		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
-	}
-	s->val = v;
-	s->next = e->symbols;
-	e->symbols = s;
+	if (s->count >= 2 * s->n_bucket)
+		scope_grow(s);
+	struct symbol *y = eval_xrealloc(NULL, sizeof *y);
+	*y = (struct symbol){ .name = eval_xstrdup(name), .undefined = true };
+	unsigned h = hash(name) % s->n_bucket;
+	y->next = s->bucket[h];
+	s->bucket[h] = y;
+	s->count++;
+	return y;
 }
 
-static void declare_vector(struct eval *e, const char *name, double a, double b, double c)
+static struct symbol *resolve(struct symbol *y)
 {
-	declare(e, name, (value){ .kind = V_VECTOR, .n = 3, .v = { a, b, c } });
+	while (y->ref)
+		y = y->ref;
+	return y;
+}
+
+/* The visible symbol of that name, followed through parameter references. */
+static struct symbol *visible(struct eval *e, const char *name)
+{
+	for (struct scope *s = e->scope; s; s = s->parent) {
+		struct symbol *y = scope_find(s, name);
+		if (y && !y->undefined)
+			return resolve(y)->undefined ? NULL : resolve(y);
+	}
+	return NULL;
+}
+
+value *eval_lookup(struct eval *e, const char *name)
+{
+	struct symbol *y = visible(e, name);
+	return y ? &y->val : NULL;
+}
+
+static void set_symbol(struct symbol *y, value v)
+{
+	y = resolve(y);
+	eval_value_free(&y->val);
+	y->val = v;
+	y->undefined = false;
+}
+
+/* POV-Ray's rules: #declare changes the visible identifier of that name, whatever
+ * scope it is in, else makes a global one; #local changes the one in the
+ * innermost scope (the macro or the include file), else makes one there. */
+void eval_assign(struct eval *e, const char *name, value v, bool local)
+{
+	struct symbol *y = local ? scope_find(e->scope, name) : visible(e, name);
+	if (!y)
+		y = local ? scope_add(e->scope, name)
+		          : (y = scope_find(e->global, name)) ? y : scope_add(e->global, name);
+	set_symbol(y, v);
+}
+
+bool eval_undef(struct eval *e, const char *name)
+{
+	for (struct scope *s = e->scope; s; s = s->parent) {
+		struct symbol *y = scope_find(s, name);
+		if (y && !y->undefined) {
+			y = resolve(y);
+			eval_value_free(&y->val);
+			y->val = (value){ .kind = V_NONE };
+			y->undefined = true;
+			return true;
+		}
+	}
+	return false;
+}
+
+static void scope_push(struct eval *e, struct scope *s)
+{
+	s->parent = e->scope;
+	e->scope = s;
+}
+
+static void scope_pop(struct eval *e)
+{
+	struct scope *s = e->scope;
+	e->scope = s->parent;
+	scope_free(s);
+}
+
+/* Edit distance with adjacent transpositions (Damerau-Levenshtein, optimal
+ * string alignment), for "did you mean": "Rign" is 1 from "Ring". */
+static int distance(const char *a, const char *b)
+{
+	int la = (int)strlen(a), lb = (int)strlen(b);
+	if (la > 64 || lb > 64)
+		return 99;
+	int d[65][65];
+	for (int i = 0; i <= la; i++)
+		d[i][0] = i;
+	for (int j = 0; j <= lb; j++)
+		d[0][j] = j;
+	for (int i = 1; i <= la; i++)
+		for (int j = 1; j <= lb; j++) {
+			int best = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
+			if (d[i - 1][j] + 1 < best)
+				best = d[i - 1][j] + 1;
+			if (d[i][j - 1] + 1 < best)
+				best = d[i][j - 1] + 1;
+			if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] && d[i - 2][j - 2] + 1 < best)
+				best = d[i - 2][j - 2] + 1;
+			d[i][j] = best;
+		}
+	return d[la][lb];
+}
+
+/* The declared name closest to name, if close enough to be a typo; "" if none. */
+void eval_suggest(struct eval *e, const char *name, char *out, size_t size)
+{
+	size_t len = strlen(name);
+	int best = (len <= 2 ? 0 : len <= 5 ? 1 : len <= 9 ? 2 : 3) + 1;
+	out[0] = '\0';
+	for (struct scope *s = e->scope; s; s = s->parent)
+		for (unsigned i = 0; i < s->n_bucket; i++)
+			for (struct symbol *y = s->bucket[i]; y; y = y->next) {
+				if (y->undefined)
+					continue;
+				int d = distance(name, y->name);
+				if (d < best || (d == best && strcmp(y->name, out) < 0)) {
+					best = d;
+					snprintf(out, size, "%s", y->name);
+				}
+			}
+}
+
+/* ---- the cursor ---- */
+
+enum frame_kind { FR_LIST, FR_WHILE, FR_FOR, FR_SWITCH, FR_MACRO, FR_INCLUDE };
+
+struct frame {
+	enum frame_kind kind;
+	const ast_node *list;    /* its kids are the items */
+	int i;                   /* the next one */
+	const ast_node *node;    /* #while, #for */
+	long count;              /* loop iterations */
+	double end, step;        /* #for */
+	bool scope, ctx;         /* pushed a scope, a context entry, to pop at the end */
+};
+
+void eval_cursor_init(struct cursor *c, struct eval *e, const ast_node *block)
+{
+	*c = (struct cursor){ .e = e };
+	if (block) {
+		c->frames = eval_xrealloc(NULL, 4 * sizeof *c->frames);
+		c->cap = 4;
+		c->frames[c->n++] = (struct frame){ .kind = FR_LIST, .list = block };
+	}
+}
+
+static struct frame *push_frame(struct cursor *c, enum frame_kind kind, const ast_node *list)
+{
+	if (c->n == c->cap) {
+		c->cap = c->cap ? 2 * c->cap : 4;
+		c->frames = eval_xrealloc(c->frames, c->cap * sizeof *c->frames);
+	}
+	struct frame *f = &c->frames[c->n++];
+	*f = (struct frame){ .kind = kind, .list = list };
+	return f;
+}
+
+static void pop_frame(struct cursor *c)
+{
+	struct eval *e = c->e;
+	struct frame *f = &c->frames[--c->n];
+	if (f->scope)
+		scope_pop(e);
+	if (f->ctx)
+		e->n_ctx--;
+	if (f->kind == FR_MACRO)
+		e->macro_depth--;
+	if (f->kind == FR_INCLUDE)
+		e->include_depth--;
+}
+
+void eval_cursor_free(struct cursor *c)
+{
+	while (c->n > 0)
+		pop_frame(c);
+	free(c->frames);
+	c->frames = NULL;
+}
+
+void eval_unget(struct cursor *c, const ast_node *item)
+{
+	c->pending = item;
+}
+
+static void push_context(struct eval *e, struct frame *f, const char *macro, src_loc from)
+{
+	if (e->n_ctx < EVAL_MAX_CONTEXT) {
+		e->ctx[e->n_ctx++] = (struct context){ macro, from };
+		f->ctx = true;
+	}
+}
+
+/* ---- conditions and loops ---- */
+
+bool eval_truth(double f)
+{
+	return fabs(f) > 1e-10;   /* POV-Ray's EPSILON */
+}
+
+/* (Cond) of #if, #while, #elseif: a float; -1 on error. */
+static int condition(struct eval *e, const ast_node *n)
+{
+	double f;
+	if (eval_expect_float(e, n, &f))
+		return -1;
+	return eval_truth(f);
+}
+
+static bool loop_limit(struct eval *e, struct frame *f)
+{
+	if (++f->count < EVAL_MAX_LOOP)
+		return false;
+	eval_error(e, f->node->loc, "#%s loop stopped after %d iterations (a loop that never ends?)",
+	           f->kind == FR_WHILE ? "while" : "for", EVAL_MAX_LOOP);
+	return true;
+}
+
+/* POV-Ray's test, with its EPSILON: #for (I, 0, 0.3, 0.1) runs 4 times although
+ * 0.1 + 0.1 + 0.1 is a little more than 0.3. */
+static bool for_continues(double v, double end, double step)
+{
+	return step > 0 ? v <= end + 1e-10 : v >= end - 1e-10;
+}
+
+/* The end of a loop's body: run it again or leave. */
+static void loop_again(struct cursor *c)
+{
+	struct eval *e = c->e;
+	struct frame *f = &c->frames[c->n - 1];
+	if (loop_limit(e, f)) {
+		pop_frame(c);
+		return;
+	}
+	if (f->kind == FR_WHILE) {
+		if (condition(e, f->node->kids[0]) == 1) {
+			f->i = 0;
+			return;
+		}
+		pop_frame(c);
+		return;
+	}
+	value *var = eval_lookup(e, f->node->str);
+	if (!var || var->kind != V_FLOAT) {
+		eval_error(e, f->node->loc, "the #for variable '%s' is no longer a float", f->node->str);
+		pop_frame(c);
+		return;
+	}
+	double next = var->v[0] + f->step;
+	eval_assign(e, f->node->str, eval_float(next), true);
+	if (for_continues(next, f->end, f->step))
+		f->i = 0;
+	else
+		pop_frame(c);
+}
+
+/* #while (Cond) ... #end */
+static void run_while(struct cursor *c, const ast_node *d)
+{
+	if (condition(c->e, d->kids[0]) != 1)
+		return;
+	struct frame *f = push_frame(c, FR_WHILE, d->kids[1]);
+	f->node = d;
+}
+
+/* #for (Identifier, Start, End [, Step]) ... #end: Identifier goes from Start
+ * while it is not past End, adding Step (default 1) after each pass. */
+static void run_for(struct cursor *c, const ast_node *d)
+{
+	struct eval *e = c->e;
+	double start, end, step = 1;
+	int has_step = d->n_kids == 4;
+	if (eval_expect_float(e, d->kids[0], &start) || eval_expect_float(e, d->kids[1], &end) ||
+	    (has_step && eval_expect_float(e, d->kids[2], &step)))
+		return;
+	if (step == 0) {
+		eval_error(e, d->kids[2]->loc, "#for with a step of 0 never ends");
+		return;
+	}
+	eval_assign(e, d->str, eval_float(start), true);
+	if (!for_continues(start, end, step))
+		return;
+	struct frame *f = push_frame(c, FR_FOR, d->kids[d->n_kids - 1]);
+	f->node = d;
+	f->end = end;
+	f->step = step;
+}
+
+/* #if (Cond) ... [#elseif (Cond) ...]... [#else ...] #end, and #ifdef, #ifndef. */
+static void run_if(struct cursor *c, const ast_node *d)
+{
+	struct eval *e = c->e;
+	int i = 0;
+	for (; i + 1 < d->n_kids; i += 2) {
+		int truth;
+		if (i == 0 && d->op != 'i')
+			truth = eval_is_defined(e, d->kids[0]) == (d->op == 'd');
+		else
+			truth = condition(e, d->kids[i]);
+		if (truth < 0)
+			return;
+		if (truth) {
+			push_frame(c, FR_LIST, d->kids[i + 1]);
+			return;
+		}
+	}
+	if (i < d->n_kids)
+		push_frame(c, FR_LIST, d->kids[i]);
+}
+
+/* #switch (Value) [#case (V) | #range (Low, High) ... [#break]]... [#else ...] #end:
+ * the items after the first clause that matches, through the clauses after it,
+ * up to a #break. */
+static void run_switch(struct cursor *c, const ast_node *d)
+{
+	struct eval *e = c->e;
+	double v, a, b;
+	if (eval_expect_float(e, d->kids[0], &v))
+		return;
+	const ast_node *body = d->kids[1];
+	for (int i = 0; i < body->n_kids; i++) {
+		const ast_node *k = body->kids[i];
+		int match = 0;
+		if (k->kind == AST_CASE) {
+			if (eval_expect_float(e, k->kids[0], &a))
+				return;
+			match = !eval_truth(v - a);
+		} else if (k->kind == AST_RANGE) {
+			if (eval_expect_float(e, k->kids[0], &a) || eval_expect_float(e, k->kids[1], &b))
+				return;
+			match = v >= a && v <= b;
+		} else {
+			match = k->kind == AST_ELSE;
+		}
+		if (match) {
+			push_frame(c, FR_SWITCH, body)->i = i + 1;
+			return;
+		}
+	}
+}
+
+/* #break: leaves the innermost #switch, loop or macro. */
+static void run_break(struct cursor *c, const ast_node *d)
+{
+	while (c->n > 0) {
+		enum frame_kind k = c->frames[c->n - 1].kind;
+		if (k == FR_INCLUDE)
+			break;
+		pop_frame(c);
+		if (k == FR_SWITCH || k == FR_WHILE || k == FR_FOR || k == FR_MACRO)
+			return;
+		if (c->n == 0)
+			break;
+	}
+	eval_error(c->e, d->loc, "#break outside #switch, #while, #for and #macro");
+}
+
+/* ---- macros ---- */
+
+/* #macro Name ([Param, ...]) ... #end: macros are global, as in POV-Ray. */
+static void define_macro(struct eval *e, const ast_node *d)
+{
+	struct symbol *y = scope_find(e->global, d->str);
+	if (!y)
+		y = scope_add(e->global, d->str);
+	set_symbol(y, (value){ .kind = V_MACRO, .node = d });
+}
+
+/* Binds the arguments of a call in a new scope. An argument that is a declared
+ * identifier is passed by reference: the macro's #declare or #local of the
+ * parameter changes it, as in POV-Ray. */
+static struct scope *bind_args(struct eval *e, const ast_node *call, const ast_node *def)
+{
+	const ast_node *params = def->kids[0];
+	if (call->n_kids != params->n_kids) {
+		eval_error(e, call->loc, "macro '%s' takes %d argument%s, not %d", call->str, params->n_kids,
+		           params->n_kids == 1 ? "" : "s", call->n_kids);
+		return NULL;
+	}
+	struct scope *s = scope_new(16);
+	for (int i = 0; i < call->n_kids; i++) {
+		const ast_node *arg = call->kids[i];
+		struct symbol *target = arg->kind == AST_IDENT ? visible(e, arg->str) : NULL;
+		value v = { .kind = V_NONE };
+		int rc = target ? 0 : AST_IS_EXPRESSION(arg->kind) ? eval_expr(e, arg, &v) : eval_block_value(e, arg, &v);
+		if (rc) {
+			scope_free(s);
+			return NULL;
+		}
+		struct symbol *y = scope_find(s, params->kids[i]->str);
+		if (!y)
+			y = scope_add(s, params->kids[i]->str);
+		if (target) {
+			y->ref = target;
+			y->undefined = false;
+		} else {
+			set_symbol(y, v);
+		}
+	}
+	return s;
+}
+
+static bool enter_macro(struct cursor *c, const ast_node *call, const value *macro)
+{
+	struct eval *e = c->e;
+	if (e->macro_depth >= EVAL_MAX_MACRO_DEPTH) {
+		eval_error(e, call->loc, "macro '%s' called more than %d levels deep (a recursion that never ends?)",
+		           call->str, EVAL_MAX_MACRO_DEPTH);
+		return false;
+	}
+	const ast_node *body = macro->node->kids[1];
+	if (body->kind == AST_MESSAGE) {   /* its syntax error, kept until now (parse_macro_body) */
+		if (e->n_ctx < EVAL_MAX_CONTEXT)
+			e->ctx[e->n_ctx++] = (struct context){ macro->node->str, call->loc };
+		eval_error(e, body->loc, "%s", body->str);
+		e->n_ctx--;
+		return false;
+	}
+	struct scope *s = bind_args(e, call, macro->node);
+	if (!s)
+		return false;
+	scope_push(e, s);
+	e->macro_depth++;
+	struct frame *f = push_frame(c, FR_MACRO, macro->node->kids[1]);
+	f->scope = true;
+	push_context(e, f, macro->node->str, call->loc);
+	return true;
+}
+
+int eval_function_body(struct eval *e, const ast_node *def, const char *const *names, const double *args, int n,
+                       value *out)
+{
+	struct scope *s = scope_new(8);
+	for (int i = 0; i < n; i++) {
+		const char *name = names ? names[i] : def->kids[0]->kids[i]->str;
+		struct symbol *y = scope_find(s, name);
+		set_symbol(y ? y : scope_add(s, name), eval_float(args[i]));
+	}
+	scope_push(e, s);
+	int rc = eval_expr(e, def->kids[1]->kids[0], out);
+	scope_pop(e);
+	if (rc == 0 && out->kind != V_FLOAT) {
+		eval_error(e, def->kids[1]->kids[0]->loc, "a function must give a float, this one gives %s",
+		           eval_kind_name(out->kind));
+		eval_value_free(out);
+		return -1;
+	}
+	return rc;
+}
+
+static const value *macro_called(struct eval *e, const ast_node *item)
+{
+	if (item->kind != AST_CALL)
+		return NULL;
+	const value *v = eval_lookup(e, item->str);
+	return v && v->kind == V_MACRO ? v : NULL;
+}
+
+/* The one value the items of a cursor give, after the directives among them:
+ * a macro's body in a value position, a branch of (#if ...). */
+static int one_value(struct eval *e, struct cursor *c, src_loc loc, const char *what, value *out)
+{
+	int err = 0, rc = -1;
+	const ast_node *item = eval_next(c, &err);
+	if (!item) {
+		if (!err)
+			eval_error(e, loc, "%s gives no value", what);
+	} else if (AST_IS_EXPRESSION(item->kind)) {
+		rc = eval_expr(e, item, out);
+	} else {
+		rc = eval_block_value(e, item, out);
+	}
+	const ast_node *more = rc == 0 ? eval_next(c, &err) : NULL;
+	if (more) {
+		eval_error(e, more->loc, "%s gives more than one value where one is expected", what);
+		eval_value_free(out);
+		rc = -1;
+	} else if (err && rc == 0) {
+		eval_value_free(out);
+		rc = -1;
+	}
+	eval_cursor_free(c);
+	return rc;
+}
+
+int eval_macro_value(struct eval *e, const ast_node *call, const value *macro, value *out)
+{
+	struct cursor c;
+	char what[300];
+	eval_cursor_init(&c, e, NULL);
+	if (!enter_macro(&c, call, macro)) {
+		eval_cursor_free(&c);
+		return -1;
+	}
+	snprintf(what, sizeof what, "macro '%s'", call->str);
+	return one_value(e, &c, call->loc, what, out);
+}
+
+/* (#if (Cond) ITEMS [#elseif (Cond) ITEMS]... [#else ITEMS] #end) */
+int eval_if_value(struct eval *e, const ast_node *n, value *out)
+{
+	struct cursor c;
+	eval_cursor_init(&c, e, NULL);
+	run_if(&c, n);
+	if (c.n == 0) {
+		eval_cursor_free(&c);
+		eval_error(e, n->loc, "this #if gives no value: no branch was taken");
+		return -1;
+	}
+	return one_value(e, &c, n->loc, "this #if", out);
+}
+
+/* ---- #include ---- */
+
+static bool readable(const char *path)
+{
+	struct stat st;
+	return stat(path, &st) == 0 && S_ISREG(st.st_mode) && access(path, R_OK) == 0;
+}
+
+static char *join(const char *dir, size_t n, const char *name)
+{
+	char *p = NULL;
+	if (asprintf(&p, "%.*s/%s", (int)n, dir, name) < 0)
+		eval_xrealloc(NULL, (size_t)-1 / 2);
+	return p;
+}
+
+static char *try_dir(const char *dir, size_t n, const char *name)
+{
+	char *p = join(dir, n, name);
+	if (readable(p))
+		return p;
+	free(p);
+	return NULL;
+}
+
+/* A colon-separated list of folders. */
+static char *try_path(const char *list, const char *name)
+{
+	while (list && *list) {
+		size_t n = strcspn(list, ":");
+		char *p = n ? try_dir(list, n, name) : NULL;
+		if (p)
+			return p;
+		list += n + (list[n] == ':');
+	}
+	return NULL;
+}
+
+#define POV_INCLUDE_DIR "/usr/share/povray-3.7/include"
+
+/* Where a file named in the scene is: next to the file that names it, then in
+ * the -I folders, $ECLAT_INCLUDE_PATH, POV-Ray's include folder. NULL if none;
+ * *first is then the name relative to the file that names it. */
+static char *find_file(struct eval *e, int from_file, const char *name, char **first)
+{
+	const char *from = diag_source_name(from_file);
+	const char *slash = from_file >= 0 ? strrchr(from, '/') : NULL;
+	*first = name[0] == '/' || !slash ? eval_xstrdup(name) : join(from, slash - from, name);
+	if (readable(*first) || name[0] == '/')
+		return readable(*first) ? eval_xstrdup(*first) : NULL;
+	char *p = NULL;
+	for (int i = 0; !p && e->opt && i < e->opt->n_include_dirs; i++)
+		p = try_dir(e->opt->include_dirs[i], strlen(e->opt->include_dirs[i]), name);
+	if (!p)
+		p = try_path(getenv("ECLAT_INCLUDE_PATH"), name);
+	if (!p)
+		p = try_dir(POV_INCLUDE_DIR, strlen(POV_INCLUDE_DIR), name);
+	return p;
+}
+
+bool eval_file_exists(struct eval *e, int from_file, const char *name)
+{
+	char *first, *p = find_file(e, from_file, name, &first);
+	free(first);
+	free(p);
+	return p != NULL;
+}
+
+static void keep_tree(struct eval *e, ast_node *tree)
+{
+	e->trees = eval_xrealloc(e->trees, (e->n_trees + 1) * sizeof *e->trees);
+	e->trees[e->n_trees++] = tree;
+}
+
+/* #include "File": its items run here, in a scope of its own for #local. */
+static void run_include(struct cursor *c, const ast_node *inc)
+{
+	struct eval *e = c->e;
+	char *name;
+	if (eval_expect_string(e, inc->kids[0], &name))
+		return;
+	if (e->include_depth >= EVAL_MAX_INCLUDE_DEPTH) {
+		eval_error(e, inc->loc, "#include nested more than %d deep (an include cycle?)", EVAL_MAX_INCLUDE_DEPTH);
+		free(name);
+		return;
+	}
+	char *first, *path = find_file(e, inc->loc.file, name, &first);
+	free(name);
+	ast_node *tree = parse_file(path ? path : first, inc->kids[0]->loc);
+	free(path);
+	free(first);
+	if (!tree) {
+		context_notes(e);
+		check_error_limit(e);
+		return;
+	}
+	keep_tree(e, tree);
+	struct frame *f = push_frame(c, FR_INCLUDE, tree);
+	scope_push(e, scope_new(64));
+	f->scope = true;
+	e->include_depth++;
+	push_context(e, f, NULL, inc->loc);
+}
+
+/* ---- the other directives ---- */
+
+static int array_target(struct eval *e, const ast_node *d, value v);
+
+/* #declare NAME [Index...] = VALUE, #local ... */
+static void run_declare(struct eval *e, const ast_node *d)
+{
+	const ast_node *rhs = d->kids[0];
+	value v;
+	int rc = AST_IS_EXPRESSION(rhs->kind) ? eval_expr(e, rhs, &v) : eval_block_value(e, rhs, &v);
+	if (rc)
+		return;
+	if (d->n_kids > 1) {
+		array_target(e, d, v);
+		return;
+	}
+	eval_assign(e, d->str, v, d->op == 'l');
+}
+
+/* #declare A[I][J] = V: the element must exist. */
+static int array_target(struct eval *e, const ast_node *d, value v)
+{
+	value *a = eval_lookup(e, d->str);
+	if (!a || a->kind != V_ARRAY) {
+		eval_error(e, d->loc, a ? "'%s' is not an array" : "undeclared array '%s'", d->str);
+		eval_value_free(&v);
+		return -1;
+	}
+	int n = d->n_kids - 1, at = 0;
+	if (n != a->arr->dims) {
+		eval_error(e, d->kids[1]->loc, "'%s' has %d dimensions, not %d", d->str, a->arr->dims, n);
+		eval_value_free(&v);
+		return -1;
+	}
+	for (int k = 0; k < n; k++) {
+		int i;
+		if (eval_expect_int(e, d->kids[k + 1], &i) || i < 0 || i >= a->arr->size[k]) {
+			if (i < 0 || i >= a->arr->size[k])
+				eval_error(e, d->kids[k + 1]->loc, "index %d is out of the range 0 to %d of '%s'", i,
+				           a->arr->size[k] - 1, d->str);
+			eval_value_free(&v);
+			return -1;
+		}
+		at = at * a->arr->size[k] + i;
+	}
+	a = eval_lookup(e, d->str);  /* the index may have run a macro that changed it */
+	if (!a || a->kind != V_ARRAY || at >= a->arr->n) {
+		eval_value_free(&v);
+		return -1;
+	}
+	eval_value_free(&a->arr->elems[at]);
+	a->arr->elems[at] = v;
+	return 0;
+}
+
+/* #debug, #warning, #error "Text" */
+static void run_message(struct eval *e, const ast_node *d)
+{
+	char *text;
+	if (eval_expect_string(e, d->kids[0], &text))
+		return;
+	if (d->op == 'd') {
+		fputs(text, stderr);
+	} else if (d->op == 'w') {
+		eval_warning(e, d->loc, "%s", text);
+	} else {
+		eval_error(e, d->loc, "#error: %s", text);
+		e->stop = true;
+	}
+	free(text);
+}
+
+/* #version V[;]: sets the value of version. */
+static void run_version(struct eval *e, const ast_node *d)
+{
+	double v;
+	if (eval_expect_float(e, d->kids[0], &v))
+		return;
+	e->version = v;
+	struct symbol *y = scope_find(e->global, "version");
+	if (!y)
+		y = scope_add(e->global, "version");
+	set_symbol(y, eval_float(v));
+}
+
+static void run_directive(struct cursor *c, const ast_node *d)
+{
+	struct eval *e = c->e;
+	switch (d->kind) {
+	case AST_DECLARE: run_declare(e, d); break;
+	case AST_INCLUDE: run_include(c, d); break;
+	case AST_MACRO: define_macro(e, d); break;
+	case AST_IF: run_if(c, d); break;
+	case AST_WHILE: run_while(c, d); break;
+	case AST_FOR: run_for(c, d); break;
+	case AST_SWITCH: run_switch(c, d); break;
+	case AST_BREAK: run_break(c, d); break;
+	case AST_UNDEF: eval_undef(e, d->str); break;
+	case AST_VERSION: run_version(e, d); break;
+	case AST_DEFAULT: eval_default(e, d); break;
+	case AST_MESSAGE: run_message(e, d); break;
+	case AST_CASE: case AST_RANGE: case AST_ELSE:
+		break;  /* a #switch running on through the next clause */
+	case AST_FILE_IO:
+		eval_error(e, d->loc, "#%s is not supported yet", d->str);
+		break;
+	default:
+		eval_error(e, d->loc, "unexpected directive");
+		break;
+	}
+}
+
+static bool is_directive(const ast_node *n)
+{
+	return n->kind >= AST_DECLARE;
+}
+
+const ast_node *eval_next(struct cursor *c, int *err)
+{
+	struct eval *e = c->e;
+	if (c->pending) {
+		const ast_node *n = c->pending;
+		c->pending = NULL;
+		return n;
+	}
+	while (c->n > 0 && !e->stop) {
+		struct frame *f = &c->frames[c->n - 1];
+		if (f->i >= f->list->n_kids) {
+			if (f->kind == FR_WHILE || f->kind == FR_FOR)
+				loop_again(c);
+			else
+				pop_frame(c);
+			continue;
+		}
+		const ast_node *item = f->list->kids[f->i++];
+		const value *m;
+		int errors = diag_error_count();
+		if (is_directive(item))
+			run_directive(c, item);
+		else if ((m = macro_called(e, item)) != NULL)
+			enter_macro(c, item, m);
+		else
+			return item;
+		/* In a block, an error in a directive or a call ends the block, quietly:
+		 * what follows would only report its consequences. */
+		if (!c->lenient && diag_error_count() > errors) {
+			*err = 1;
+			return NULL;
+		}
+	}
+	if (e->stop)
+		*err = 1;
+	return NULL;
+}
+
+const ast_node *eval_next_expr(struct cursor *c, int *err)
+{
+	const ast_node *n = eval_next(c, err);
+	if (n && !AST_IS_EXPRESSION(n->kind)) {
+		eval_unget(c, n);
+		return NULL;
+	}
+	return n;
+}
+
+/* ---- the scene ---- */
+
+static void declare_vector(struct eval *e, const char *name, int n, double a, double b, double c, double d)
+{
+	eval_assign(e, name, (value){ .kind = V_VECTOR, .n = n, .v = { a, b, c, d } }, false);
 }
 
 static void declare_float(struct eval *e, const char *name, double f)
 {
-	declare(e, name, (value){ .kind = V_FLOAT, .v = { f } });
+	eval_assign(e, name, eval_float(f), false);
 }
 
-/* POV-Ray's predeclared identifiers, and eclat_version so a scene can test for eclat. */
+/* POV-Ray's predeclared identifiers (its reserved words x, pi, clock...), and
+ * eclat_version so that a scene can test for eclat with #ifdef. */
 static void declare_builtins(struct eval *e)
 {
-	declare_vector(e, "x", 1, 0, 0);
-	declare_vector(e, "y", 0, 1, 0);
-	declare_vector(e, "z", 0, 0, 1);
+	const eval_options *o = e->opt;
+	declare_vector(e, "x", 3, 1, 0, 0, 0);
+	declare_vector(e, "y", 3, 0, 1, 0, 0);
+	declare_vector(e, "z", 3, 0, 0, 1, 0);
+	declare_vector(e, "t", 4, 0, 0, 0, 1);
+	declare_vector(e, "u", 2, 1, 0, 0, 0);
+	declare_vector(e, "v", 2, 0, 1, 0, 0);
 	declare_float(e, "pi", M_PI);
 	static const char *const yes[] = { "true", "yes", "on" }, *const no[] = { "false", "no", "off" };
 	for (int i = 0; i < 3; i++) {
 		declare_float(e, yes[i], 1);
 		declare_float(e, no[i], 0);
 	}
+	declare_float(e, "clock", o->clock);
+	declare_float(e, "clock_delta", 0);
+	declare_float(e, "clock_on", 0);
+	declare_float(e, "frame_number", 0);
+	declare_float(e, "initial_clock", 0);
+	declare_float(e, "final_clock", 0);
+	declare_float(e, "initial_frame", 0);
+	declare_float(e, "final_frame", 0);
+	declare_float(e, "image_width", o->image_width > 0 ? o->image_width : 640);
+	declare_float(e, "image_height", o->image_height > 0 ? o->image_height : 480);
+	declare_float(e, "version", e->version);
 	declare_float(e, "eclat_version", strtod(PACKAGE_VERSION, NULL));
 }
 
-/* ---- expressions ---- */
-
-static int eval_expr(struct eval *e, const ast_node *n, value *out);
-
-/* Promotes a float or vector to a vector of n components (a float fills them all). */
-static void widen(const value *v, int n, double out[5])
+/* -D NAME=VALUE: "#declare NAME = VALUE;" read from a text of its own, so that
+ * an error in VALUE points into that text. */
+static int declare_option(struct eval *e, const char *decl)
 {
-	for (int i = 0; i < 5; i++)
-		out[i] = v->kind == V_FLOAT ? (i < n ? v->v[0] : 0) : (i < v->n ? v->v[i] : 0);
-}
-
-static int is_numeric(val_kind k)
-{
-	return k == V_FLOAT || k == V_VECTOR || k == V_COLOR;
-}
-
-static int eval_binary(struct eval *e, const ast_node *n, value *out)
-{
-	value a, b;
-	if (eval_expr(e, n->kids[0], &a) || eval_expr(e, n->kids[1], &b))
-		return -1;
-	if (!is_numeric(a.kind) || !is_numeric(b.kind)) {
-		diag_error(n->loc, "cannot apply '%c' to %s and %s", n->op, kind_name(a.kind), kind_name(b.kind));
-		value_free(&a);
-		value_free(&b);
+	size_t n = strcspn(decl, "=");
+	if (!decl[n] || n == 0) {
+		diag_error(SRC_NOWHERE, "a declaration needs the form NAME=VALUE, not '%s'", decl);
 		return -1;
 	}
-	int size = a.kind == V_FLOAT ? b.n : b.kind == V_FLOAT ? a.n : (a.n > b.n ? a.n : b.n);
-	*out = (value){ .kind = a.kind == V_COLOR || b.kind == V_COLOR ? V_COLOR
-	                       : a.kind == V_FLOAT && b.kind == V_FLOAT ? V_FLOAT : V_VECTOR,
-	                .n = size ? size : 1 };
-	double x[5], y[5];
-	widen(&a, 5, x);
-	widen(&b, 5, y);
-	for (int i = 0; i < 5; i++) {
-		if (n->op == '/' && y[i] == 0 && i < out->n) {
-			diag_error(n->loc, "division by zero");
-			return -1;
-		}
-		out->v[i] = n->op == '+' ? x[i] + y[i] : n->op == '-' ? x[i] - y[i]
-		          : n->op == '*' ? x[i] * y[i] : (y[i] != 0 ? x[i] / y[i] : 0);
-	}
-	return 0;
-}
-
-static int eval_vector(struct eval *e, const ast_node *n, value *out)
-{
-	if (n->n_kids < 2 || n->n_kids > 5) {
-		diag_error(n->loc, "a vector has 2 to 5 components, this one has %d", n->n_kids);
-		return -1;
-	}
-	*out = (value){ .kind = V_VECTOR, .n = n->n_kids };
-	for (int i = 0; i < n->n_kids; i++) {
-		value c;
-		if (eval_expr(e, n->kids[i], &c))
-			return -1;
-		if (c.kind != V_FLOAT) {
-			diag_error(n->kids[i]->loc, "expected a float as vector component, found %s", kind_name(c.kind));
-			value_free(&c);
-			return -1;
-		}
-		out->v[i] = c.v[0];
-	}
-	return 0;
-}
-
-/* rgb, rgbf, rgbt and rgbft take 3, 4, 4 and 5 numbers; color takes any colour. */
-static int eval_color(struct eval *e, const ast_node *n, value *out)
-{
-	value a;
-	if (eval_expr(e, n->kids[0], &a))
-		return -1;
-	if (!is_numeric(a.kind)) {
-		diag_error(n->kids[0]->loc, "expected a colour after '%s', found %s", ast_keyword_name(n->kw), kind_name(a.kind));
-		value_free(&a);
-		return -1;
-	}
-	*out = (value){ .kind = V_COLOR, .n = 5 };
-	if (n->kw == KW_COLOR || n->kw == KW_COLOUR) {
-		widen(&a, 5, out->v);   /* POV-Ray: "color 0.5" sets filter and transmit too */
-		return 0;
-	}
-	static const int slots[][5] = {   /* which colour component each number fills */
-		[KW_RGB] = { 0, 1, 2, -1, -1 }, [KW_RGBF] = { 0, 1, 2, 3, -1 },
-		[KW_RGBT] = { 0, 1, 2, 4, -1 }, [KW_RGBFT] = { 0, 1, 2, 3, 4 },
-	};
-	int want = n->kw == KW_RGB ? 3 : n->kw == KW_RGBFT ? 5 : 4;
-	if (a.kind == V_COLOR) {   /* rgb C keeps the components rgb names, as POV-Ray does */
-		for (int i = 0; i < want; i++)
-			out->v[slots[n->kw][i]] = a.v[slots[n->kw][i]];
-		return 0;
-	}
-	if (a.kind != V_FLOAT && a.n != want) {
-		diag_error(n->kids[0]->loc, "'%s' takes a vector of %d components, found %d",
-		           ast_keyword_name(n->kw), want, a.n);
-		return -1;
-	}
-	double w[5];
-	widen(&a, want, w);
-	for (int i = 0; i < want; i++)
-		out->v[slots[n->kw][i]] = w[i];
-	return 0;
-}
-
-static int eval_expr(struct eval *e, const ast_node *n, value *out)
-{
-	switch (n->kind) {
-	case AST_NUMBER:
-		*out = (value){ .kind = V_FLOAT, .v = { n->num } };
-		return 0;
-	case AST_STRING:
-		*out = (value){ .kind = V_STRING, .str = strdup(n->str) };
-		return 0;
-	case AST_IDENT: {
-		struct symbol *s = lookup(e, n->str);
-		if (!s) {
-			diag_error(n->loc, "undeclared identifier '%s'", n->str);
-			return -1;
-		}
-		*out = value_copy(&s->val);
-		return 0;
-	}
-	case AST_VECTOR:
-		return eval_vector(e, n, out);
-	case AST_BINARY:
-		return eval_binary(e, n, out);
-	case AST_UNARY:
-		if (eval_expr(e, n->kids[0], out))
-			return -1;
-		if (!is_numeric(out->kind)) {
-			diag_error(n->loc, "cannot apply '%c' to %s", n->op, kind_name(out->kind));
-			value_free(out);
-			return -1;
-		}
-		for (int i = 0; i < 5 && n->op == '-'; i++)
-			out->v[i] = -out->v[i];
-		return 0;
-	case AST_COLOR:
-		return eval_color(e, n, out);
-	default:
-		diag_error(n->loc, "expected an expression, found '%s'", ast_keyword_name(n->kw));
-		return -1;
-	}
-}
-
-/* Evaluates n and checks its type; floats promote to vectors and colours. */
-static int expect_float(struct eval *e, const ast_node *n, double *f)
-{
-	value v;
-	if (eval_expr(e, n, &v))
-		return -1;
-	if (v.kind != V_FLOAT) {
-		diag_error(n->loc, "expected a float, found %s", kind_name(v.kind));
-		value_free(&v);
-		return -1;
-	}
-	*f = v.v[0];
-	return 0;
-}
-
-static int expect_vector(struct eval *e, const ast_node *n, double out[3])
-{
-	value v;
-	if (eval_expr(e, n, &v))
-		return -1;
-	if (v.kind != V_FLOAT && !(v.kind == V_VECTOR && v.n == 3)) {
-		if (v.kind == V_VECTOR)
-			diag_error(n->loc, "expected a 3-component vector, found %d components", v.n);
-		else
-			diag_error(n->loc, "expected a vector, found %s", kind_name(v.kind));
-		value_free(&v);
-		return -1;
-	}
-	double w[5];
-	widen(&v, 3, w);
-	memcpy(out, w, 3 * sizeof *out);
-	for (int i = 0; i < 3; i++)
-		if (!isfinite(out[i])) {
-			diag_error(n->loc, "vector component is not a finite number");
-			return -1;
-		}
-	return 0;
-}
-
-static int expect_color(struct eval *e, const ast_node *n, double out[5])
-{
-	value v;
-	if (eval_expr(e, n, &v))
-		return -1;
-	if (!is_numeric(v.kind)) {
-		diag_error(n->loc, "expected a colour, found %s", kind_name(v.kind));
-		value_free(&v);
-		return -1;
-	}
-	widen(&v, 5, out);
-	return 0;
-}
-
-/* ---- blocks ---- */
-
-static int is_expression(const ast_node *n)
-{
-	return n->kind <= AST_COLOR;
-}
-
-/* POV-Ray's words for what eclat cannot render yet: a scene that uses one must
- * not render as a silently different picture. */
-static void unknown_block(const ast_node *b)
-{
-	static const char *const pov[] = {
-		"bicubic_patch", "blob", "box", "cone", "cubic", "cylinder", "difference", "disc",
-		"fog", "height_field", "interior", "intersection", "isosurface", "julia_fractal",
-		"lathe", "material", "media", "merge", "mesh", "mesh2", "normal", "ovus", "parametric",
-		"photons", "plane", "poly", "polygon", "polynomial", "prism", "quadric", "quartic",
-		"radiosity", "rainbow", "sky_sphere", "smooth_triangle", "sor", "sphere_sweep",
-		"superellipsoid", "text", "torus",
-	};
-	for (size_t i = 0; i < sizeof pov / sizeof *pov; i++)
-		if (strcmp(pov[i], b->str) == 0) {
-			diag_error(b->loc, "'%s' is not supported yet", b->str);
-			return;
-		}
-	diag_error(b->loc, "unknown keyword '%s'", b->str);
-}
-
-static int not_valid(const ast_node *item, const char *where)
-{
-	if (is_expression(item))
-		diag_error(item->loc, "unexpected expression in %s", where);
-	else if (item->kind == AST_DECLARE || item->kind == AST_INCLUDE)
-		diag_error(item->loc, "directives are not supported inside %s yet", where);
-	else if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN)
-		unknown_block(item);
-	else
-		diag_error(item->loc, "'%s' is not valid in %s", ast_keyword_name(item->kw), where);
-	return -1;
-}
-
-/* translate, rotate and scale: 1 when item is one (and t updated), 0 when not, -1 on error. */
-static int transform_item(struct eval *e, const ast_node *item, xform *t)
-{
-	if (item->kind != AST_ARG ||
-	    (item->kw != KW_TRANSLATE && item->kw != KW_ROTATE && item->kw != KW_SCALE))
-		return 0;
-	double v[3];
-	if (expect_vector(e, item->kids[0], v))
-		return -1;
-	xform step;
-	if (item->kw == KW_TRANSLATE) {
-		step = scene_xform_translate(v);
-	} else if (item->kw == KW_ROTATE) {
-		step = scene_xform_rotate(v);
-	} else {
-		for (int i = 0; i < 3; i++)
-			if (v[i] == 0) {
-				diag_warning(item->kids[0]->loc, "scale by 0 changed to 1, as POV-Ray does");
-				v[i] = 1;
-			}
-		step = scene_xform_scale(v);
-	}
-	*t = scene_xform_then(t, &step);
-	return 1;
-}
-
-static int eval_material_block(struct eval *e, const ast_node *b, scene_material *m);
-
-static void apply_pigment(scene_material *m, const double c[5])
-{
-	for (int i = 0; i < 5; i++)
-		m->pigment[i] = (float)c[i];
-}
-
-static void apply_finish(scene_material *m, const scene_material *f)
-{
-	m->diffuse = f->diffuse;
-	memcpy(m->ambient, f->ambient, sizeof m->ambient);
-	memcpy(m->emission, f->emission, sizeof m->emission);
-}
-
-/* A positional item of a pigment, finish or texture block: a declared one of the
- * same kind (or a colour, for a pigment) that the block starts from. */
-static int material_base(struct eval *e, const ast_node *b, const ast_node *item, scene_material *m)
-{
-	value v;
-	if (eval_expr(e, item, &v))
-		return -1;
-	val_kind want = b->kw == KW_PIGMENT ? V_PIGMENT : b->kw == KW_FINISH ? V_FINISH : V_TEXTURE;
-	if (b->kw == KW_PIGMENT && is_numeric(v.kind)) {
-		double c[5];
-		widen(&v, 5, c);
-		apply_pigment(m, c);
-		return 0;
-	}
-	if (v.kind != want) {
-		diag_error(item->loc, "expected %s%s, found %s", kind_name(want),
-		           b->kw == KW_PIGMENT ? " or a colour" : "", kind_name(v.kind));
-		value_free(&v);
-		return -1;
-	}
-	if (want == V_PIGMENT)
-		apply_pigment(m, (double[5]){ v.mat.pigment[0], v.mat.pigment[1], v.mat.pigment[2],
-		                              v.mat.pigment[3], v.mat.pigment[4] });
-	else if (want == V_FINISH)
-		apply_finish(m, &v.mat);
-	else
-		*m = v.mat;
-	value_free(&v);
-	return 0;
-}
-
-static int finish_item(struct eval *e, const ast_node *item, scene_material *m)
-{
-	double c[5];
-	switch (item->kind == AST_ARG ? item->kw : -1) {
-	case KW_DIFFUSE:
-		if (expect_float(e, item->kids[0], c))
-			return -1;
-		m->diffuse = (float)c[0];
-		return 0;
-	case KW_AMBIENT:
-	case KW_EMISSION:
-		if (expect_color(e, item->kids[0], c))
-			return -1;
-		for (int i = 0; i < 3; i++)
-			(item->kw == KW_AMBIENT ? m->ambient : m->emission)[i] = (float)c[i];
-		return 0;
-	default:
-		return not_valid(item, "a finish");
-	}
-}
-
-/* pigment { COLOR }, finish { ITEMS }, texture { pigment {} finish {} } */
-static int eval_material_block(struct eval *e, const ast_node *b, scene_material *m)
-{
-	for (int i = 0; i < b->n_kids; i++) {
-		const ast_node *item = b->kids[i];
-		int rc;
-		if (is_expression(item) && i == 0)
-			rc = material_base(e, b, item, m);
-		else if (b->kw == KW_FINISH)
-			rc = finish_item(e, item, m);
-		else if (b->kw == KW_TEXTURE && item->kind == AST_BLOCK &&
-		         (item->kw == KW_PIGMENT || item->kw == KW_FINISH))
-			rc = eval_material_block(e, item, m);
-		else
-			rc = not_valid(item, b->kw == KW_PIGMENT ? "a pigment" : "a texture");
-		if (rc)
-			return -1;
-	}
-	return 0;
-}
-
-static int is_object_kw(int kw)
-{
-	return kw == KW_SPHERE || kw == KW_TRIANGLE || kw == KW_UNION || kw == KW_OBJECT;
-}
-
-static int eval_object(struct eval *e, const ast_node *b, value *out);
-
-/* The items every object accepts after its own arguments. */
-/* A union's texture goes to its parts that have none of their own. This happens
- * when the union is used (placed in the scene or in another union), so that
- * object { U pigment { ... } } still changes the texture of U's bare parts. */
-static void resolve_texture(value *obj)
-{
-	for (int i = 0; obj->compound && obj->has_mat && i < obj->n_objs; i++)
-		if (!obj->objs[i].textured) {
-			obj->objs[i].material = obj->mat;
-			obj->objs[i].textured = true;
-		}
-	obj->has_mat = 0;
-}
-
-/* The items every object accepts after its own arguments: transforms, and a
- * pigment, finish or texture that changes the object's texture (a union's own). */
-static int object_modifier(struct eval *e, const ast_node *item, value *obj, const char *where)
-{
-	xform t = scene_xform_identity();
-	int rc = transform_item(e, item, &t);
-	if (rc < 0)
-		return -1;
-	if (rc > 0) {
-		for (int i = 0; i < obj->n_objs; i++)
-			obj->objs[i].xf = scene_xform_then(&obj->objs[i].xf, &t);
-		return 0;
-	}
-	if (item->kind != AST_BLOCK || (item->kw != KW_PIGMENT && item->kw != KW_FINISH && item->kw != KW_TEXTURE))
-		return not_valid(item, where);
-	if (!obj->compound) {
-		obj->objs[0].textured = true;
-		return eval_material_block(e, item, &obj->objs[0].material);
-	}
-	if (!obj->has_mat)
-		obj->mat = scene_default_material();
-	obj->has_mat = 1;
-	return eval_material_block(e, item, &obj->mat);
-}
-
-/* sphere { <Center>, Radius }  triangle { <A>, <B>, <C> } */
-static int eval_shape(struct eval *e, const ast_node *b, value *out)
-{
-	scene_object o = { .shape = b->kw == KW_SPHERE ? SHAPE_SPHERE : SHAPE_TRIANGLE,
-	                   .xf = scene_xform_identity(), .material = scene_default_material(),
-	                   .loc = b->loc };
-	int want = o.shape == SHAPE_SPHERE ? 2 : 3, got = 0, i = 0;
-	const char *where = o.shape == SHAPE_SPHERE ? "a sphere" : "a triangle";
-	for (; i < b->n_kids && got < want && is_expression(b->kids[i]); i++, got++) {
-		int rc = o.shape == SHAPE_SPHERE && got == 1
-		       ? expect_float(e, b->kids[i], &o.radius)
-		       : expect_vector(e, b->kids[i], o.p[got]);
-		if (rc)
-			return -1;
-	}
-	if (got < want) {
-		diag_error(i < b->n_kids ? b->kids[i]->loc : b->loc, "%s needs %s", where,
-		           o.shape == SHAPE_SPHERE ? "a centre and a radius" : "three corners");
-		return -1;
-	}
-	*out = (value){ .kind = V_OBJECT };
-	add_object(out, &o);
-	for (; i < b->n_kids; i++)
-		if (object_modifier(e, b->kids[i], out, where))
-			return -1;
-	return 0;
-}
-
-/* union { OBJECTS... [MODIFIERS...] }  object { IDENTIFIER [MODIFIERS...] } */
-static int eval_compound(struct eval *e, const ast_node *b, value *out)
-{
-	*out = (value){ .kind = V_OBJECT };
-	const char *where = b->kw == KW_UNION ? "a union" : "an object";
-	int i = 0;
-	if (b->kw == KW_OBJECT) {
-		if (b->n_kids == 0 || !is_expression(b->kids[0])) {
-			diag_error(b->loc, "object needs an object identifier first");
-			return -1;
-		}
-		if (eval_expr(e, b->kids[0], out))
-			return -1;
-		if (out->kind != V_OBJECT) {
-			diag_error(b->kids[0]->loc, "expected an object, found %s", kind_name(out->kind));
-			value_free(out);
-			return -1;
-		}
-		i = 1;
-	}
-	int modifiers_seen = 0;
-	if (b->kw == KW_UNION)
-		out->compound = 1;
-	for (; i < b->n_kids; i++) {
-		const ast_node *item = b->kids[i];
-		if (b->kw == KW_UNION && item->kind == AST_BLOCK && is_object_kw(item->kw)) {
-			if (modifiers_seen) {
-				diag_error(item->loc, "the objects of a union come before its modifiers");
-				return -1;
-			}
-			value part;
-			if (eval_object(e, item, &part))
-				return -1;
-			resolve_texture(&part);
-			for (int k = 0; k < part.n_objs; k++)
-				add_object(out, &part.objs[k]);
-			value_free(&part);
-			continue;
-		}
-		modifiers_seen = 1;
-		if (object_modifier(e, item, out, where))
-			return -1;
-	}
-	return 0;
-}
-
-static int eval_object(struct eval *e, const ast_node *b, value *out)
-{
-	if (b->kw == KW_SPHERE || b->kw == KW_TRIANGLE)
-		return eval_shape(e, b, out);
-	return eval_compound(e, b, out);
-}
-
-/* camera { [perspective] [location V] [direction V] [right V] [up V] [sky V]
- *          [angle F] [look_at V] [TRANSFORMS...] }
- * Applied in POV-Ray 3.7's fixed order whatever the order in the file: the
- * vectors, then angle, then look_at, then the transforms. */
-static int eval_camera(struct eval *e, const ast_node *b)
-{
-	scene_camera c = scene_default_camera();
-	double sky[3] = { 0, 1, 0 }, look_at[3], angle = -1;
-	int has_look_at = 0;
-	xform t = scene_xform_identity();
-	c.loc = b->loc;
-	for (int i = 0; i < b->n_kids; i++) {
-		const ast_node *item = b->kids[i];
-		int rc = transform_item(e, item, &t);
-		if (rc < 0)
-			return -1;
-		if (rc > 0 || (item->kind == AST_FLAG && item->kw == KW_PERSPECTIVE))
-			continue;
-		double *dst = NULL;
-		switch (item->kind == AST_ARG ? item->kw : -1) {
-		case KW_LOCATION: dst = c.location; break;
-		case KW_DIRECTION: dst = c.direction; break;
-		case KW_RIGHT: dst = c.right; break;
-		case KW_UP: dst = c.up; break;
-		case KW_SKY: dst = sky; break;
-		case KW_LOOK_AT: dst = look_at; has_look_at = 1; break;
-		case KW_ANGLE:
-			if (expect_float(e, item->kids[0], &angle))
-				return -1;
-			if (angle <= 0 || angle >= 180) {
-				diag_error(item->kids[0]->loc, "camera angle must be between 0 and 180 degrees");
-				return -1;
-			}
-			continue;
-		default:
-			return not_valid(item, "a camera");
-		}
-		if (expect_vector(e, item->kids[0], dst))
-			return -1;
-	}
-	if (angle > 0) {
-		double dl = sqrt(c.direction[0] * c.direction[0] + c.direction[1] * c.direction[1] +
-		                 c.direction[2] * c.direction[2]);
-		double rl = sqrt(c.right[0] * c.right[0] + c.right[1] * c.right[1] + c.right[2] * c.right[2]);
-		double want = rl / tan(angle * M_PI / 360.0) / 2.0;
-		for (int k = 0; k < 3 && dl > 0; k++)
-			c.direction[k] *= want / dl;
-	}
-	if (has_look_at && scene_camera_look_at(&c, look_at, sky) != 0) {
-		diag_error(b->loc, "camera location and look_at point must be different");
-		return -1;
-	}
-	scene_xform_point(&t, c.location, c.location);
-	scene_xform_vector(&t, c.direction, c.direction);
-	scene_xform_vector(&t, c.right, c.right);
-	scene_xform_vector(&t, c.up, c.up);
-	e->s->camera = c;
-	return 0;
-}
-
-/* light_source { <Location>, COLOR [TRANSFORMS...] } */
-static int eval_light(struct eval *e, const ast_node *b)
-{
-	scene_light l = scene_default_light();
-	l.loc = b->loc;
-	double pos[3], col[5];
-	if (b->n_kids < 2 || !is_expression(b->kids[0]) || !is_expression(b->kids[1])) {
-		diag_error(b->loc, "light_source needs a location and a colour");
-		return -1;
-	}
-	if (expect_vector(e, b->kids[0], pos) || expect_color(e, b->kids[1], col))
-		return -1;
-	xform t = scene_xform_identity();
-	for (int i = 2; i < b->n_kids; i++) {
-		int rc = transform_item(e, b->kids[i], &t);
-		if (rc < 0)
-			return -1;
-		if (rc == 0)
-			return not_valid(b->kids[i], "a light_source");
-	}
-	scene_xform_point(&t, pos, l.position);
-	for (int i = 0; i < 3; i++)
-		l.color[i] = (float)col[i];
-	scene_add_light(e->s, &l);
-	return 0;
-}
-
-static int eval_background(struct eval *e, const ast_node *b)
-{
-	double c[5];
-	if (b->n_kids != 1 || !is_expression(b->kids[0])) {
-		diag_error(b->loc, "background needs one colour");
-		return -1;
-	}
-	if (expect_color(e, b->kids[0], c))
-		return -1;
-	for (int i = 0; i < 3; i++)
-		e->s->background[i] = (float)c[i];
-	return 0;
-}
-
-static int eval_global_settings(struct eval *e, const ast_node *b)
-{
-	for (int i = 0; i < b->n_kids; i++) {
-		const ast_node *item = b->kids[i];
-		double f;
-		if (item->kind != AST_ARG || item->kw != KW_MAX_TRACE_LEVEL)
-			return not_valid(item, "global_settings");
-		if (expect_float(e, item->kids[0], &f))
-			return -1;
-		if (f < 1 || f > 256) {
-			diag_error(item->kids[0]->loc, "max_trace_level must be between 1 and 256");
-			return -1;
-		}
-		e->s->max_trace_level = (int)f;
-	}
-	return 0;
-}
-
-/* #declare NAME = VALUE: a value or a pigment, finish, texture or object block. */
-static int eval_declare(struct eval *e, const ast_node *d)
-{
-	const ast_node *rhs = d->kids[0];
-	value v;
-	if (rhs->kind != AST_BLOCK) {
-		if (eval_expr(e, rhs, &v))
-			return -1;
-	} else if (is_object_kw(rhs->kw)) {
-		if (eval_object(e, rhs, &v))
-			return -1;
-	} else if (rhs->kw == KW_PIGMENT || rhs->kw == KW_FINISH || rhs->kw == KW_TEXTURE) {
-		v = (value){ .kind = rhs->kw == KW_PIGMENT ? V_PIGMENT : rhs->kw == KW_FINISH ? V_FINISH : V_TEXTURE,
-		             .mat = scene_default_material() };
-		if (eval_material_block(e, rhs, &v.mat))
-			return -1;
-	} else {
-		diag_error(rhs->loc, "a %s cannot be declared yet", ast_keyword_name(rhs->kw));
-		return -1;
-	}
-	declare(e, d->str, v);
-	return 0;
-}
-
-static int eval_items(struct eval *e, const ast_node *file);
-
-/* #include "FILE": the path is relative to the including file's folder. */
-static int eval_include(struct eval *e, const ast_node *inc)
-{
-	value v;
-	if (eval_expr(e, inc->kids[0], &v))
-		return -1;
-	if (v.kind != V_STRING) {
-		diag_error(inc->kids[0]->loc, "expected a file name string, found %s", kind_name(v.kind));
-		value_free(&v);
-		return -1;
-	}
-	if (e->include_depth >= MAX_INCLUDE_DEPTH) {
-		diag_error(inc->loc, "#include nested more than %d deep (an include cycle?)", MAX_INCLUDE_DEPTH);
-		value_free(&v);
-		return -1;
-	}
-	const char *from = diag_source_name(inc->loc.file);
-	const char *slash = strrchr(from, '/');
-	char *path = NULL;
-	if (v.str[0] == '/' || !slash)
-		path = strdup(v.str);
-	else if (asprintf(&path, "%.*s/%s", (int)(slash - from), from, v.str) < 0)
-		path = NULL;
-	value_free(&v);
-	if (!path) {
-		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
-	}
-	ast_node *tree = parse_file(path, inc->kids[0]->loc);
-	free(path);
+	char *text = NULL;
+	if (asprintf(&text, "#declare %.*s = %s;\n", (int)n, decl, decl + n + 1) < 0)
+		eval_xrealloc(NULL, (size_t)-1 / 2);
+	char name[80];
+	snprintf(name, sizeof name, "<declaration %.*s>", (int)(n < 40 ? n : 40), decl);
+	ast_node *tree = parse_text(name, text, strlen(text));
 	if (!tree)
 		return -1;
-	e->include_depth++;
-	int rc = eval_items(e, tree);
-	e->include_depth--;
-	ast_free(tree);
-	return rc;
-}
-
-static int eval_statement(struct eval *e, const ast_node *item)
-{
-	if (item->kind == AST_DECLARE)
-		return eval_declare(e, item);
-	if (item->kind == AST_INCLUDE)
-		return eval_include(e, item);
-	if (item->kind != AST_BLOCK)
-		return not_valid(item, "the scene (expected an object, camera, light_source or directive)");
-	switch (item->kw) {
-	case KW_CAMERA: return eval_camera(e, item);
-	case KW_LIGHT_SOURCE: return eval_light(e, item);
-	case KW_BACKGROUND: return eval_background(e, item);
-	case KW_GLOBAL_SETTINGS: return eval_global_settings(e, item);
-	default: break;
-	}
-	if (!is_object_kw(item->kw))
-		return not_valid(item, "the scene (expected an object, camera, light_source or directive)");
-	value v;
-	if (eval_object(e, item, &v))
-		return -1;
-	resolve_texture(&v);
-	for (int i = 0; i < v.n_objs; i++)
-		scene_add_object(e->s, &v.objs[i]);
-	value_free(&v);
+	keep_tree(e, tree);
+	struct cursor c;
+	int err = 0;
+	eval_cursor_init(&c, e, tree);
+	c.lenient = true;
+	const ast_node *item = eval_next(&c, &err);
+	if (item)
+		eval_error(e, item->loc, "a declaration must be NAME=VALUE");
+	eval_cursor_free(&c);
 	return 0;
 }
 
-/* Statements are independent, so an error in one does not stop the others from
- * being checked: the user sees every error of the file in one run. */
-static int eval_items(struct eval *e, const ast_node *file)
+eval_options eval_options_default(void)
 {
-	int rc = 0;
-	for (int i = 0; i < file->n_kids; i++)
-		if (eval_statement(e, file->kids[i]))
-			rc = -1;
-	return rc;
+	return (eval_options){ .image_width = 640, .image_height = 480 };
 }
 
-int eval_scene(const ast_node *root, scene *s)
+static void eval_free(struct eval *e)
 {
-	struct eval e = { .s = s };
+	while (e->scope)
+		scope_pop(e);
+	for (int i = 0; i < e->n_trees; i++)
+		ast_free(e->trees[i]);
+	free(e->trees);
+	for (int i = 0; i < e->n_warned; i++)
+		free(e->warned[i]);
+	free(e->warned);
+	free(e->rng.state);
+}
+
+int eval_scene(const ast_node *root, scene *s, const eval_options *opt)
+{
+	eval_options defaults = eval_options_default();
+	struct eval e = { .s = s, .opt = opt ? opt : &defaults, .version = 3.7,
+	                  .default_mat = scene_default_material(), .errors_at_start = diag_error_count() };
+	e.global = scope_new(256);
+	scope_push(&e, e.global);
 	declare_builtins(&e);
-	int rc = eval_items(&e, root);
-	while (e.symbols) {
-		struct symbol *next = e.symbols->next;
-		value_free(&e.symbols->val);
-		free(e.symbols->name);
-		free(e.symbols);
-		e.symbols = next;
-	}
-	return rc;
+	for (int i = 0; i < e.opt->n_declares; i++)
+		declare_option(&e, e.opt->declares[i]);
+
+	struct cursor c;
+	int err = 0;
+	eval_cursor_init(&c, &e, root);
+	c.lenient = true;
+	const ast_node *item;
+	while ((item = eval_next(&c, &err)) != NULL)
+		eval_scene_statement(&e, item);
+	eval_cursor_free(&c);
+	eval_free(&e);
+	return diag_error_count() > e.errors_at_start ? -1 : 0;
 }

@@ -2,11 +2,39 @@
 #ifndef ECLAT_EVAL_H
 #define ECLAT_EVAL_H
 
+#include <stdbool.h>
+
 #include "ast.h"
 #include "scene.h"
 
-/* Fills s (already scene_init'ed) from the file's tree. Returns 0, or -1 after
- * printing the errors; the scene is then incomplete and must only be freed. */
-int eval_scene(const ast_node *root, scene *s);
+/* What the command line tells the evaluator. Zero-initialise, or use
+ * eval_options_default, then set what is given. */
+typedef struct {
+	/* -I DIR, --include-path DIR, in order. An #include "F" with a relative F is
+	 * looked for in the including file's folder, then in these, then in the
+	 * folders of $ECLAT_INCLUDE_PATH (separated by ':'), then in
+	 * /usr/share/povray-3.7/include when it exists. */
+	const char *const *include_dirs;
+	int n_include_dirs;
+	/* -D NAME=VALUE and POV-Ray's Declare=NAME=VALUE: VALUE is a float, a quoted
+	 * string or any expression. Each is declared, in order, before the scene is
+	 * read, as by "#declare NAME = VALUE;". An error in one is reported against
+	 * the text "NAME=VALUE". */
+	const char *const *declares;
+	int n_declares;
+	/* An object eclat cannot render (cylinder, torus...) is left out with a
+	 * warning instead of being an error. */
+	bool skip_unsupported;
+	/* image_width and image_height in the scene; 0 means 640 by 480. */
+	int image_width, image_height;
+	double clock;                /* clock in the scene; default 0 */
+} eval_options;
+
+eval_options eval_options_default(void);
+
+/* Fills s (already scene_init'ed) from the file's tree. opt may be NULL for the
+ * defaults. Returns 0, or -1 after printing the errors; the scene is then
+ * incomplete and must only be freed. #debug text goes to stderr. */
+int eval_scene(const ast_node *root, scene *s, const eval_options *opt);
 
 #endif

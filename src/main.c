@@ -392,7 +392,7 @@ int main(int argc, char **argv)
 	else if (o.dump_ast) {
 		ast_dump(tree, stdout);
 		rc = 0;
-	} else if (eval_scene(tree, &s) == 0 && diag_error_count() == 0) {
+	} else if (eval_scene(tree, &s, NULL) == 0 && diag_error_count() == 0) {
 		if (o.dump_scene)
 			scene_dump(&s, stdout);
 		rc = render_scene(&o, &s, output);

@@ -1,5 +1,6 @@
 /* scene.c: scene containers, defaults and affine transforms. */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -245,6 +246,64 @@ static void vec(FILE *out, const char *label, const double v[3])
 	}
 }
 
+static void color3(FILE *out, const char *label, const float c[3])
+{
+	double v[3] = { c[0], c[1], c[2] };
+	vec(out, label, v);
+}
+
+static bool same3(const float a[3], const float b[3])
+{
+	return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+static void fnum(FILE *out, const char *label, double v)
+{
+	fprintf(out, " %s ", label);
+	num(out, v);
+}
+
+/* The finish and interior items that differ from POV-Ray's defaults: scenes that
+ * set none print as they did before these existed. */
+static void material_extras(FILE *out, const scene_material *m)
+{
+	scene_material d = scene_default_material();
+	if (!same3(m->ambient, d.ambient))
+		color3(out, "ambient", m->ambient);
+	static const struct { const char *name; size_t at; } floats[] = {
+		{ "brilliance", offsetof(scene_material, brilliance) },
+		{ "phong", offsetof(scene_material, phong) },
+		{ "phong_size", offsetof(scene_material, phong_size) },
+		{ "specular", offsetof(scene_material, specular) },
+		{ "roughness", offsetof(scene_material, roughness) },
+		{ "metallic", offsetof(scene_material, metallic) },
+		{ "reflection_falloff", offsetof(scene_material, reflection_falloff) },
+		{ "reflection_exponent", offsetof(scene_material, reflection_exponent) },
+		{ "ior", offsetof(scene_material, ior) },
+		{ "dispersion", offsetof(scene_material, dispersion) },
+		{ "fade_distance", offsetof(scene_material, fade_distance) },
+		{ "fade_power", offsetof(scene_material, fade_power) },
+	};
+	for (size_t i = 0; i < sizeof floats / sizeof *floats; i++) {
+		float v = *(const float *)((const char *)m + floats[i].at);
+		float dv = *(const float *)((const char *)&d + floats[i].at);
+		if (v != dv)
+			fnum(out, floats[i].name, v);
+	}
+	if (!same3(m->reflection, d.reflection) || !same3(m->reflection_max, d.reflection_max)) {
+		color3(out, "reflection", m->reflection);
+		color3(out, "reflection_max", m->reflection_max);
+	}
+	if (m->reflection_fresnel)
+		fputs(" fresnel", out);
+	if (m->roughness_set)
+		fputs(" roughness_set", out);
+	if (m->conserve_energy)
+		fputs(" conserve_energy", out);
+	if (!same3(m->fade_color, d.fade_color))
+		color3(out, "fade_color", m->fade_color);
+}
+
 static void material(FILE *out, const scene_material *m)
 {
 	fputs(" pigment <", out);
@@ -256,6 +315,83 @@ static void material(FILE *out, const scene_material *m)
 	num(out, m->diffuse);
 	double e[3] = { m->emission[0], m->emission[1], m->emission[2] };
 	vec(out, "emission", e);
+	material_extras(out, m);
+}
+
+static bool identity(const xform *t)
+{
+	xform i = scene_xform_identity();
+	return memcmp(&i, t, sizeof i) == 0;
+}
+
+/* POV-Ray's matrix <A..L>: what "matrix" would read back. */
+static void matrix(FILE *out, const xform *t)
+{
+	fputs(" matrix <", out);
+	for (int i = 0; i < 4; i++)
+		for (int j = 0; j < 3; j++) {
+			num(out, t->m[j][i]);
+			fputs(i == 3 && j == 2 ? ">" : ", ", out);
+		}
+}
+
+static void flags(FILE *out, int f)
+{
+	static const char *const names[] = { "no_shadow", "no_image", "no_reflection", "hollow", "double_illuminate" };
+	for (int i = 0; i < 5; i++)
+		if (f & (1 << i))
+			fprintf(out, " %s", names[i]);
+}
+
+/* A normal's image: the inverse transpose of the transform, normalized. */
+static void xform_normal(const xform *t, const double n[3], double out[3])
+{
+	const double (*m)[4] = t->m;
+	double c[3][3];
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++) {
+			int a = (i + 1) % 3, b = (i + 2) % 3, p = (j + 1) % 3, q = (j + 2) % 3;
+			c[i][j] = m[a][p] * m[b][q] - m[a][q] * m[b][p];   /* cofactors: the inverse transpose times det */
+		}
+	double det = m[0][0] * c[0][0] + m[0][1] * c[0][1] + m[0][2] * c[0][2], r[3], l = 0;
+	for (int i = 0; i < 3; i++) {
+		r[i] = c[i][0] * n[0] + c[i][1] * n[1] + c[i][2] * n[2];
+		l += r[i] * r[i];
+	}
+	l = det < 0 ? -sqrt(l) : sqrt(l);
+	for (int i = 0; i < 3; i++)
+		out[i] = l > 0 ? r[i] / l : 0;
+}
+
+static void dump_shape(FILE *out, const scene_object *o)
+{
+	double w[3];
+	switch (o->shape) {
+	case SHAPE_BOX:
+		fputs("box", out);
+		vec(out, "", o->p[0]);
+		vec(out, "", o->p[1]);
+		break;
+	case SHAPE_PLANE:
+		fputs("plane", out);
+		vec(out, "normal", o->p[0]);
+		fnum(out, "distance", o->radius);
+		break;
+	case SHAPE_MESH:
+		fprintf(out, "mesh %d", o->mesh);
+		break;
+	default:
+		fputs("smooth_triangle", out);
+		for (int i = 0; i < 3; i++) {
+			scene_xform_point(&o->xf, o->p[i], w);
+			vec(out, "", w);
+			xform_normal(&o->xf, o->n[i], w);
+			vec(out, "normal", w);
+		}
+		return;
+	}
+	if (!identity(&o->xf))
+		matrix(out, &o->xf);
 }
 
 static void dump_object(FILE *out, const scene_object *o)
@@ -273,15 +409,86 @@ static void dump_object(FILE *out, const scene_object *o)
 			scene_xform_vector(&o->xf, v, axis[i]);
 			vec(out, i == 0 ? "x" : i == 1 ? "y" : "z", axis[i]);
 		}
-	} else {
+	} else if (o->shape == SHAPE_TRIANGLE) {
 		fputs("triangle", out);
 		for (int i = 0; i < 3; i++) {
 			double w[3];
 			scene_xform_point(&o->xf, o->p[i], w);
 			vec(out, "", w);
 		}
+	} else {
+		dump_shape(out, o);
 	}
 	material(out, &o->material);
+	flags(out, o->flags);
+	fputc('\n', out);
+}
+
+/* A mesh once, in object space: its faces with their vertices (and normals,
+ * uvs, texture), then its textures. */
+static void dump_mesh(FILE *out, int index, const scene_mesh *m)
+{
+	fprintf(out, "%s:%d:%d: mesh %d: %d vertices %d faces %d normals %d uvs %d textures",
+	        diag_source_name(m->loc.file), m->loc.line, m->loc.col, index, m->n_v, m->n_faces, m->n_nrm, m->n_uv,
+	        m->n_mats);
+	if (m->has_inside_vector)
+		vec(out, "inside_vector", m->inside_vector);
+	fputc('\n', out);
+	for (int f = 0; f < m->n_faces; f++) {
+		fputs("  face", out);
+		for (int k = 0; k < 3; k++)
+			vec(out, "", m->v[m->face[f][k]]);
+		for (int k = 0; m->face_nrm && k < 3; k++)
+			vec(out, k == 0 ? "normals" : "", m->nrm[m->face_nrm[f][k]]);
+		for (int k = 0; m->face_uv && k < 3; k++) {
+			const double *uv = m->uv[m->face_uv[f][k]];
+			fprintf(out, "%s <", k == 0 ? " uv" : "");
+			num(out, uv[0]);
+			fputs(", ", out);
+			num(out, uv[1]);
+			fputc('>', out);
+		}
+		if (m->face_mat && m->face_mat[f] >= 0)
+			fprintf(out, " texture %d", m->face_mat[f]);
+		fputc('\n', out);
+	}
+	for (int t = 0; t < m->n_mats; t++) {
+		fprintf(out, "  texture %d:", t);
+		material(out, &m->mats[t]);
+		fputc('\n', out);
+	}
+}
+
+static void dump_light(FILE *out, const scene_light *l)
+{
+	double col[3] = { l->color[0], l->color[1], l->color[2] };
+	fputs("light_source", out);
+	vec(out, "", l->position);
+	vec(out, "color", col);
+	if (l->kind == LIGHT_SPOT) {
+		fputs(" spotlight", out);
+		vec(out, "point_at", l->point_at);
+		fnum(out, "radius", l->radius);
+		fnum(out, "falloff", l->falloff);
+		fnum(out, "tightness", l->tightness);
+	} else if (l->kind == LIGHT_PARALLEL) {
+		fputs(" parallel", out);
+		vec(out, "point_at", l->point_at);
+	}
+	if (l->area) {
+		vec(out, "area_light", l->axis1);
+		vec(out, "", l->axis2);
+		fprintf(out, " %d %d adaptive %d%s%s%s", l->size1, l->size2, l->adaptive, l->jitter ? " jitter" : "",
+		        l->circular ? " circular" : "", l->orient ? " orient" : "");
+	}
+	if (l->shadowless)
+		fputs(" shadowless", out);
+	if (l->fade_distance != 0 || l->fade_power != 0) {
+		fnum(out, "fade_distance", l->fade_distance);
+		fnum(out, "fade_power", l->fade_power);
+	}
+	if (l->looks_like >= 0)
+		fprintf(out, " looks_like %d", l->looks_like);
 	fputc('\n', out);
 }
 
@@ -293,19 +500,29 @@ void scene_dump(const scene *s, FILE *out)
 	vec(out, "direction", c->direction);
 	vec(out, "right", c->right);
 	vec(out, "up", c->up);
+	if (c->aperture > 0) {
+		fnum(out, "aperture", c->aperture);
+		vec(out, "focal_point", c->focal_point);
+		fprintf(out, " blur_samples %d", c->blur_samples);
+	}
 	fputc('\n', out);
 	double bg[3] = { s->background[0], s->background[1], s->background[2] };
 	fputs("background", out);
 	vec(out, "", bg);
-	fprintf(out, " max_trace_level %d\n", s->max_trace_level);
-	for (int i = 0; i < s->n_lights; i++) {
-		const scene_light *l = &s->lights[i];
-		double col[3] = { l->color[0], l->color[1], l->color[2] };
-		fputs("light_source", out);
-		vec(out, "", l->position);
-		vec(out, "color", col);
-		fputc('\n', out);
-	}
+	fprintf(out, " max_trace_level %d", s->max_trace_level);
+	if (s->has_sky)
+		color3(out, "sky", s->sky);
+	if (s->assumed_gamma != 0)
+		fnum(out, "assumed_gamma", s->assumed_gamma);
+	if (s->adc_bailout != 1.0f / 255.0f)
+		fnum(out, "adc_bailout", s->adc_bailout);
+	if (s->ambient_light[0] != 1 || s->ambient_light[1] != 1 || s->ambient_light[2] != 1)
+		color3(out, "ambient_light", s->ambient_light);
+	fputc('\n', out);
+	for (int i = 0; i < s->n_lights; i++)
+		dump_light(out, &s->lights[i]);
 	for (int i = 0; i < s->n_objects; i++)
 		dump_object(out, &s->objects[i]);
+	for (int i = 0; i < s->n_meshes; i++)
+		dump_mesh(out, i, &s->meshes[i]);
 }

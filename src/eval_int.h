@@ -1,0 +1,214 @@
+/* eval_int.h: what the files of the evaluation stage (eval*.c) share: values,
+ * the symbol scopes, and the cursor that walks a block's items and runs the
+ * directives among them. Not for other stages: they see eval.h only. */
+#ifndef ECLAT_EVAL_INT_H
+#define ECLAT_EVAL_INT_H
+
+#include <stdbool.h>
+
+#include "eval.h"
+
+typedef enum { /* ORDER: eval_kind_name */
+	V_NONE,      /* an array element not set yet */
+	V_FLOAT, V_VECTOR, V_COLOR, V_STRING,
+	V_OBJECT, V_PIGMENT, V_FINISH, V_TEXTURE, V_NORMAL, V_INTERIOR, V_MATERIAL,
+	V_COLOR_MAP, V_TRANSFORM, V_CAMERA, V_ARRAY, V_MACRO, V_FUNCTION, V_OTHER,
+} val_kind;
+
+/* A light and the looks_like objects that go with it. */
+struct lightval {
+	scene_light light;
+	scene_object *looks;
+	int n_looks;
+};
+
+/* An object value: the shapes it is made of (a union has several) and the lights
+ * in it. A union's own texture is kept apart (has_mat, mat) and given to its
+ * parts without one when the union is used, as POV-Ray does. */
+struct objval {
+	scene_object *objs;
+	int n_objs;
+	struct lightval *lights;
+	int n_lights;
+	bool compound;
+	bool has_mat;
+	scene_material mat;
+	const char *unsupported;  /* a POV-Ray object eclat cannot render: its name */
+	src_loc unsupported_loc;
+	src_loc loc;
+};
+
+struct array;
+
+/* A value of the language. Pigments, finishes, textures, interiors and materials
+ * share scene_material: a pigment uses its pigment part, a finish the finish
+ * part, a texture both, an interior the interior part. */
+typedef struct value {
+	val_kind kind;
+	int n;                   /* components of a vector (2 to 5); colours have 5 */
+	double v[5];             /* a float is v[0] */
+	char *str;               /* V_STRING; V_OTHER: what it is ("fog") */
+	struct objval *obj;      /* V_OBJECT */
+	scene_material mat;      /* V_PIGMENT ... V_MATERIAL, V_COLOR_MAP (its average in pigment) */
+	xform xf;                /* V_TRANSFORM */
+	scene_camera *cam;       /* V_CAMERA */
+	struct array *arr;       /* V_ARRAY */
+	const ast_node *node;    /* V_MACRO, V_FUNCTION: the definition */
+} value;
+
+struct array {
+	int dims, size[5];
+	int n;                   /* product of the sizes */
+	value *elems;
+};
+
+/* ---- values (eval_value.c) ---- */
+const char *eval_kind_name(val_kind k);  /* "a float" */
+void eval_value_free(value *v);
+value eval_value_copy(const value *v);
+value eval_float(double f);
+value eval_vector3(const double v[3]);
+bool eval_is_numeric(val_kind k);
+/* Promotes a float or vector to n components: a float fills them all, the
+ * components a vector does not have are 0. */
+void eval_widen(const value *v, int n, double out[5]);
+struct objval *eval_objval_new(src_loc loc);
+void eval_objval_add(struct objval *o, const scene_object *so);
+void eval_objval_add_light(struct objval *o, const struct lightval *l);
+/* Appends src's parts to dst (src keeps its own). */
+void eval_objval_merge(struct objval *dst, const struct objval *src);
+void eval_objval_free(struct objval *o);
+void *eval_xrealloc(void *p, size_t size);
+char *eval_xstrdup(const char *s);
+
+/* ---- the evaluator ---- */
+struct symbol;
+struct scope;
+struct cursor;
+
+/* What an error inside an #include or a macro call was reached through. */
+struct context {
+	const char *macro;       /* NULL for an include */
+	src_loc from;
+};
+
+#define EVAL_MAX_CONTEXT 300
+#define EVAL_MAX_LOOP 1000000
+#define EVAL_MAX_MACRO_DEPTH 256
+#define EVAL_MAX_INCLUDE_DEPTH 64
+#define EVAL_MAX_ERRORS 20
+
+struct rng {
+	unsigned *state;
+	int n;
+};
+
+struct eval {
+	scene *s;
+	const eval_options *opt;
+	struct scope *scope;     /* innermost; ->parent toward the global one */
+	struct scope *global;
+	struct context ctx[EVAL_MAX_CONTEXT];
+	int n_ctx;
+	int macro_depth, include_depth;
+	bool stop;               /* #error, or too many errors: evaluate nothing more */
+	int errors_at_start;
+	scene_material default_mat;  /* #default */
+	double version;
+	struct rng rng;
+	ast_node **trees;        /* included files, kept while their macros may run */
+	int n_trees;
+	char **warned;           /* the kinds of constructs already warned about */
+	int n_warned;
+	int camera_set;
+};
+
+/* Errors and warnings with the chain of includes and macro calls as notes. */
+void eval_error(struct eval *e, src_loc loc, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+void eval_warning(struct eval *e, src_loc loc, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+/* A warning printed once per key for the whole scene ("pattern marble"). */
+void eval_warn_once(struct eval *e, src_loc loc, const char *key, const char *fmt, ...)
+	__attribute__((format(printf, 4, 5)));
+
+/* Symbols. lookup follows POV-Ray's dynamic scoping: the innermost scope first,
+ * out to the global one. */
+value *eval_lookup(struct eval *e, const char *name);
+/* #declare (local false) or #local (local true) NAME = v; takes v. */
+void eval_assign(struct eval *e, const char *name, value v, bool local);
+bool eval_undef(struct eval *e, const char *name);
+void eval_suggest(struct eval *e, const char *name, char *out, size_t size);
+
+/* ---- the cursor (eval.c): the items of a block, directives run ---- */
+struct frame;
+struct cursor {
+	struct frame *frames;
+	int n, cap;
+	const ast_node *pending;   /* an item given back by eval_unget */
+	struct eval *e;
+	bool lenient;              /* the top level: an error in a directive does not end it */
+};
+
+void eval_cursor_init(struct cursor *c, struct eval *e, const ast_node *block);
+void eval_cursor_free(struct cursor *c);
+/* The next item that is not a directive, after running those before it; NULL at
+ * the end of the block or after an error (then *err is set). An item must be
+ * evaluated before the next call: a macro's scope ends when its body does. */
+const ast_node *eval_next(struct cursor *c, int *err);
+void eval_unget(struct cursor *c, const ast_node *item);
+/* The next item if it is an expression (used for optional arguments), else NULL
+ * with the item left for the next eval_next. */
+const ast_node *eval_next_expr(struct cursor *c, int *err);
+
+/* Whether a file named in the scene can be found, as #include looks for it. */
+bool eval_file_exists(struct eval *e, int from_file, const char *name);
+
+/* A macro call in a value position: the one value its body produces. */
+int eval_macro_value(struct eval *e, const ast_node *call, const value *macro, value *out);
+
+int eval_if_value(struct eval *e, const ast_node *n, value *out);
+
+/* ---- expressions (eval_expr.c) ---- */
+int eval_expr(struct eval *e, const ast_node *n, value *out);
+int eval_expect_float(struct eval *e, const ast_node *n, double *f);
+int eval_expect_int(struct eval *e, const ast_node *n, int *i);
+int eval_expect_vector(struct eval *e, const ast_node *n, double out[3]);
+int eval_expect_color(struct eval *e, const ast_node *n, double out[5]);
+int eval_expect_string(struct eval *e, const ast_node *n, char **out);
+/* The value a node refers to, without copying (an identifier, an element), or NULL. */
+value *eval_reference(struct eval *e, const ast_node *n, int *err);
+bool eval_is_defined(struct eval *e, const ast_node *n);
+bool eval_truth(double f);
+int eval_call_function(struct eval *e, const ast_node *call, const value *fn, value *out);
+/* Evaluates a function's body with its parameters (names, or the definition's
+ * when NULL) bound to args in a scope of their own. */
+int eval_function_body(struct eval *e, const ast_node *def, const char *const *names, const double *args, int n,
+                       value *out);
+
+/* ---- blocks (eval_object.c, eval_material.c, eval_world.c) ---- */
+/* The value of a block in a value position: #declare X = BLOCK, a macro's result. */
+int eval_block_value(struct eval *e, const ast_node *b, value *out);
+int eval_object(struct eval *e, const ast_node *b, value *out);
+bool eval_is_object_block(const ast_node *b);
+int eval_transform_item(struct eval *e, struct cursor *c, const ast_node *item, xform *t);
+xform eval_xform_inverse(const xform *t);
+int eval_material_block(struct eval *e, const ast_node *b, scene_material *m);
+int eval_material_value(struct eval *e, const ast_node *b, value *out);
+void eval_apply_value(const value *v, scene_material *m);
+/* A texture given to an object: it replaces the object's (untextured) or is
+ * layered on it (textured), as POV-Ray layers textures. */
+void eval_apply_texture(struct eval *e, src_loc loc, scene_material *m, bool textured, const scene_material *tex);
+int eval_looks_like(struct eval *e, const ast_node *b, const double at[3], struct lightval *l);
+void eval_transform_light(struct lightval *l, const xform *t);
+int eval_camera(struct eval *e, const ast_node *b, scene_camera *out);
+int eval_light(struct eval *e, const ast_node *b, value *out);
+int eval_scene_statement(struct eval *e, const ast_node *b);
+int eval_default(struct eval *e, const ast_node *d);
+void eval_place(struct eval *e, value *obj);
+/* Complains about an item a block does not accept. */
+int eval_not_valid(struct eval *e, const ast_node *item, const char *where);
+/* The POV-Ray words eclat parses but cannot do: "object", "modifier"... or NULL. */
+const char *eval_pov_word(const char *name);
+/* Colours: pow(sRGB decode(c), 1 / assumed_gamma). */
+double eval_srgb_decode(double c);
+
+#endif

@@ -1,0 +1,860 @@
+/* eval_material.c: pigment, finish, texture, normal, interior, material and the
+ * maps. eclat renders one colour per texture: a pattern becomes the average of
+ * its colours, with one warning per pattern (see eclat-scene(5), TEXTURES). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "eval_int.h"
+
+/* ---- copying parts of a texture ---- */
+
+static void copy_pigment(scene_material *d, const scene_material *s)
+{
+	memcpy(d->pigment, s->pigment, sizeof d->pigment);
+}
+
+static void copy_finish(scene_material *d, const scene_material *s)
+{
+	memcpy(d->ambient, s->ambient, sizeof d->ambient);
+	d->diffuse = s->diffuse;
+	d->brilliance = s->brilliance;
+	memcpy(d->emission, s->emission, sizeof d->emission);
+	d->phong = s->phong;
+	d->phong_size = s->phong_size;
+	d->specular = s->specular;
+	d->roughness = s->roughness;
+	memcpy(d->reflection, s->reflection, sizeof d->reflection);
+	memcpy(d->reflection_max, s->reflection_max, sizeof d->reflection_max);
+	d->reflection_falloff = s->reflection_falloff;
+	d->reflection_exponent = s->reflection_exponent;
+	d->metallic = s->metallic;
+	d->reflection_fresnel = s->reflection_fresnel;
+	d->roughness_set = s->roughness_set;
+	d->conserve_energy = s->conserve_energy;
+}
+
+static void copy_interior(scene_material *d, const scene_material *s)
+{
+	d->ior = s->ior;
+	d->dispersion = s->dispersion;
+	d->fade_distance = s->fade_distance;
+	d->fade_power = s->fade_power;
+	memcpy(d->fade_color, s->fade_color, sizeof d->fade_color);
+}
+
+void eval_apply_value(const value *v, scene_material *m)
+{
+	switch (v->kind) {
+	case V_PIGMENT: copy_pigment(m, &v->mat); break;
+	case V_FINISH: copy_finish(m, &v->mat); break;
+	case V_TEXTURE: copy_pigment(m, &v->mat); copy_finish(m, &v->mat); break;
+	case V_INTERIOR: copy_interior(m, &v->mat); break;
+	case V_MATERIAL: *m = v->mat; break;
+	default: break;
+	}
+}
+
+/* A texture on an object that has one is a layer on top of it in POV-Ray. An
+ * opaque top layer hides the one below; through a transparent one (filter and
+ * transmit) eclat mixes the colours by the top layer's transparency and keeps
+ * the finish of the layer that shows most. */
+void eval_apply_texture(struct eval *e, src_loc loc, scene_material *m, bool textured, const scene_material *tex)
+{
+	double t = tex->pigment[3] + tex->pigment[4];
+	if (!textured || t <= 0) {
+		copy_pigment(m, tex);
+		copy_finish(m, tex);
+		return;
+	}
+	eval_warn_once(e, loc, "layered textures",
+	               "layered textures are not supported yet; mixing the layers by the top one's filter and transmit");
+	if (t > 1)
+		t = 1;
+	for (int i = 0; i < 3; i++)
+		m->pigment[i] = (float)(tex->pigment[i] * (1 - t) + m->pigment[i] * t);
+	for (int i = 3; i < 5; i++)
+		m->pigment[i] = (float)(m->pigment[i] * t);
+	if (t < 0.5)
+		copy_finish(m, tex);
+}
+
+/* ---- colour maps ---- */
+
+struct map_point {
+	double at, c[5];
+};
+
+/* The average over 0 to 1 of the colour a map gives: constant before its first
+ * entry and after its last, linear between entries. */
+static void map_average(const struct map_point *p, int n, double out[5])
+{
+	for (int k = 0; k < 5; k++)
+		out[k] = 0;
+	if (n == 0)
+		return;
+	double lo = p[0].at < 0 ? 0 : p[0].at > 1 ? 1 : p[0].at;
+	double hi = p[n - 1].at < 0 ? 0 : p[n - 1].at > 1 ? 1 : p[n - 1].at;
+	for (int k = 0; k < 5; k++)
+		out[k] = p[0].c[k] * lo + p[n - 1].c[k] * (1 - hi);
+	for (int i = 0; i + 1 < n; i++) {
+		double a = p[i].at, b = p[i + 1].at;
+		double ca = a < 0 ? 0 : a > 1 ? 1 : a, cb = b < 0 ? 0 : b > 1 ? 1 : b;
+		if (cb <= ca)
+			continue;
+		for (int k = 0; k < 5; k++) {
+			double fa = b > a ? p[i].c[k] + (p[i + 1].c[k] - p[i].c[k]) * (ca - a) / (b - a) : p[i].c[k];
+			double fb = b > a ? p[i].c[k] + (p[i + 1].c[k] - p[i].c[k]) * (cb - a) / (b - a) : p[i].c[k];
+			out[k] += (fa + fb) / 2 * (cb - ca);
+		}
+	}
+}
+
+struct map_build {
+	struct map_point *p;
+	int n;
+	bool finish_set;
+	scene_material first;   /* a texture_map's first texture, for its finish */
+};
+
+static void map_add(struct map_build *mb, double at, const double c[5])
+{
+	mb->p = eval_xrealloc(mb->p, (mb->n + 1) * sizeof *mb->p);
+	mb->p[mb->n].at = at;
+	memcpy(mb->p[mb->n].c, c, sizeof mb->p[mb->n].c);
+	mb->n++;
+}
+
+/* The colour an entry's value gives: a colour, a pigment, a texture. */
+static int entry_color(struct eval *e, const ast_node *at, value *v, int map_kw, struct map_build *mb, double c[5])
+{
+	if (map_kw == KW_COLOR_MAP || map_kw == KW_COLOUR_MAP) {
+		if (!eval_is_numeric(v->kind)) {
+			eval_error(e, at->loc, "expected a colour in a colour_map entry, found %s", eval_kind_name(v->kind));
+			return -1;
+		}
+		eval_widen(v, 5, c);
+		return 0;
+	}
+	val_kind want = map_kw == KW_PIGMENT_MAP ? V_PIGMENT : V_TEXTURE;
+	if (v->kind != want && !(want == V_PIGMENT && eval_is_numeric(v->kind))) {
+		eval_error(e, at->loc, "expected %s in a %s entry, found %s", eval_kind_name(want),
+		           ast_keyword_name(map_kw), eval_kind_name(v->kind));
+		return -1;
+	}
+	if (eval_is_numeric(v->kind))
+		eval_widen(v, 5, c);
+	else
+		for (int k = 0; k < 5; k++)
+			c[k] = v->mat.pigment[k];
+	if (want == V_TEXTURE && !mb->finish_set) {
+		mb->first = v->mat;
+		mb->finish_set = true;
+	}
+	return 0;
+}
+
+/* [Value PIGMENT_BODY] of a pigment_map, [Value TEXTURE_BODY] of a texture_map:
+ * the items after the value are those of a pigment { } or texture { }. */
+static int body_entry(struct eval *e, const ast_node *entry, int map_kw, struct map_build *mb)
+{
+	double at, c[5];
+	if (entry->n_kids < 2) {
+		eval_error(e, entry->loc, "a map entry is [Value ITEMS]");
+		return -1;
+	}
+	if (eval_expect_float(e, entry->kids[0], &at))
+		return -1;
+	ast_node body = { .kind = AST_BLOCK, .kw = map_kw == KW_PIGMENT_MAP ? KW_PIGMENT : KW_TEXTURE,
+	                  .loc = entry->kids[1]->loc, .kids = entry->kids + 1, .n_kids = entry->n_kids - 1 };
+	value v;
+	if (eval_material_value(e, &body, &v))
+		return -1;
+	int rc = entry_color(e, entry->kids[1], &v, map_kw, mb, c);
+	if (rc == 0)
+		map_add(mb, at, c);
+	eval_value_free(&v);
+	return rc;
+}
+
+/* [Value ITEM [MODIFIERS]] or POV-Ray's old [Value1, Value2 COLOR1 COLOR2]: the
+ * modifiers after a pigment or texture (scale, rotate...) shape its pattern,
+ * which eclat averages anyway. */
+static int map_entry(struct eval *e, const ast_node *entry, int map_kw, struct map_build *mb)
+{
+	value v[4] = { 0 };
+	const ast_node *at[4];
+	int n = 0, rc = 0;
+	for (int i = 0; rc == 0 && i < entry->n_kids; i++) {
+		const ast_node *k = entry->kids[i];
+		xform t = scene_xform_identity();
+		if (AST_IS_EXPRESSION(k->kind) || (k->kind == AST_BLOCK && n > 0 && !eval_transform_item(e, NULL, k, &t))) {
+			if (n == 4) {
+				rc = eval_not_valid(e, k, "a map entry");
+				break;
+			}
+			at[n] = k;
+			rc = AST_IS_EXPRESSION(k->kind) ? eval_expr(e, k, &v[n]) : eval_block_value(e, k, &v[n]);
+			n++;
+		} else if (n == 0 || (k->kind != AST_ARG && k->kind != AST_FLAG && k->kind != AST_BLOCK)) {
+			rc = eval_not_valid(e, k, "a map entry");
+		}
+	}
+	int half = n == 4 ? 2 : 1;
+	if (rc == 0 && n != 2 && n != 4) {
+		eval_error(e, entry->loc, "a map entry is [Value ITEM] or [Value1, Value2 ITEM1 ITEM2]");
+		rc = -1;
+	}
+	for (int i = 0; rc == 0 && i < half; i++) {
+		double c[5];
+		if (v[i].kind != V_FLOAT) {
+			eval_error(e, at[i]->loc, "expected a float, found %s", eval_kind_name(v[i].kind));
+			rc = -1;
+		} else if ((rc = entry_color(e, at[half + i], &v[half + i], map_kw, mb, c)) == 0) {
+			map_add(mb, v[i].v[0], c);
+		}
+	}
+	for (int i = 0; i < n; i++)
+		eval_value_free(&v[i]);
+	return rc;
+}
+
+/* color_map { [MAP_IDENTIFIER] [Value COLOR]... }, pigment_map, texture_map: the
+ * average colour (in a texture_map, with its first texture's finish). */
+static int map_block(struct eval *e, const ast_node *b, value *out)
+{
+	struct map_build mb = { 0 };
+	struct cursor c;
+	int err = 0, rc = 0;
+	const ast_node *item;
+	*out = (value){ .kind = V_COLOR_MAP, .mat = e->default_mat };
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		value v;
+		if (item->kind == AST_ENTRY && (b->kw == KW_PIGMENT_MAP || b->kw == KW_TEXTURE_MAP))
+			rc = body_entry(e, item, b->kw, &mb);
+		else if (item->kind == AST_ENTRY)
+			rc = map_entry(e, item, b->kw, &mb);
+		else if (AST_IS_EXPRESSION(item->kind) && mb.n == 0 && (rc = eval_expr(e, item, &v)) == 0) {
+			if (v.kind != V_COLOR_MAP)
+				rc = eval_not_valid(e, item, ast_keyword_name(b->kw));
+			*out = v;
+			free(mb.p);
+			eval_cursor_free(&c);
+			return rc;
+		} else if (rc == 0)
+			rc = eval_not_valid(e, item, ast_keyword_name(b->kw));
+	}
+	eval_cursor_free(&c);
+	if (rc == 0 && !err) {
+		double avg[5];
+		map_average(mb.p, mb.n, avg);
+		if (mb.finish_set)
+			out->mat = mb.first;
+		for (int k = 0; k < 5; k++)
+			out->mat.pigment[k] = (float)avg[k];
+	}
+	free(mb.p);
+	return rc || err ? -1 : 0;
+}
+
+/* ---- patterns ---- */
+
+static bool is_pattern(const ast_node *item)
+{
+	if (item->kind == AST_ARG)
+		return item->kw == KW_GRADIENT || item->kw == KW_SPIRAL1 || item->kw == KW_SPIRAL2;
+	if (item->kind != AST_FLAG)
+		return false;
+	switch (item->kw) {
+	case KW_AGATE: case KW_BOXED: case KW_BOZO: case KW_BRICK: case KW_BUMPS: case KW_CELLS:
+	case KW_CHECKER: case KW_CRACKLE: case KW_CYLINDRICAL: case KW_DENTS: case KW_FACETS:
+	case KW_GRANITE: case KW_HEXAGON: case KW_LEOPARD: case KW_MARBLE: case KW_ONION: case KW_PLANAR:
+	case KW_QUILTED: case KW_RADIAL: case KW_RIPPLES: case KW_SPHERICAL: case KW_SPOTTED: case KW_WAVES:
+	case KW_WOOD: case KW_WRINKLES:
+		return true;
+	default:
+		return false;
+	}
+}
+
+/* Items that shape a pattern: nothing to eclat, which averages it. */
+static bool is_pattern_modifier(const ast_node *item)
+{
+	if (item->kind == AST_ARG)
+		switch (item->kw) {
+		case KW_TURBULENCE: case KW_OCTAVES: case KW_OMEGA: case KW_LAMBDA: case KW_FREQUENCY:
+		case KW_PHASE: case KW_AGATE_TURB: case KW_BRICK_SIZE: case KW_MORTAR:
+			return true;
+		default:
+			return false;
+		}
+	if (item->kind == AST_FLAG)
+		switch (item->kw) {
+		case KW_RAMP_WAVE: case KW_TRIANGLE_WAVE: case KW_SINE_WAVE: case KW_SCALLOP_WAVE:
+		case KW_CUBIC_WAVE: case KW_POLY_WAVE: case KW_UV_MAPPING:
+			return true;
+		default:
+			return false;
+		}
+	return item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, "warp") == 0;
+}
+
+/* What a pattern has to average: its map, or the colours listed after it. */
+struct pattern {
+	const ast_node *at;      /* the pattern keyword, or NULL: a solid colour */
+	char name[40];
+	bool inherited;          /* from a declared pigment: its average unless a map follows */
+	double base[5];
+	double list[3][5];
+	int n_list;
+	bool has_map;
+	double map[5];
+	scene_material map_mat;  /* a texture_map's finish */
+	bool map_finish;
+};
+
+static void pattern_result(struct eval *e, struct pattern *p, double c[5])
+{
+	if (p->inherited && !p->has_map && !p->n_list) {
+		memcpy(c, p->base, sizeof p->base);
+		return;
+	}
+	const char *how = p->has_map ? "the average of its map" : p->n_list ? "the average of its colours"
+	                : "rgb 0.5, the average of the default colour map";
+	char key[64];
+	snprintf(key, sizeof key, "pattern %s", p->name);
+	eval_warn_once(e, p->at->loc, key, "pattern '%s' is not supported yet; using %s", p->name, how);
+	for (int k = 0; k < 5; k++) {
+		double sum = 0;
+		for (int i = 0; i < p->n_list; i++)
+			sum += p->list[i][k];
+		c[k] = p->has_map ? p->map[k] : p->n_list ? sum / p->n_list : k < 3 ? 0.5 : 0;
+	}
+}
+
+static void start_pattern(struct pattern *p, const ast_node *item, const char *name)
+{
+	*p = (struct pattern){ .at = item };
+	snprintf(p->name, sizeof p->name, "%s", name);
+}
+
+static int map_into(struct eval *e, const ast_node *item, struct pattern *p)
+{
+	value v;
+	if (map_block(e, item, &v))
+		return -1;
+	p->has_map = true;
+	for (int k = 0; k < 5; k++)
+		p->map[k] = v.mat.pigment[k];
+	p->map_mat = v.mat;
+	p->map_finish = item->kw == KW_TEXTURE_MAP;
+	return 0;
+}
+
+static void list_add(struct pattern *p, const double c[5])
+{
+	if (p->n_list < 3)
+		memcpy(p->list[p->n_list++], c, sizeof p->list[0]);
+}
+
+/* ---- pigment ---- */
+
+/* An expression in a pigment: a colour or a declared pigment, or a colour of the
+ * list after a pattern (checker Red, Blue). */
+static int pigment_value(struct eval *e, const ast_node *item, struct pattern *p, scene_material *m)
+{
+	value v;
+	if (eval_expr(e, item, &v))
+		return -1;
+	double c[5];
+	if (eval_is_numeric(v.kind)) {
+		eval_widen(&v, 5, c);
+	} else if (v.kind == V_PIGMENT) {
+		for (int k = 0; k < 5; k++)
+			c[k] = v.mat.pigment[k];
+		if (v.str && !p->at) {   /* a pattern pigment: a colour_map after it replaces its own */
+			start_pattern(p, item, v.str);
+			p->inherited = true;
+			memcpy(p->base, c, sizeof c);
+		}
+	} else {
+		eval_error(e, item->loc, "expected a colour or a pigment, found %s", eval_kind_name(v.kind));
+		eval_value_free(&v);
+		return -1;
+	}
+	eval_value_free(&v);
+	if (p->at)
+		list_add(p, c);
+	else
+		for (int k = 0; k < 5; k++)
+			m->pigment[k] = (float)c[k];
+	return 0;
+}
+
+static int pigment_item(struct eval *e, const ast_node *item, struct pattern *p, scene_material *m)
+{
+	if (AST_IS_EXPRESSION(item->kind))
+		return pigment_value(e, item, p, m);
+	if (is_pattern(item)) {
+		start_pattern(p, item, ast_keyword_name(item->kw));
+		return 0;
+	}
+	if (item->kind == AST_BLOCK && (item->kw == KW_COLOR_MAP || item->kw == KW_COLOUR_MAP ||
+	                                item->kw == KW_PIGMENT_MAP)) {
+		if (!p->at)
+			eval_warning(e, item->loc, "a %s without a pattern is ignored", ast_keyword_name(item->kw));
+		return p->at ? map_into(e, item, p) : 0;
+	}
+	if (item->kind == AST_BLOCK && item->kw == KW_PIGMENT && p->at) {   /* checker pigment {...}, ... */
+		value v;
+		if (eval_material_value(e, item, &v))
+			return -1;
+		double c[5];
+		for (int k = 0; k < 5; k++)
+			c[k] = v.mat.pigment[k];
+		list_add(p, c);
+		return 0;
+	}
+	xform t = scene_xform_identity();
+	int rc = eval_transform_item(e, NULL, item, &t);
+	if (rc != 0 || is_pattern_modifier(item))
+		return rc < 0 ? -1 : 0;   /* a pigment's transformations move its pattern only */
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
+		start_pattern(p, item, item->str);   /* image_map, function... */
+		return 0;
+	}
+	return eval_not_valid(e, item, "a pigment");
+}
+
+/* pigment { [COLOR | PIGMENT_IDENTIFIER] [PATTERN [COLORS] [MAP]] [MODIFIERS...] }
+ * pattern: the name of its pattern, when it has one (NULL if not wanted). */
+static int pigment_block(struct eval *e, const ast_node *b, scene_material *m, char **pattern)
+{
+	struct pattern p = { 0 };
+	struct cursor c;
+	int err = 0, rc = 0;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL)
+		rc = pigment_item(e, item, &p, m);
+	eval_cursor_free(&c);
+	if (rc || err)
+		return -1;
+	if (p.at) {
+		double col[5];
+		pattern_result(e, &p, col);
+		for (int k = 0; k < 5; k++)
+			m->pigment[k] = (float)col[k];
+		if (pattern)
+			*pattern = eval_xstrdup(p.name);
+	}
+	return 0;
+}
+
+/* ---- finish ---- */
+
+static int color3(struct eval *e, const ast_node *n, float out[3])
+{
+	double c[5];
+	if (eval_expect_color(e, n, c))
+		return -1;
+	for (int i = 0; i < 3; i++)
+		out[i] = (float)c[i];
+	return 0;
+}
+
+static int float_arg(struct eval *e, const ast_node *n, float *out)
+{
+	double f;
+	if (eval_expect_float(e, n, &f))
+		return -1;
+	*out = (float)f;
+	return 0;
+}
+
+/* An optional [Bool] or [Amount] after a flag; def when there is none. */
+static int optional_float(struct eval *e, struct cursor *c, double def, double *out)
+{
+	int err = 0;
+	const ast_node *arg = eval_next_expr(c, &err);
+	*out = def;
+	return arg ? eval_expect_float(e, arg, out) : err ? -1 : 0;
+}
+
+/* reflection { [COLOR_MIN,] COLOR_MAX [fresnel [Bool]] [falloff F] [exponent F] [metallic [F]] } */
+static int reflection_block(struct eval *e, const ast_node *b, scene_material *m)
+{
+	struct cursor c;
+	int err = 0, rc = 0, n = 0;
+	float col[2][3];
+	double f;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		if (AST_IS_EXPRESSION(item->kind) && n < 2)
+			rc = color3(e, item, col[n++]);
+		else if (item->kind == AST_FLAG && item->kw == KW_FRESNEL && (rc = optional_float(e, &c, 1, &f)) == 0)
+			m->reflection_fresnel = eval_truth(f);
+		else if (item->kind == AST_FLAG && item->kw == KW_METALLIC && (rc = optional_float(e, &c, 1, &f)) == 0)
+			m->metallic = (float)f;
+		else if (item->kind == AST_ARG && item->kw == KW_FALLOFF)
+			rc = float_arg(e, item->kids[0], &m->reflection_falloff);
+		else if (item->kind == AST_ARG && item->kw == KW_EXPONENT)
+			rc = float_arg(e, item->kids[0], &m->reflection_exponent);
+		else if (rc == 0)
+			rc = eval_not_valid(e, item, "a reflection");
+	}
+	eval_cursor_free(&c);
+	if (rc || err)
+		return -1;
+	if (n == 0) {
+		eval_error(e, b->loc, "reflection needs a colour or an amount");
+		return -1;
+	}
+	memcpy(m->reflection, col[0], sizeof m->reflection);
+	memcpy(m->reflection_max, col[n - 1], sizeof m->reflection_max);
+	return 0;
+}
+
+static int finish_flag(struct eval *e, struct cursor *c, const ast_node *item, scene_material *m)
+{
+	double f;
+	switch (item->kw) {
+	case KW_METALLIC:
+		if (optional_float(e, c, 1, &f))
+			return -1;
+		m->metallic = (float)f;
+		return 0;
+	case KW_CONSERVE_ENERGY:
+		if (optional_float(e, c, 1, &f))
+			return -1;
+		m->conserve_energy = eval_truth(f);
+		return 0;
+	default:
+		return eval_not_valid(e, item, "a finish");
+	}
+}
+
+/* diffuse [, Backside]: eclat has no backside illumination. */
+static int diffuse(struct eval *e, struct cursor *c, const ast_node *item, scene_material *m)
+{
+	int err = 0;
+	if (float_arg(e, item->kids[0], &m->diffuse))
+		return -1;
+	const ast_node *back = eval_next_expr(c, &err);
+	if (back)
+		eval_warn_once(e, back->loc, "diffuse backside", "the backside amount of diffuse is not supported yet; ignored");
+	return err ? -1 : 0;
+}
+
+static int finish_arg(struct eval *e, struct cursor *c, const ast_node *item, scene_material *m)
+{
+	const ast_node *a = item->kids[0];
+	switch (item->kw) {
+	case KW_AMBIENT: return color3(e, a, m->ambient);
+	case KW_EMISSION: return color3(e, a, m->emission);
+	case KW_DIFFUSE: return diffuse(e, c, item, m);
+	case KW_BRILLIANCE: return float_arg(e, a, &m->brilliance);
+	case KW_PHONG: return float_arg(e, a, &m->phong);
+	case KW_PHONG_SIZE: return float_arg(e, a, &m->phong_size);
+	case KW_SPECULAR: return float_arg(e, a, &m->specular);
+	case KW_ROUGHNESS:
+		m->roughness_set = true;
+		return float_arg(e, a, &m->roughness);
+	case KW_REFLECTION:
+		if (color3(e, a, m->reflection))
+			return -1;
+		memcpy(m->reflection_max, m->reflection, sizeof m->reflection_max);
+		return 0;
+	case KW_CRAND: {
+		double f;
+		eval_warn_once(e, item->loc, "crand", "'crand' is not supported yet; ignored");
+		return eval_expect_float(e, a, &f);
+	}
+	default:
+		return eval_not_valid(e, item, "a finish");
+	}
+}
+
+static int finish_item(struct eval *e, struct cursor *c, const ast_node *item, scene_material *m, bool first)
+{
+	if (AST_IS_EXPRESSION(item->kind) && first) {
+		value v;
+		if (eval_expr(e, item, &v))
+			return -1;
+		if (v.kind != V_FINISH) {
+			eval_error(e, item->loc, "expected a finish, found %s", eval_kind_name(v.kind));
+			eval_value_free(&v);
+			return -1;
+		}
+		copy_finish(m, &v.mat);
+		return 0;
+	}
+	if (item->kind == AST_BLOCK && item->kw == KW_REFLECTION)
+		return reflection_block(e, item, m);
+	if (item->kind == AST_ARG)
+		return finish_arg(e, c, item, m);
+	if (item->kind == AST_FLAG)
+		return finish_flag(e, c, item, m);
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
+		eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
+		return 0;
+	}
+	return eval_not_valid(e, item, "a finish");
+}
+
+/* finish { [FINISH_IDENTIFIER] [FINISH_ITEMS...] } */
+static int finish_block(struct eval *e, const ast_node *b, scene_material *m)
+{
+	struct cursor c;
+	int err = 0, rc = 0;
+	bool first = true;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		rc = finish_item(e, &c, item, m, first);
+		first = false;
+	}
+	eval_cursor_free(&c);
+	return rc || err ? -1 : 0;
+}
+
+/* ---- interior ---- */
+
+/* interior { [INTERIOR_IDENTIFIER] [ior F] [dispersion F] [fade_distance F]
+ *            [fade_power F] [fade_color COLOR] [caustics F] } */
+static int interior_item(struct eval *e, const ast_node *item, scene_material *m, bool first)
+{
+	if (AST_IS_EXPRESSION(item->kind) && first) {
+		value v;
+		if (eval_expr(e, item, &v))
+			return -1;
+		if (v.kind != V_INTERIOR) {
+			eval_error(e, item->loc, "expected an interior, found %s", eval_kind_name(v.kind));
+			eval_value_free(&v);
+			return -1;
+		}
+		copy_interior(m, &v.mat);
+		return 0;
+	}
+	double f;
+	switch (item->kind == AST_ARG ? item->kw : -1) {
+	case KW_IOR: return float_arg(e, item->kids[0], &m->ior);
+	case KW_DISPERSION: return float_arg(e, item->kids[0], &m->dispersion);
+	case KW_FADE_DISTANCE: return float_arg(e, item->kids[0], &m->fade_distance);
+	case KW_FADE_POWER: return float_arg(e, item->kids[0], &m->fade_power);
+	case KW_FADE_COLOR: case KW_FADE_COLOUR: return color3(e, item->kids[0], m->fade_color);
+	case KW_CAUSTICS:
+		eval_warn_once(e, item->loc, "caustics", "'caustics' is not supported yet; ignored");
+		return eval_expect_float(e, item->kids[0], &f);
+	default:
+		break;
+	}
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
+		eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
+		return 0;
+	}
+	return eval_not_valid(e, item, "an interior");
+}
+
+static int interior_block(struct eval *e, const ast_node *b, scene_material *m)
+{
+	struct cursor c;
+	int err = 0, rc = 0;
+	bool first = true;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		rc = interior_item(e, item, m, first);
+		first = false;
+	}
+	eval_cursor_free(&c);
+	return rc || err ? -1 : 0;
+}
+
+/* ---- texture and material ---- */
+
+/* texture { [TEXTURE_IDENTIFIER] [pigment {...}] [normal {...}] [finish {...}]
+ *           [PATTERN texture_map {...} | PATTERN TEXTURE, TEXTURE] [TRANSFORMATIONS] } */
+static int texture_item(struct eval *e, const ast_node *item, struct pattern *p, scene_material *m, bool first)
+{
+	value v;
+	if (AST_IS_EXPRESSION(item->kind) && first) {
+		if (eval_expr(e, item, &v))
+			return -1;
+		if (v.kind != V_TEXTURE) {
+			eval_error(e, item->loc, "expected a texture, found %s", eval_kind_name(v.kind));
+			eval_value_free(&v);
+			return -1;
+		}
+		copy_pigment(m, &v.mat);
+		copy_finish(m, &v.mat);
+		return 0;
+	}
+	if (item->kind == AST_BLOCK && (item->kw == KW_PIGMENT || item->kw == KW_FINISH || item->kw == KW_NORMAL))
+		return eval_material_block(e, item, m);
+	if (is_pattern(item)) {
+		start_pattern(p, item, ast_keyword_name(item->kw));
+		return 0;
+	}
+	if (item->kind == AST_BLOCK && item->kw == KW_TEXTURE_MAP && p->at)
+		return map_into(e, item, p);
+	if (item->kind == AST_BLOCK && item->kw == KW_TEXTURE && p->at) {   /* checker texture {A} texture {B} */
+		if (eval_material_value(e, item, &v))
+			return -1;
+		if (p->n_list == 0)
+			copy_finish(m, &v.mat);
+		double c[5];
+		for (int k = 0; k < 5; k++)
+			c[k] = v.mat.pigment[k];
+		list_add(p, c);
+		return 0;
+	}
+	xform t = scene_xform_identity();
+	int rc = eval_transform_item(e, NULL, item, &t);
+	if (rc != 0 || is_pattern_modifier(item))
+		return rc < 0 ? -1 : 0;
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
+		eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
+		return 0;
+	}
+	return eval_not_valid(e, item, "a texture");
+}
+
+static int texture_block(struct eval *e, const ast_node *b, scene_material *m)
+{
+	struct pattern p = { 0 };
+	struct cursor c;
+	int err = 0, rc = 0;
+	bool first = true;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		rc = texture_item(e, item, &p, m, first);
+		first = false;
+	}
+	eval_cursor_free(&c);
+	if (rc || err)
+		return -1;
+	if (p.at) {
+		double col[5];
+		pattern_result(e, &p, col);
+		if (p.map_finish)
+			copy_finish(m, &p.map_mat);
+		for (int k = 0; k < 5; k++)
+			m->pigment[k] = (float)col[k];
+	}
+	return 0;
+}
+
+/* material { [MATERIAL_IDENTIFIER] [texture {...}] [interior {...}] [TRANSFORMATIONS] } */
+static int material_block(struct eval *e, const ast_node *b, scene_material *m)
+{
+	struct cursor c;
+	int err = 0, rc = 0;
+	bool first = true, textured = false;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		value v;
+		xform t = scene_xform_identity();
+		if (AST_IS_EXPRESSION(item->kind) && first) {
+			if ((rc = eval_expr(e, item, &v)) == 0 && v.kind != V_MATERIAL)
+				rc = eval_not_valid(e, item, "a material");
+			else if (rc == 0)
+				*m = v.mat, textured = true;
+			eval_value_free(&v);
+		} else if (item->kind == AST_BLOCK && item->kw == KW_TEXTURE) {
+			if ((rc = eval_material_value(e, item, &v)) == 0)
+				eval_apply_texture(e, item->loc, m, textured, &v.mat);
+			textured = true;
+		} else if (item->kind == AST_BLOCK && item->kw == KW_INTERIOR) {
+			rc = interior_block(e, item, m);
+		} else if ((rc = eval_transform_item(e, NULL, item, &t)) == 0) {
+			rc = eval_not_valid(e, item, "a material");
+		} else {
+			rc = rc < 0 ? -1 : 0;
+		}
+		first = false;
+	}
+	eval_cursor_free(&c);
+	return rc || err ? -1 : 0;
+}
+
+/* normal { ... }: bump patterns are not rendered; the block is not evaluated. */
+static int normal_block(struct eval *e, const ast_node *b)
+{
+	eval_warn_once(e, b->loc, "normal", "'normal' (bump patterns) is not supported yet; ignored");
+	return 0;
+}
+
+int eval_material_block(struct eval *e, const ast_node *b, scene_material *m)
+{
+	switch (b->kw) {
+	case KW_PIGMENT: return pigment_block(e, b, m, NULL);
+	case KW_FINISH: return finish_block(e, b, m);
+	case KW_TEXTURE: return texture_block(e, b, m);
+	case KW_INTERIOR: return interior_block(e, b, m);
+	case KW_MATERIAL: return material_block(e, b, m);
+	case KW_NORMAL: return normal_block(e, b);
+	default: return eval_not_valid(e, b, "a texture");
+	}
+}
+
+/* #declare T = texture { A } texture { B }: B layered on A. */
+static int layers(struct eval *e, const ast_node *b, value *out)
+{
+	*out = (value){ .kind = V_TEXTURE, .mat = e->default_mat };
+	for (int i = 0; i < b->n_kids; i++) {
+		value v;
+		int rc = b->kids[i]->kw == KW_TEXTURE ? eval_material_value(e, b->kids[i], &v) : layers(e, b->kids[i], &v);
+		if (rc)
+			return -1;
+		eval_apply_texture(e, b->kids[i]->loc, &out->mat, i > 0, &v.mat);
+	}
+	return 0;
+}
+
+int eval_material_value(struct eval *e, const ast_node *b, value *out)
+{
+	static const struct { int kw; val_kind kind; } kinds[] = {
+		{ KW_PIGMENT, V_PIGMENT }, { KW_FINISH, V_FINISH }, { KW_TEXTURE, V_TEXTURE },
+		{ KW_NORMAL, V_NORMAL }, { KW_INTERIOR, V_INTERIOR }, { KW_MATERIAL, V_MATERIAL },
+	};
+	if (b->kw == KW_UNKNOWN && b->str && strcmp(b->str, "layers") == 0)
+		return layers(e, b, out);
+	if (b->kw == KW_COLOR_MAP || b->kw == KW_COLOUR_MAP || b->kw == KW_PIGMENT_MAP || b->kw == KW_TEXTURE_MAP ||
+	    b->kw == KW_NORMAL_MAP)
+		return map_block(e, b, out);
+	*out = (value){ .kind = V_NONE, .mat = e->default_mat };
+	for (size_t i = 0; i < sizeof kinds / sizeof *kinds; i++)
+		if (kinds[i].kw == b->kw)
+			out->kind = kinds[i].kind;
+	if (b->kw == KW_PIGMENT)
+		return pigment_block(e, b, &out->mat, &out->str);
+	return eval_material_block(e, b, &out->mat);
+}
+
+/* #default { texture {...} | pigment {...} | finish {...} }: the texture objects
+ * start from afterwards. */
+int eval_default(struct eval *e, const ast_node *d)
+{
+	struct cursor c;
+	int err = 0, rc = 0;
+	const ast_node *item;
+	eval_cursor_init(&c, e, d);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		if (item->kind == AST_BLOCK && (item->kw == KW_TEXTURE || item->kw == KW_PIGMENT ||
+		                                item->kw == KW_FINISH || item->kw == KW_NORMAL)) {
+			scene_material m = e->default_mat;
+			if ((rc = eval_material_block(e, item, &m)) == 0)
+				e->default_mat = m;
+		} else {
+			rc = eval_not_valid(e, item, "#default");
+		}
+	}
+	eval_cursor_free(&c);
+	return rc || err ? -1 : 0;
+}

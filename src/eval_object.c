@@ -1,0 +1,1154 @@
+/* eval_object.c: objects (sphere, box, plane, triangles, meshes, union, object),
+ * their modifiers, and transformations. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "eval_int.h"
+
+/* "a sphere", "an object": for the messages. */
+static const char *with_article(const char *name, char *out, size_t size)
+{
+	snprintf(out, size, "%s %s", strchr("aeiou", name[0]) ? "an" : "a", name);
+	return out;
+}
+
+/* ---- transformations ---- */
+
+static bool invert3(const double m[3][3], double inv[3][3])
+{
+	double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+	             m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+	             m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+	if (fabs(det) < 1e-300)
+		return false;
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++) {
+			int a = (j + 1) % 3, b = (j + 2) % 3, c = (i + 1) % 3, d = (i + 2) % 3;
+			inv[i][j] = (m[a][c] * m[b][d] - m[a][d] * m[b][c]) / det;
+		}
+	return true;
+}
+
+xform eval_xform_inverse(const xform *t)
+{
+	double m[3][3], inv[3][3];
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++)
+			m[i][j] = t->m[i][j];
+	xform r = scene_xform_identity();
+	if (!invert3(m, inv))
+		return r;
+	for (int i = 0; i < 3; i++) {
+		r.m[i][3] = 0;
+		for (int j = 0; j < 3; j++) {
+			r.m[i][j] = inv[i][j];
+			r.m[i][3] -= inv[i][j] * t->m[j][3];
+		}
+	}
+	return r;
+}
+
+static bool singular(const xform *t)
+{
+	double m[3][3], inv[3][3];
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++)
+			m[i][j] = t->m[i][j];
+	return !invert3(m, inv);
+}
+
+/* matrix <A, B, C,  D, E, F,  G, H, I,  J, K, L>: POV-Ray's row vector times the
+ * matrix: x' = A x + D y + G z + J, and so on. */
+static int matrix(struct eval *e, const ast_node *arg, xform *out)
+{
+	if (arg->kind != AST_VECTOR || arg->n_kids != 12) {
+		eval_error(e, arg->loc, "matrix takes a vector of 12 numbers, <A, B, C, D, E, F, G, H, I, J, K, L>");
+		return -1;
+	}
+	double m[12];
+	for (int i = 0; i < 12; i++)
+		if (eval_expect_float(e, arg->kids[i], &m[i]))
+			return -1;
+	for (int j = 0; j < 3; j++) {
+		for (int i = 0; i < 3; i++)
+			out->m[j][i] = m[3 * i + j];
+		out->m[j][3] = m[9 + j];
+	}
+	return 0;
+}
+
+static int transform_block(struct eval *e, const ast_node *b, xform *out);
+
+/* transform Name, transform { ... } */
+static int transform_arg(struct eval *e, const ast_node *item, xform *out)
+{
+	if (item->kind == AST_BLOCK)
+		return transform_block(e, item, out);
+	value v;
+	if (eval_expr(e, item->kids[0], &v))
+		return -1;
+	if (v.kind != V_TRANSFORM) {
+		eval_error(e, item->kids[0]->loc, "expected a transform, found %s", eval_kind_name(v.kind));
+		eval_value_free(&v);
+		return -1;
+	}
+	*out = v.xf;
+	return 0;
+}
+
+/* scale: a component of 0 is changed to 1, as POV-Ray does. */
+static xform scale(struct eval *e, const ast_node *arg, double v[3])
+{
+	for (int i = 0; i < 3; i++)
+		if (v[i] == 0) {
+			eval_warning(e, arg->loc, "scale by 0 changed to 1, as POV-Ray does");
+			v[i] = 1;
+		}
+	return scene_xform_scale(v);
+}
+
+/* translate V | rotate V | scale V | matrix <...> | transform T | transform { ... }:
+ * 1 when item is one (t updated), 0 when not, -1 on error. */
+int eval_transform_item(struct eval *e, struct cursor *c, const ast_node *item, xform *t)
+{
+	(void)c;
+	if ((item->kind != AST_ARG && item->kind != AST_BLOCK) || item->kw < 0)
+		return 0;
+	xform step;
+	double v[3];
+	switch (item->kw) {
+	case KW_TRANSLATE: case KW_ROTATE: case KW_SCALE:
+		if (item->kind != AST_ARG) {
+			eval_error(e, item->loc, "'%s' takes a vector, not a block", ast_keyword_name(item->kw));
+			return -1;
+		}
+		if (eval_expect_vector(e, item->kids[0], v))
+			return -1;
+		step = item->kw == KW_TRANSLATE ? scene_xform_translate(v)
+		     : item->kw == KW_ROTATE ? scene_xform_rotate(v) : scale(e, item->kids[0], v);
+		break;
+	case KW_MATRIX:
+		step = scene_xform_identity();
+		if (item->kind != AST_ARG || matrix(e, item->kids[0], &step))
+			return -1;
+		break;
+	case KW_TRANSFORM:
+		if (transform_arg(e, item, &step))
+			return -1;
+		break;
+	default:
+		return 0;
+	}
+	*t = scene_xform_then(t, &step);
+	return 1;
+}
+
+/* transform { [TRANSFORM_IDENTIFIER] [TRANSFORMATION...] [inverse] } */
+static int transform_block(struct eval *e, const ast_node *b, xform *out)
+{
+	struct cursor c;
+	int err = 0, rc = 0, inverse = 0;
+	const ast_node *item;
+	*out = scene_xform_identity();
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		if (item->kind == AST_FLAG && item->kw == KW_INVERSE) {
+			inverse = 1;
+			continue;
+		}
+		if (AST_IS_EXPRESSION(item->kind)) {
+			value v;
+			if (eval_expr(e, item, &v))
+				rc = -1;
+			else if (v.kind != V_TRANSFORM)
+				rc = eval_not_valid(e, item, "a transform");
+			else
+				*out = scene_xform_then(out, &v.xf);
+			eval_value_free(&v);
+			continue;
+		}
+		int k = eval_transform_item(e, &c, item, out);
+		rc = k < 0 ? -1 : k == 0 ? eval_not_valid(e, item, "a transform") : 0;
+	}
+	eval_cursor_free(&c);
+	if (rc || err)
+		return -1;
+	if (inverse) {
+		if (singular(out)) {
+			eval_error(e, b->loc, "this transform cannot be inverted");
+			return -1;
+		}
+		*out = eval_xform_inverse(out);
+	}
+	return 0;
+}
+
+static void transform_light(struct lightval *l, const xform *t)
+{
+	scene_light *s = &l->light;
+	scene_xform_point(t, s->position, s->position);
+	scene_xform_point(t, s->point_at, s->point_at);
+	scene_xform_vector(t, s->axis1, s->axis1);
+	scene_xform_vector(t, s->axis2, s->axis2);
+	for (int i = 0; i < l->n_looks; i++)
+		l->looks[i].xf = scene_xform_then(&l->looks[i].xf, t);
+}
+
+static void transform_objval(struct objval *o, const xform *t)
+{
+	for (int i = 0; i < o->n_objs; i++)
+		o->objs[i].xf = scene_xform_then(&o->objs[i].xf, t);
+	for (int i = 0; i < o->n_lights; i++)
+		transform_light(&o->lights[i], t);
+}
+
+/* ---- modifiers ---- */
+
+/* A union's texture goes to its parts that have none of their own. This happens
+ * when the union is used (placed in the scene or in another union), so that
+ * object { U pigment { ... } } still changes the texture of U's bare parts. */
+static void resolve_texture(struct objval *o)
+{
+	for (int i = 0; o->compound && o->has_mat && i < o->n_objs; i++)
+		if (!o->objs[i].textured) {
+			o->objs[i].material = o->mat;
+			o->objs[i].textured = true;
+		}
+	o->has_mat = false;
+}
+
+/* The texture a pigment, finish or texture modifies: a single shape's own, else
+ * the union's, which its bare parts take. */
+static scene_material *target(struct eval *e, struct objval *o, bool *textured)
+{
+	if (!o->compound && o->n_objs == 1) {
+		*textured = o->objs[0].textured;
+		o->objs[0].textured = true;
+		return &o->objs[0].material;
+	}
+	*textured = o->has_mat;
+	if (!o->has_mat)
+		o->mat = e->default_mat;
+	o->has_mat = true;
+	return &o->mat;
+}
+
+/* no_shadow, no_image, no_reflection, hollow [Bool], double_illuminate [Bool] */
+static int flag_item(struct eval *e, struct cursor *c, const ast_node *item, struct objval *o)
+{
+	static const struct { int kw, flag; } flags[] = {
+		{ KW_NO_SHADOW, OBJ_NO_SHADOW }, { KW_NO_IMAGE, OBJ_NO_IMAGE },
+		{ KW_NO_REFLECTION, OBJ_NO_REFLECTION }, { KW_HOLLOW, OBJ_HOLLOW },
+		{ KW_DOUBLE_ILLUMINATE, OBJ_DOUBLE_ILLUMINATE },
+	};
+	int err = 0, flag = 0;
+	for (size_t i = 0; i < sizeof flags / sizeof *flags; i++)
+		if (flags[i].kw == item->kw)
+			flag = flags[i].flag;
+	if (item->kw == KW_INVERSE)
+		return 0;   /* inside out: nothing to eclat, which has no CSG */
+	if (!flag)
+		return 1;
+	double on = 1;
+	const ast_node *arg = eval_next_expr(c, &err);
+	if (arg && eval_expect_float(e, arg, &on))
+		return -1;
+	for (int i = 0; i < o->n_objs; i++)
+		o->objs[i].flags = eval_truth(on) ? o->objs[i].flags | flag : o->objs[i].flags & ~flag;
+	return 0;
+}
+
+/* pigment, finish, normal, interior modify the object's texture; a texture or a
+ * material replaces it, or is layered on the one it has (eval_apply_texture). */
+static int material_modifier(struct eval *e, const ast_node *item, struct objval *o)
+{
+	bool textured;
+	scene_material *m = target(e, o, &textured);
+	if (item->kw != KW_TEXTURE && item->kw != KW_MATERIAL)
+		return eval_material_block(e, item, m);
+	value v;
+	if (eval_material_value(e, item, &v))
+		return -1;
+	eval_apply_texture(e, item->loc, m, textured, &v.mat);
+	if (item->kw == KW_MATERIAL)
+		eval_apply_value(&(value){ .kind = V_INTERIOR, .mat = v.mat }, m);
+	return 0;
+}
+
+static bool is_material_kw(int kw)
+{
+	return kw == KW_PIGMENT || kw == KW_FINISH || kw == KW_TEXTURE || kw == KW_NORMAL || kw == KW_INTERIOR ||
+	       kw == KW_MATERIAL;
+}
+
+/* The items every object accepts after its own: transformations, textures,
+ * flags; bounded_by and clipped_by are read and left out. */
+static int object_modifier(struct eval *e, struct cursor *c, const ast_node *item, struct objval *o,
+                           const char *where)
+{
+	xform t = scene_xform_identity();
+	int rc = eval_transform_item(e, c, item, &t);
+	if (rc != 0) {
+		if (rc > 0)
+			transform_objval(o, &t);
+		return rc < 0 ? -1 : 0;
+	}
+	if (item->kind == AST_BLOCK && is_material_kw(item->kw))
+		return material_modifier(e, item, o);
+	if (item->kind == AST_FLAG && (rc = flag_item(e, c, item, o)) <= 0)
+		return rc;
+	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING)
+		return 0;
+	if (item->kind == AST_BLOCK && (item->kw == KW_BOUNDED_BY || item->kw == KW_CLIPPED_BY)) {
+		eval_warn_once(e, item->loc, ast_keyword_name(item->kw), "'%s' is not supported yet; ignored",
+		               ast_keyword_name(item->kw));
+		return 0;
+	}
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str) &&
+	    strcmp(eval_pov_word(item->str), "object") != 0) {
+		eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
+		return 0;
+	}
+	return eval_not_valid(e, item, where);
+}
+
+/* Reads the modifiers up to the end of the block. */
+static int modifiers(struct eval *e, struct cursor *c, struct objval *o, const char *where)
+{
+	int err = 0;
+	const ast_node *item;
+	while ((item = eval_next(c, &err)) != NULL)
+		if (object_modifier(e, c, item, o, where))
+			return -1;
+	return err ? -1 : 0;
+}
+
+/* ---- shapes ---- */
+
+/* The positional arguments of a shape: 'v' a vector, 'f' a float. */
+static int arguments(struct eval *e, struct cursor *c, const ast_node *b, const char *kinds, scene_object *o,
+                     double (*vecs)[3], const char *needs)
+{
+	int err = 0, nv = 0;
+	for (const char *k = kinds; *k; k++) {
+		const ast_node *arg = eval_next_expr(c, &err);
+		if (!arg && err)
+			return -1;
+		if (!arg) {
+			const ast_node *next = eval_next(c, &err);
+			char a[40];
+			eval_error(e, next ? next->loc : b->loc, "%s needs %s",
+			           with_article(ast_keyword_name(b->kw), a, sizeof a), needs);
+			return -1;
+		}
+		int rc = *k == 'f' ? eval_expect_float(e, arg, &o->radius) : eval_expect_vector(e, arg, vecs[nv++]);
+		if (rc)
+			return -1;
+	}
+	return 0;
+}
+
+static scene_object new_object(struct eval *e, scene_shape shape, src_loc loc)
+{
+	return (scene_object){ .shape = shape, .xf = scene_xform_identity(), .material = e->default_mat,
+	                       .mesh = -1, .loc = loc };
+}
+
+/* sphere { <Center>, Radius }  box { <Corner1>, <Corner2> }  plane { <Normal>, Distance }
+ * triangle { <A>, <B>, <C> }  smooth_triangle { <A>, <NA>, <B>, <NB>, <C>, <NC> }
+ * each followed by [OBJECT_MODIFIERS...] */
+static int shape(struct eval *e, const ast_node *b, value *out)
+{
+	static const struct { int kw; scene_shape shape; const char *args, *needs; } shapes[] = {
+		{ KW_SPHERE, SHAPE_SPHERE, "vf", "a centre and a radius" },
+		{ KW_BOX, SHAPE_BOX, "vv", "two corners" },
+		{ KW_PLANE, SHAPE_PLANE, "vf", "a normal and a distance" },
+		{ KW_TRIANGLE, SHAPE_TRIANGLE, "vvv", "three corners" },
+		{ KW_SMOOTH_TRIANGLE, SHAPE_SMOOTH_TRIANGLE, "vvvvvv", "three corners, each with a normal" },
+	};
+	size_t k = 0;
+	while (shapes[k].kw != b->kw)
+		k++;
+	scene_object o = new_object(e, shapes[k].shape, b->loc);
+	double v[6][3];
+	struct cursor c;
+	eval_cursor_init(&c, e, b);
+	int rc = arguments(e, &c, b, shapes[k].args, &o, v, shapes[k].needs);
+	if (rc == 0) {
+		bool smooth = b->kw == KW_SMOOTH_TRIANGLE;
+		int n_vec = (int)strspn(shapes[k].args, "v");
+		for (int i = 0; i < (smooth ? 3 : n_vec); i++)
+			memcpy(o.p[i], v[smooth ? 2 * i : i], sizeof o.p[i]);
+		for (int i = 0; smooth && i < 3; i++)
+			memcpy(o.n[i], v[2 * i + 1], sizeof o.n[i]);
+		*out = (value){ .kind = V_OBJECT, .obj = eval_objval_new(b->loc) };
+		eval_objval_add(out->obj, &o);
+		char a[40];
+		rc = modifiers(e, &c, out->obj, with_article(ast_keyword_name(b->kw), a, sizeof a));
+		if (rc)
+			eval_value_free(out);
+	}
+	eval_cursor_free(&c);
+	return rc;
+}
+
+/* ---- unions and object statements ---- */
+
+static int add_part(struct eval *e, const ast_node *item, struct objval *o)
+{
+	value part;
+	if (eval_object(e, item, &part))
+		return -1;
+	resolve_texture(part.obj);
+	eval_objval_merge(o, part.obj);
+	eval_value_free(&part);
+	return 0;
+}
+
+/* union { OBJECT... [OBJECT_MODIFIERS...] } */
+static int union_block(struct eval *e, const ast_node *b, value *out)
+{
+	struct cursor c;
+	int err = 0, rc = 0, modifiers_seen = 0;
+	const ast_node *item;
+	*out = (value){ .kind = V_OBJECT, .obj = eval_objval_new(b->loc) };
+	out->obj->compound = true;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		if (eval_is_object_block(item)) {
+			if (modifiers_seen) {
+				eval_error(e, item->loc, "the objects of a union come before its modifiers");
+				rc = -1;
+			} else {
+				rc = add_part(e, item, out->obj);
+			}
+			continue;
+		}
+		modifiers_seen = 1;
+		rc = object_modifier(e, &c, item, out->obj, "a union");
+	}
+	eval_cursor_free(&c);
+	if (rc || err)
+		eval_value_free(out);
+	return rc || err ? -1 : 0;
+}
+
+/* object { OBJECT_IDENTIFIER | OBJECT [OBJECT_MODIFIERS...] } */
+static int object_statement(struct eval *e, const ast_node *b, value *out)
+{
+	struct cursor c;
+	int err = 0, rc = -1;
+	eval_cursor_init(&c, e, b);
+	const ast_node *first = eval_next(&c, &err);
+	if (!first) {
+		if (!err)
+			eval_error(e, b->loc, "object needs an object identifier or an object first");
+	} else if (AST_IS_EXPRESSION(first->kind)) {
+		rc = eval_expr(e, first, out);
+		if (rc == 0 && out->kind != V_OBJECT) {
+			eval_error(e, first->loc, "expected an object, found %s", eval_kind_name(out->kind));
+			eval_value_free(out);
+			rc = -1;
+		}
+	} else if (eval_is_object_block(first)) {
+		rc = eval_object(e, first, out);
+	} else {
+		rc = eval_not_valid(e, first, "an object (expected an object identifier or an object first)");
+	}
+	if (rc == 0 && (rc = modifiers(e, &c, out->obj, "an object")) != 0)
+		eval_value_free(out);
+	eval_cursor_free(&c);
+	return rc;
+}
+
+/* ---- meshes ---- */
+
+struct mesh_build {
+	scene_mesh m;
+	int cap_v, cap_f, cap_nrm, cap_uv;
+	bool smooth, uv;
+};
+
+static void mesh_vertex(struct mesh_build *mb, const double p[3])
+{
+	if (mb->m.n_v == mb->cap_v) {
+		mb->cap_v = mb->cap_v ? 2 * mb->cap_v : 64;
+		mb->m.v = eval_xrealloc(mb->m.v, mb->cap_v * sizeof *mb->m.v);
+	}
+	memcpy(mb->m.v[mb->m.n_v++], p, sizeof *mb->m.v);
+}
+
+static void mesh_normal(struct mesh_build *mb, const double n[3])
+{
+	if (mb->m.n_nrm == mb->cap_nrm) {
+		mb->cap_nrm = mb->cap_nrm ? 2 * mb->cap_nrm : 64;
+		mb->m.nrm = eval_xrealloc(mb->m.nrm, mb->cap_nrm * sizeof *mb->m.nrm);
+	}
+	double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+	for (int i = 0; i < 3; i++)
+		mb->m.nrm[mb->m.n_nrm][i] = l > 0 ? n[i] / l : i == 0;
+	mb->m.n_nrm++;
+}
+
+static void mesh_uv(struct mesh_build *mb, const double uv[2])
+{
+	if (mb->m.n_uv == mb->cap_uv) {
+		mb->cap_uv = mb->cap_uv ? 2 * mb->cap_uv : 64;
+		mb->m.uv = eval_xrealloc(mb->m.uv, mb->cap_uv * sizeof *mb->m.uv);
+	}
+	mb->m.uv[mb->m.n_uv][0] = uv[0];
+	mb->m.uv[mb->m.n_uv][1] = uv[1];
+	mb->m.n_uv++;
+}
+
+static void grow_faces(struct mesh_build *mb)
+{
+	if (mb->m.n_faces < mb->cap_f)
+		return;
+	mb->cap_f = mb->cap_f ? 2 * mb->cap_f : 64;
+	mb->m.face = eval_xrealloc(mb->m.face, mb->cap_f * sizeof *mb->m.face);
+	mb->m.face_mat = eval_xrealloc(mb->m.face_mat, mb->cap_f * sizeof *mb->m.face_mat);
+	if (mb->m.face_nrm)
+		mb->m.face_nrm = eval_xrealloc(mb->m.face_nrm, mb->cap_f * sizeof *mb->m.face_nrm);
+	if (mb->m.face_uv)
+		mb->m.face_uv = eval_xrealloc(mb->m.face_uv, mb->cap_f * sizeof *mb->m.face_uv);
+}
+
+/* The texture list of a mesh, each texture once. */
+static int mesh_material(struct mesh_build *mb, const scene_material *m)
+{
+	for (int i = 0; i < mb->m.n_mats; i++)
+		if (memcmp(&mb->m.mats[i], m, sizeof *m) == 0)
+			return i;
+	mb->m.mats = eval_xrealloc(mb->m.mats, (mb->m.n_mats + 1) * sizeof *mb->m.mats);
+	mb->m.mats[mb->m.n_mats] = *m;
+	return mb->m.n_mats++;
+}
+
+static bool degenerate(const double p[3][3])
+{
+	double a[3], b[3], c[3];
+	for (int i = 0; i < 3; i++) {
+		a[i] = p[1][i] - p[0][i];
+		b[i] = p[2][i] - p[0][i];
+	}
+	c[0] = a[1] * b[2] - a[2] * b[1];
+	c[1] = a[2] * b[0] - a[0] * b[2];
+	c[2] = a[0] * b[1] - a[1] * b[0];
+	return c[0] * c[0] + c[1] * c[1] + c[2] * c[2] < 1e-20;
+}
+
+/* A smooth triangle in a mesh makes every face carry normals: a flat face's are
+ * its geometric normal, three times. The same for uv_vectors, whose default is
+ * POV-Ray's <0,0> <1,0> <1,1>. */
+static void mesh_need_normals(struct mesh_build *mb)
+{
+	if (mb->m.face_nrm)
+		return;
+	mb->m.face_nrm = eval_xrealloc(NULL, (mb->cap_f ? mb->cap_f : 1) * sizeof *mb->m.face_nrm);
+	for (int f = 0; f < mb->m.n_faces; f++) {
+		const double *a = mb->m.v[mb->m.face[f][0]], *b = mb->m.v[mb->m.face[f][1]], *c = mb->m.v[mb->m.face[f][2]];
+		double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] }, w[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+		double n[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0] };
+		mesh_normal(mb, n);
+		for (int k = 0; k < 3; k++)
+			mb->m.face_nrm[f][k] = mb->m.n_nrm - 1;
+	}
+}
+
+static void mesh_need_uv(struct mesh_build *mb)
+{
+	static const double def[3][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 } };
+	if (mb->m.face_uv)
+		return;
+	mb->m.face_uv = eval_xrealloc(NULL, (mb->cap_f ? mb->cap_f : 1) * sizeof *mb->m.face_uv);
+	for (int k = 0; k < 3; k++)
+		mesh_uv(mb, def[k]);
+	for (int f = 0; f < mb->m.n_faces; f++)
+		for (int k = 0; k < 3; k++)
+			mb->m.face_uv[f][k] = k;
+}
+
+struct mesh_tri {
+	double p[3][3], n[3][3], uv[3][2];
+	bool smooth, has_uv, has_mat;
+	scene_material mat;
+};
+
+static void mesh_add_face(struct mesh_build *mb, const struct mesh_tri *t)
+{
+	if (t->smooth)
+		mesh_need_normals(mb);
+	if (t->has_uv)
+		mesh_need_uv(mb);
+	grow_faces(mb);
+	int f = mb->m.n_faces++;
+	for (int k = 0; k < 3; k++) {
+		mesh_vertex(mb, t->p[k]);
+		mb->m.face[f][k] = mb->m.n_v - 1;
+	}
+	if (mb->m.face_nrm) {
+		double u[3], w[3], n[3];
+		for (int i = 0; i < 3; i++) {
+			u[i] = t->p[1][i] - t->p[0][i];
+			w[i] = t->p[2][i] - t->p[0][i];
+		}
+		n[0] = u[1] * w[2] - u[2] * w[1];
+		n[1] = u[2] * w[0] - u[0] * w[2];
+		n[2] = u[0] * w[1] - u[1] * w[0];
+		for (int k = 0; k < 3; k++) {
+			mesh_normal(mb, t->smooth ? t->n[k] : n);
+			mb->m.face_nrm[f][k] = mb->m.n_nrm - 1;
+		}
+	}
+	if (mb->m.face_uv) {
+		static const double def[3][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 } };
+		for (int k = 0; k < 3; k++) {
+			mesh_uv(mb, t->has_uv ? t->uv[k] : def[k]);
+			mb->m.face_uv[f][k] = mb->m.n_uv - 1;
+		}
+	}
+	mb->m.face_mat[f] = t->has_mat ? mesh_material(mb, &t->mat) : -1;
+}
+
+static int uv_arg(struct eval *e, const ast_node *n, double uv[2])
+{
+	double v[3];
+	if (eval_expect_vector(e, n, v))
+		return -1;
+	uv[0] = v[0];
+	uv[1] = v[1];
+	return 0;
+}
+
+/* The items of a mesh triangle after its corners: [uv_vectors <A>, <B>, <C>] [texture { T }] */
+static int mesh_tri_item(struct eval *e, struct cursor *c, const ast_node *item, struct mesh_tri *t)
+{
+	int err = 0;
+	if (item->kind == AST_ARG && item->kw == KW_UV_VECTORS) {
+		const ast_node *b = eval_next_expr(c, &err), *d = b ? eval_next_expr(c, &err) : NULL;
+		if (!d) {
+			eval_error(e, item->loc, "uv_vectors in a mesh triangle needs three uv vectors");
+			return -1;
+		}
+		t->has_uv = true;
+		return uv_arg(e, item->kids[0], t->uv[0]) || uv_arg(e, b, t->uv[1]) || uv_arg(e, d, t->uv[2]) ? -1 : 0;
+	}
+	if (item->kind == AST_BLOCK && item->kw == KW_TEXTURE) {
+		value v;
+		if (eval_material_value(e, item, &v))
+			return -1;
+		t->mat = v.mat;
+		t->has_mat = true;
+		return 0;
+	}
+	return eval_not_valid(e, item, "a mesh triangle");
+}
+
+/* triangle { <A>, <B>, <C> [MESH_TRIANGLE_ITEMS] } or smooth_triangle { ... } in a mesh */
+static int mesh_triangle(struct eval *e, const ast_node *b, struct mesh_build *mb)
+{
+	struct mesh_tri t = { .smooth = b->kw == KW_SMOOTH_TRIANGLE };
+	scene_object o;
+	double v[6][3];
+	struct cursor c;
+	int err = 0;
+	eval_cursor_init(&c, e, b);
+	int rc = arguments(e, &c, b, t.smooth ? "vvvvvv" : "vvv", &o, v,
+	                   t.smooth ? "three corners, each with a normal" : "three corners");
+	for (int k = 0; rc == 0 && k < 3; k++) {
+		memcpy(t.p[k], v[t.smooth ? 2 * k : k], sizeof t.p[k]);
+		if (t.smooth)
+			memcpy(t.n[k], v[2 * k + 1], sizeof t.n[k]);
+	}
+	const ast_node *item;
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL)
+		rc = mesh_tri_item(e, &c, item, &t);
+	eval_cursor_free(&c);
+	if (rc || err)
+		return -1;
+	if (!degenerate(t.p))   /* POV-Ray leaves degenerate mesh triangles out, silently */
+		mesh_add_face(mb, &t);
+	return 0;
+}
+
+static int inside_vector(struct eval *e, const ast_node *item, scene_mesh *m)
+{
+	double v[3];
+	if (eval_expect_vector(e, item->kids[0], v))
+		return -1;
+	double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+	m->has_inside_vector = l > 1e-10;
+	for (int i = 0; i < 3; i++)
+		m->inside_vector[i] = l > 1e-10 ? v[i] / l : 0;
+	return 0;
+}
+
+static void mesh_build_free(struct mesh_build *mb)
+{
+	free(mb->m.v);
+	free(mb->m.nrm);
+	free(mb->m.uv);
+	free(mb->m.face);
+	free(mb->m.face_nrm);
+	free(mb->m.face_uv);
+	free(mb->m.face_mat);
+	free(mb->m.mats);
+}
+
+/* Stores the mesh in the scene once; the object refers to it. */
+static int mesh_object(struct eval *e, const ast_node *b, struct mesh_build *mb, struct cursor *c, value *out)
+{
+	if (mb->m.n_faces == 0) {
+		eval_error(e, b->loc, "%s has no triangles", ast_keyword_name(b->kw));
+		mesh_build_free(mb);
+		return -1;
+	}
+	bool any_mat = false;
+	for (int f = 0; f < mb->m.n_faces; f++)
+		any_mat |= mb->m.face_mat[f] >= 0;
+	if (!any_mat) {
+		free(mb->m.face_mat);
+		mb->m.face_mat = NULL;
+	}
+	mb->m.loc = b->loc;
+	scene_object o = new_object(e, SHAPE_MESH, b->loc);
+	o.mesh = scene_add_mesh(e->s, &mb->m);
+	*out = (value){ .kind = V_OBJECT, .obj = eval_objval_new(b->loc) };
+	eval_objval_add(out->obj, &o);
+	char a[40];
+	int rc = modifiers(e, c, out->obj, with_article(ast_keyword_name(b->kw), a, sizeof a));
+	if (rc)
+		eval_value_free(out);
+	return rc;
+}
+
+/* mesh { TRIANGLE... [inside_vector <V>] [OBJECT_MODIFIERS...] } */
+static int mesh(struct eval *e, const ast_node *b, value *out)
+{
+	struct mesh_build mb = { 0 };
+	struct cursor c;
+	int err = 0, rc = 0;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		if (item->kind == AST_BLOCK && (item->kw == KW_TRIANGLE || item->kw == KW_SMOOTH_TRIANGLE))
+			rc = mesh_triangle(e, item, &mb);
+		else if (item->kind == AST_ARG && item->kw == KW_INSIDE_VECTOR)
+			rc = inside_vector(e, item, &mb.m);
+		else {
+			eval_unget(&c, item);
+			break;
+		}
+	}
+	if (rc || err) {
+		mesh_build_free(&mb);
+		eval_cursor_free(&c);
+		return -1;
+	}
+	rc = mesh_object(e, b, &mb, &c, out);
+	eval_cursor_free(&c);
+	return rc;
+}
+
+/* ---- mesh2 ---- */
+
+/* NAME { Count, Items... }: the count, and the values of the items after it. */
+static int counted(struct eval *e, const ast_node *b, value **vals, const ast_node ***at, int *n)
+{
+	struct cursor c;
+	int err = 0, count = 0, cap = 0, rc = 0;
+	const ast_node *item;
+	*vals = NULL;
+	*at = NULL;
+	*n = 0;
+	eval_cursor_init(&c, e, b);
+	const ast_node *first = eval_next_expr(&c, &err);
+	if (!first || eval_expect_int(e, first, &count) || count < 0) {
+		if (!err && (!first || count < 0))
+			eval_error(e, first ? first->loc : b->loc, "%s needs a count first", ast_keyword_name(b->kw));
+		eval_cursor_free(&c);
+		return -1;
+	}
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		if (!AST_IS_EXPRESSION(item->kind)) {
+			rc = eval_not_valid(e, item, ast_keyword_name(b->kw));
+			break;
+		}
+		if (*n == cap) {
+			cap = cap ? 2 * cap : 64;
+			*vals = eval_xrealloc(*vals, cap * sizeof **vals);
+			*at = eval_xrealloc(*at, cap * sizeof **at);
+		}
+		(*at)[*n] = item;
+		rc = eval_expr(e, item, &(*vals)[*n]);
+		*n += rc == 0;
+	}
+	eval_cursor_free(&c);
+	if (rc || err) {
+		for (int i = 0; i < *n; i++)
+			eval_value_free(&(*vals)[i]);
+		free(*vals);
+		free(*at);
+		return -1;
+	}
+	return count;
+}
+
+static void free_values(value *vals, const ast_node **at, int n)
+{
+	for (int i = 0; i < n; i++)
+		eval_value_free(&vals[i]);
+	free(vals);
+	free(at);
+}
+
+/* A value that must be a vector of 3 components, or a float (which fills it). */
+static int as_vector(struct eval *e, const ast_node *at, const value *v, double out[3])
+{
+	if (v->kind != V_FLOAT && !(v->kind == V_VECTOR && v->n <= 3)) {
+		eval_error(e, at->loc, "expected a vector, found %s", eval_kind_name(v->kind));
+		return -1;
+	}
+	double w[5];
+	eval_widen(v, 3, w);
+	memcpy(out, w, 3 * sizeof *out);
+	return 0;
+}
+
+/* vertex_vectors { N, <V>... }, normal_vectors (normalized), uv_vectors. */
+static int vectors_block(struct eval *e, const ast_node *b, double (**out)[3], int *n, bool normalize)
+{
+	value *vals;
+	const ast_node **at;
+	int got, count = counted(e, b, &vals, &at, &got), rc = 0;
+	if (count < 0)
+		return -1;
+	if (got != count) {
+		eval_error(e, b->loc, "%s says %d, and has %d", ast_keyword_name(b->kw), count, got);
+		free_values(vals, at, got);
+		return -1;
+	}
+	*out = eval_xrealloc(*out, (size_t)(count ? count : 1) * sizeof **out);
+	*n = count;
+	for (int i = 0; rc == 0 && i < count; i++) {
+		double *v = (*out)[i];
+		if ((rc = as_vector(e, at[i], &vals[i], v)) != 0)
+			break;
+		double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+		if (normalize && l < 1e-10) {
+			eval_warning(e, at[i]->loc, "a normal of length 0 changed to <1, 0, 0>, as POV-Ray does");
+			v[0] = 1, v[1] = v[2] = 0, l = 1;
+		}
+		for (int k = 0; normalize && k < 3; k++)
+			v[k] /= l;
+	}
+	free_values(vals, at, got);
+	return rc;
+}
+
+/* One face: <A, B, C>, each index in 0 to limit - 1. */
+static int face(struct eval *e, const ast_node *at, const value *v, int limit, int out[3])
+{
+	double w[3];
+	if (v->kind != V_VECTOR || as_vector(e, at, v, w)) {
+		if (v->kind != V_VECTOR)
+			eval_error(e, at->loc, "expected a vector of indices <A, B, C>, found %s", eval_kind_name(v->kind));
+		return -1;
+	}
+	for (int k = 0; k < 3; k++) {
+		if (!(w[k] >= 0 && w[k] < limit)) {
+			eval_error(e, at->loc, "index %g is out of the range 0 to %d", w[k], limit - 1);
+			return -1;
+		}
+		out[k] = (int)w[k];
+	}
+	return 0;
+}
+
+/* face_indices { N, <A, B, C> [, Texture [, T2, T3]]... }, normal_indices, uv_indices:
+ * a face's texture is the first index after it (three give a gradient in POV-Ray). */
+static int indices_block(struct eval *e, const ast_node *b, int (**faces)[3], int **mats, int *n, int limit,
+                         int n_mats)
+{
+	value *vals;
+	const ast_node **at;
+	int got, count = counted(e, b, &vals, &at, &got), f = 0, rc = 0;
+	if (count < 0)
+		return -1;
+	*faces = eval_xrealloc(NULL, (size_t)(count ? count : 1) * sizeof **faces);
+	if (mats)
+		*mats = eval_xrealloc(NULL, (size_t)(count ? count : 1) * sizeof **mats);
+	for (int i = 0; rc == 0 && i < got; f++) {
+		if (f >= count) {
+			eval_error(e, at[i]->loc, "%s says %d, and has more", ast_keyword_name(b->kw), count);
+			rc = -1;
+			break;
+		}
+		rc = face(e, at[i], &vals[i], limit, (*faces)[f]);
+		i++;
+		if (mats)
+			(*mats)[f] = -1;
+		for (int t = 0; rc == 0 && mats && t < 3 && i < got && vals[i].kind == V_FLOAT; t++, i++) {
+			double ti = vals[i].v[0];
+			if (!(ti >= 0 && ti < n_mats)) {
+				eval_error(e, at[i]->loc, "texture index %g is out of the range of the texture_list", ti);
+				rc = -1;
+			} else if (t == 0) {
+				(*mats)[f] = (int)ti;
+			}
+		}
+	}
+	if (rc == 0 && f != count) {
+		eval_error(e, b->loc, "%s says %d, and has %d", ast_keyword_name(b->kw), count, f);
+		rc = -1;
+	}
+	free_values(vals, at, got);
+	*n = count;
+	return rc;
+}
+
+/* texture_list { N, texture { ... }... } */
+static int texture_list(struct eval *e, const ast_node *b, scene_mesh *m)
+{
+	struct cursor c;
+	int err = 0, count, rc = 0;
+	eval_cursor_init(&c, e, b);
+	const ast_node *first = eval_next_expr(&c, &err), *item;
+	if (!first || eval_expect_int(e, first, &count) || count < 0) {
+		if (!first && !err)
+			eval_error(e, b->loc, "texture_list needs a count first");
+		eval_cursor_free(&c);
+		return -1;
+	}
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		value v;
+		if (item->kind != AST_BLOCK || item->kw != KW_TEXTURE)
+			rc = eval_not_valid(e, item, "a texture_list");
+		else if ((rc = eval_material_value(e, item, &v)) == 0) {
+			m->mats = eval_xrealloc(m->mats, (m->n_mats + 1) * sizeof *m->mats);
+			m->mats[m->n_mats++] = v.mat;
+		}
+	}
+	eval_cursor_free(&c);
+	if (rc == 0 && !err && m->n_mats != count) {
+		eval_error(e, b->loc, "texture_list says %d, and has %d", count, m->n_mats);
+		rc = -1;
+	}
+	return rc || err ? -1 : 0;
+}
+
+struct mesh2_parts {
+	const ast_node *faces, *normal_indices, *uv_indices;
+	int n_nrm_idx, n_uv_idx;
+};
+
+static int mesh2_item(struct eval *e, const ast_node *item, scene_mesh *m, struct mesh2_parts *p)
+{
+	switch (item->kind == AST_BLOCK || item->kind == AST_ARG ? item->kw : -1) {
+	case KW_VERTEX_VECTORS: return vectors_block(e, item, &m->v, &m->n_v, false);
+	case KW_NORMAL_VECTORS: return vectors_block(e, item, &m->nrm, &m->n_nrm, true);
+	case KW_UV_VECTORS: {
+		double (*v)[3] = NULL;
+		if (item->kind != AST_BLOCK || vectors_block(e, item, &v, &m->n_uv, false))
+			return item->kind != AST_BLOCK ? eval_not_valid(e, item, "a mesh2") : -1;
+		m->uv = eval_xrealloc(m->uv, (size_t)(m->n_uv ? m->n_uv : 1) * sizeof *m->uv);
+		for (int i = 0; i < m->n_uv; i++)
+			m->uv[i][0] = v[i][0], m->uv[i][1] = v[i][1];
+		free(v);
+		return 0;
+	}
+	case KW_TEXTURE_LIST: return texture_list(e, item, m);
+	case KW_FACE_INDICES: p->faces = item; return 0;
+	case KW_NORMAL_INDICES: p->normal_indices = item; return 0;
+	case KW_UV_INDICES: p->uv_indices = item; return 0;
+	case KW_INSIDE_VECTOR: return inside_vector(e, item, m);
+	default: return 1;
+	}
+}
+
+/* The indices, read once the vectors they refer to are known. */
+static int mesh2_faces(struct eval *e, const ast_node *b, scene_mesh *m, const struct mesh2_parts *p)
+{
+	int n;
+	if (!p->faces) {
+		eval_error(e, b->loc, "mesh2 needs face_indices");
+		return -1;
+	}
+	if (m->n_v == 0) {
+		eval_error(e, b->loc, "mesh2 needs vertex_vectors");
+		return -1;
+	}
+	if (indices_block(e, p->faces, &m->face, &m->face_mat, &m->n_faces, m->n_v, m->n_mats))
+		return -1;
+	if (p->normal_indices && (indices_block(e, p->normal_indices, &m->face_nrm, NULL, &n, m->n_nrm, 0) ||
+	                          n != m->n_faces)) {
+		if (n != m->n_faces)
+			eval_error(e, p->normal_indices->loc, "normal_indices has %d, face_indices %d", n, m->n_faces);
+		return -1;
+	}
+	if (p->uv_indices && (indices_block(e, p->uv_indices, &m->face_uv, NULL, &n, m->n_uv, 0) || n != m->n_faces)) {
+		if (n != m->n_faces)
+			eval_error(e, p->uv_indices->loc, "uv_indices has %d, face_indices %d", n, m->n_faces);
+		return -1;
+	}
+	return 0;
+}
+
+/* Without normal_indices (uv_indices) the face indices index the normals (uvs),
+ * as in POV-Ray: there must be one per vertex then. */
+static int mesh2_defaults(struct eval *e, const ast_node *b, scene_mesh *m)
+{
+	if (m->n_nrm && !m->face_nrm) {
+		if (m->n_nrm != m->n_v) {
+			eval_error(e, b->loc, "mesh2 without normal_indices needs one normal per vertex");
+			return -1;
+		}
+		m->face_nrm = eval_xrealloc(NULL, m->n_faces * sizeof *m->face_nrm);
+		memcpy(m->face_nrm, m->face, m->n_faces * sizeof *m->face_nrm);
+	}
+	if (m->n_uv && !m->face_uv && m->n_uv == m->n_v) {
+		m->face_uv = eval_xrealloc(NULL, m->n_faces * sizeof *m->face_uv);
+		memcpy(m->face_uv, m->face, m->n_faces * sizeof *m->face_uv);
+	}
+	return 0;
+}
+
+/* mesh2 { vertex_vectors {...} [normal_vectors {...}] [uv_vectors {...}]
+ *         [texture_list {...}] face_indices {...} [normal_indices {...}]
+ *         [uv_indices {...}] [inside_vector <V>] [OBJECT_MODIFIERS...] } */
+static int mesh2(struct eval *e, const ast_node *b, value *out)
+{
+	struct mesh_build mb = { 0 };
+	struct mesh2_parts p = { 0 };
+	struct cursor c;
+	int err = 0, rc = 0;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL)
+		if ((rc = mesh2_item(e, item, &mb.m, &p)) > 0) {
+			eval_unget(&c, item);
+			rc = 0;
+			break;
+		}
+	if (rc == 0 && !err)
+		rc = mesh2_faces(e, b, &mb.m, &p) || mesh2_defaults(e, b, &mb.m) ? -1 : 0;
+	if (rc || err) {
+		mesh_build_free(&mb);
+		eval_cursor_free(&c);
+		return -1;
+	}
+	rc = mesh_object(e, b, &mb, &c, out);
+	eval_cursor_free(&c);
+	return rc;
+}
+
+/* ---- any object ---- */
+
+bool eval_is_object_block(const ast_node *b)
+{
+	if (b->kind != AST_BLOCK)
+		return false;
+	switch (b->kw) {
+	case KW_SPHERE: case KW_BOX: case KW_PLANE: case KW_TRIANGLE: case KW_SMOOTH_TRIANGLE:
+	case KW_MESH: case KW_MESH2: case KW_UNION: case KW_OBJECT: case KW_LIGHT_SOURCE:
+		return true;
+	case KW_UNKNOWN: {
+		const char *w = eval_pov_word(b->str);
+		return w && strcmp(w, "object") == 0;
+	}
+	default:
+		return false;
+	}
+}
+
+/* An object eclat cannot render: kept as a placeholder, an error (or, with
+ * skip_unsupported, a warning) when it is put into the scene. */
+static int unsupported(struct eval *e, const ast_node *b, value *out)
+{
+	(void)e;
+	*out = (value){ .kind = V_OBJECT, .obj = eval_objval_new(b->loc) };
+	out->obj->unsupported = b->str;
+	out->obj->unsupported_loc = b->loc;
+	return 0;
+}
+
+int eval_object(struct eval *e, const ast_node *b, value *out)
+{
+	switch (b->kw) {
+	case KW_UNION: return union_block(e, b, out);
+	case KW_OBJECT: return object_statement(e, b, out);
+	case KW_MESH: return mesh(e, b, out);
+	case KW_MESH2: return mesh2(e, b, out);
+	case KW_LIGHT_SOURCE: return eval_light(e, b, out);
+	case KW_UNKNOWN: return unsupported(e, b, out);
+	default: return shape(e, b, out);
+	}
+}
+
+/* Puts an object (and the lights in it) into the scene. */
+void eval_place(struct eval *e, value *v)
+{
+	struct objval *o = v->obj;
+	resolve_texture(o);
+	if (o->unsupported) {
+		if (!e->opt->skip_unsupported) {
+			eval_error(e, o->unsupported_loc, "'%s' is not supported yet", o->unsupported);
+			return;
+		}
+		eval_warning(e, o->unsupported_loc, "'%s' is not supported yet; left out", o->unsupported);
+	}
+	for (int i = 0; i < o->n_lights; i++) {
+		struct lightval *l = &o->lights[i];
+		l->light.looks_like = l->n_looks ? e->s->n_objects : -1;
+		for (int k = 0; k < l->n_looks; k++) {
+			l->looks[k].flags |= OBJ_NO_SHADOW;
+			scene_add_object(e->s, &l->looks[k]);
+		}
+		scene_add_light(e->s, &l->light);
+	}
+	for (int i = 0; i < o->n_objs; i++)
+		scene_add_object(e->s, &o->objs[i]);
+}
+
+/* The objects of a looks_like { OBJECT }: moved to the light, as POV-Ray does. */
+int eval_looks_like(struct eval *e, const ast_node *b, const double at[3], struct lightval *l)
+{
+	struct cursor c;
+	int err = 0;
+	eval_cursor_init(&c, e, b);
+	const ast_node *item = eval_next(&c, &err);
+	value v = { .kind = V_NONE };
+	int rc = -1;
+	if (item && eval_is_object_block(item))
+		rc = eval_object(e, item, &v);
+	else if (item && AST_IS_EXPRESSION(item->kind))
+		rc = eval_expr(e, item, &v) || v.kind != V_OBJECT ? eval_not_valid(e, item, "looks_like") : 0;
+	else if (!err)
+		eval_error(e, item ? item->loc : b->loc, "looks_like needs an object");
+	if (rc == 0 && (item = eval_next(&c, &err)) != NULL)
+		rc = eval_not_valid(e, item, "looks_like (one object)");
+	eval_cursor_free(&c);
+	if (rc || err) {
+		eval_value_free(&v);
+		return -1;
+	}
+	resolve_texture(v.obj);
+	xform t = scene_xform_translate(at);
+	transform_objval(v.obj, &t);
+	free(l->looks);
+	l->looks = v.obj->objs;
+	l->n_looks = v.obj->n_objs;
+	v.obj->objs = NULL;
+	v.obj->n_objs = 0;
+	eval_value_free(&v);
+	return 0;
+}
+
+/* Transformations of a light: the same as for an object. */
+void eval_transform_light(struct lightval *l, const xform *t)
+{
+	transform_light(l, t);
+}

@@ -1,0 +1,669 @@
+/* eval_world.c: the statements of a scene: camera, light sources, background,
+ * sky_sphere, global_settings; the values of blocks and arrays; the words of
+ * POV-Ray eclat knows but cannot do. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "eval_int.h"
+
+/* ---- POV-Ray's words ---- */
+
+/* Words of POV-Ray 3.7 that are not eclat keywords: an object type eclat cannot
+ * render, a statement, or something else (a modifier, a setting). */
+const char *eval_pov_word(const char *name)
+{
+	static const char *const objects[] = {
+		"bicubic_patch", "blob", "cone", "cubic", "cylinder", "difference", "disc", "height_field",
+		"intersection", "isosurface", "julia_fractal", "lathe", "light_group", "merge", "ovus",
+		"parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
+		"sphere_sweep", "superellipsoid", "text", "torus",
+	};
+	static const char *const statements[] = { "fog", "rainbow", "media" };
+	static const char *const others[] = {
+		"albedo", "area_illumination", "bump_map", "charset", "density", "density_map", "hf_gray_16",
+		"image_map", "image_pattern", "interior_texture", "irid", "irid_wavelength", "material_map",
+		"max_intersections", "media_attenuation", "media_interaction", "mm_per_unit", "no_radiosity",
+		"noise_generator", "number_of_waves", "photons", "pigment_pattern", "projected_through",
+		"quick_color", "quick_colour", "radiosity", "slope_map", "spline", "subsurface", "tiles", "warp",
+		"function", "pattern",
+	};
+	for (size_t i = 0; i < sizeof objects / sizeof *objects; i++)
+		if (strcmp(objects[i], name) == 0)
+			return "object";
+	for (size_t i = 0; i < sizeof statements / sizeof *statements; i++)
+		if (strcmp(statements[i], name) == 0)
+			return "statement";
+	for (size_t i = 0; i < sizeof others / sizeof *others; i++)
+		if (strcmp(others[i], name) == 0)
+			return "other";
+	return NULL;
+}
+
+/* The block keyword closest to a misspelt one. */
+static const char *near_keyword(const char *name)
+{
+	static const int blocks[] = {
+		KW_BACKGROUND, KW_BOX, KW_CAMERA, KW_FINISH, KW_GLOBAL_SETTINGS, KW_INTERIOR, KW_LIGHT_SOURCE,
+		KW_MATERIAL, KW_MESH, KW_NORMAL, KW_OBJECT, KW_PIGMENT, KW_PLANE, KW_SKY_SPHERE, KW_SMOOTH_TRIANGLE,
+		KW_SPHERE, KW_TEXTURE, KW_TRIANGLE, KW_UNION, KW_COLOR_MAP, KW_TRANSFORM,
+	};
+	for (size_t i = 0; i < sizeof blocks / sizeof *blocks; i++) {
+		const char *k = ast_keyword_name(blocks[i]);
+		size_t lk = strlen(k), ln = strlen(name), same = 0;
+		if (lk + 2 < ln || ln + 2 < lk)
+			continue;
+		for (size_t j = 0; j < ln && j < lk; j++)
+			same += name[j] == k[j];
+		size_t common = 0;
+		while (common < ln && common < lk && name[common] == k[common])
+			common++;
+		if (common >= 3 && (same + 2 >= lk || same + 2 >= ln))
+			return k;
+	}
+	return NULL;
+}
+
+static void unknown_block(struct eval *e, const ast_node *b)
+{
+	const char *near;
+	if (eval_pov_word(b->str))
+		eval_error(e, b->loc, "'%s' is not supported yet", b->str);
+	else if ((near = near_keyword(b->str)) != NULL)
+		eval_error(e, b->loc, "unknown keyword '%s'; did you mean '%s'?", b->str, near);
+	else
+		eval_error(e, b->loc, "unknown keyword '%s'", b->str);
+}
+
+int eval_not_valid(struct eval *e, const ast_node *item, const char *where)
+{
+	if (item->kind == AST_IDENT && eval_pov_word(item->str) && !eval_lookup(e, item->str))
+		eval_error(e, item->loc, "'%s' is not supported yet", item->str);
+	else if (AST_IS_EXPRESSION(item->kind))
+		eval_error(e, item->loc, "unexpected expression in %s", where);
+	else if (item->kind == AST_ENTRY)
+		eval_error(e, item->loc, "unexpected map entry [...] in %s", where);
+	else if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN)
+		unknown_block(e, item);
+	else if (item->kind == AST_FUNCTION || item->kind == AST_ARRAY)
+		eval_error(e, item->loc, "unexpected %s in %s", item->kind == AST_FUNCTION ? "function" : "array", where);
+	else
+		eval_error(e, item->loc, "'%s' is not valid in %s", ast_keyword_name(item->kw), where);
+	return -1;
+}
+
+/* ---- camera ---- */
+
+struct camera_items {
+	scene_camera c;
+	double sky[3], look_at[3], angle;
+	bool has_look_at;
+	xform t;
+};
+
+static int camera_vector(struct eval *e, const ast_node *item, struct camera_items *ci)
+{
+	double *dst;
+	switch (item->kw) {
+	case KW_LOCATION: dst = ci->c.location; break;
+	case KW_DIRECTION: dst = ci->c.direction; break;
+	case KW_RIGHT: dst = ci->c.right; break;
+	case KW_UP: dst = ci->c.up; break;
+	case KW_SKY: dst = ci->sky; break;
+	case KW_LOOK_AT: dst = ci->look_at; ci->has_look_at = true; break;
+	case KW_FOCAL_POINT: dst = ci->c.focal_point; break;
+	default: return 1;
+	}
+	return eval_expect_vector(e, item->kids[0], dst);
+}
+
+static int camera_float(struct eval *e, struct cursor *c, const ast_node *item, struct camera_items *ci)
+{
+	double f;
+	int err = 0;
+	switch (item->kw) {
+	case KW_ANGLE:
+		if (eval_expect_float(e, item->kids[0], &ci->angle))
+			return -1;
+		if (ci->angle <= 0 || ci->angle >= 180) {
+			eval_error(e, item->kids[0]->loc, "camera angle must be between 0 and 180 degrees");
+			return -1;
+		}
+		if (eval_next_expr(c, &err))   /* a vertical angle: for camera types eclat has not */
+			eval_warn_once(e, item->loc, "vertical angle", "a second camera angle is ignored");
+		return err ? -1 : 0;
+	case KW_APERTURE:
+		return eval_expect_float(e, item->kids[0], &ci->c.aperture);
+	case KW_BLUR_SAMPLES:
+		if (eval_expect_float(e, item->kids[0], &f))
+			return -1;
+		ci->c.blur_samples = f < 1 ? 1 : f > 1e6 ? 1000000 : (int)f;
+		if (eval_next_expr(c, &err))   /* blur_samples Min, Max */
+			eval_warn_once(e, item->loc, "blur_samples max", "the second number of blur_samples is ignored");
+		return err ? -1 : 0;
+	default:
+		return 1;
+	}
+}
+
+static int camera_item(struct eval *e, struct cursor *c, const ast_node *item, struct camera_items *ci, bool first)
+{
+	int rc = eval_transform_item(e, c, item, &ci->t);
+	if (rc != 0)
+		return rc < 0 ? -1 : 0;
+	if (AST_IS_EXPRESSION(item->kind) && first) {
+		value v;
+		if (eval_expr(e, item, &v))
+			return -1;
+		if (v.kind != V_CAMERA) {
+			eval_error(e, item->loc, "expected a camera, found %s", eval_kind_name(v.kind));
+			eval_value_free(&v);
+			return -1;
+		}
+		ci->c = *v.cam;
+		eval_value_free(&v);
+		return 0;
+	}
+	if (item->kind == AST_FLAG && item->kw == KW_PERSPECTIVE)
+		return 0;
+	if (item->kind == AST_FLAG && (item->kw == KW_ORTHOGRAPHIC || item->kw == KW_FISHEYE ||
+	    item->kw == KW_ULTRA_WIDE_ANGLE || item->kw == KW_OMNIMAX || item->kw == KW_PANORAMIC ||
+	    item->kw == KW_SPHERICAL)) {
+		eval_error(e, item->loc, "the %s camera is not supported yet", ast_keyword_name(item->kw));
+		return -1;
+	}
+	if (item->kind == AST_ARG && (rc = camera_vector(e, item, ci)) <= 0)
+		return rc;
+	if (item->kind == AST_ARG && (rc = camera_float(e, c, item, ci)) <= 0)
+		return rc;
+	if (item->kind == AST_BLOCK && item->kw == KW_NORMAL)
+		return eval_material_block(e, item, NULL);
+	return eval_not_valid(e, item, "a camera");
+}
+
+/* POV-Ray 3.7's order, whatever the order in the file: the vectors, then angle,
+ * then look_at, then the transformations. */
+static int camera_finish(struct eval *e, const ast_node *b, struct camera_items *ci)
+{
+	scene_camera *c = &ci->c;
+	if (ci->angle > 0) {
+		double dl = sqrt(c->direction[0] * c->direction[0] + c->direction[1] * c->direction[1] +
+		                 c->direction[2] * c->direction[2]);
+		double rl = sqrt(c->right[0] * c->right[0] + c->right[1] * c->right[1] + c->right[2] * c->right[2]);
+		double want = rl / tan(ci->angle * M_PI / 360.0) / 2.0;
+		for (int k = 0; k < 3 && dl > 0; k++)
+			c->direction[k] *= want / dl;
+	}
+	if (ci->has_look_at && scene_camera_look_at(c, ci->look_at, ci->sky) != 0) {
+		eval_error(e, b->loc, "camera location and look_at point must be different");
+		return -1;
+	}
+	scene_xform_point(&ci->t, c->location, c->location);
+	scene_xform_vector(&ci->t, c->direction, c->direction);
+	scene_xform_vector(&ci->t, c->right, c->right);
+	scene_xform_vector(&ci->t, c->up, c->up);
+	return 0;
+}
+
+/* camera { [CAMERA_IDENTIFIER] [perspective] [location <L>] [direction <D>] [right <R>]
+ *          [up <U>] [sky <S>] [angle A] [look_at <P>] [aperture F] [focal_point <P>]
+ *          [blur_samples N] [TRANSFORMATIONS...] } */
+int eval_camera(struct eval *e, const ast_node *b, scene_camera *out)
+{
+	struct camera_items ci = { .c = scene_default_camera(), .sky = { 0, 1, 0 }, .angle = -1,
+	                           .t = scene_xform_identity() };
+	ci.c.loc = b->loc;
+	ci.c.blur_samples = 0;
+	struct cursor c;
+	int err = 0, rc = 0;
+	bool first = true;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		rc = camera_item(e, &c, item, &ci, first);
+		first = false;
+	}
+	eval_cursor_free(&c);
+	if (rc || err || camera_finish(e, b, &ci))
+		return -1;
+	*out = ci.c;
+	return 0;
+}
+
+/* ---- light sources ---- */
+
+static int light_args(struct eval *e, struct cursor *c, const ast_node *b, struct lightval *l)
+{
+	int err = 0;
+	double col[5];
+	const ast_node *pos = eval_next_expr(c, &err), *color = pos ? eval_next_expr(c, &err) : NULL;
+	if (!color) {
+		if (!err)
+			eval_error(e, b->loc, "light_source needs a location and a colour");
+		return -1;
+	}
+	if (eval_expect_vector(e, pos, l->light.position) || eval_expect_color(e, color, col))
+		return -1;
+	for (int i = 0; i < 3; i++)
+		l->light.color[i] = (float)col[i];
+	return 0;
+}
+
+/* area_light <Axis1>, <Axis2>, Size1, Size2 */
+static int area_light(struct eval *e, struct cursor *c, const ast_node *item, scene_light *l)
+{
+	int err = 0;
+	const ast_node *a2 = eval_next_expr(c, &err), *s1 = a2 ? eval_next_expr(c, &err) : NULL,
+	               *s2 = s1 ? eval_next_expr(c, &err) : NULL;
+	if (!s2) {
+		if (!err)
+			eval_error(e, item->loc, "area_light needs <Axis1>, <Axis2>, Size1, Size2");
+		return -1;
+	}
+	double f1, f2;
+	if (eval_expect_vector(e, item->kids[0], l->axis1) || eval_expect_vector(e, a2, l->axis2) ||
+	    eval_expect_float(e, s1, &f1) || eval_expect_float(e, s2, &f2))
+		return -1;
+	if (f1 < 1 || f2 < 1 || f1 > 1e4 || f2 > 1e4) {
+		eval_error(e, f1 < 1 || f1 > 1e4 ? s1->loc : s2->loc, "an area_light has 1 to 10000 lights along each axis");
+		return -1;
+	}
+	l->area = true;
+	l->size1 = (int)f1;
+	l->size2 = (int)f2;
+	return 0;
+}
+
+static int light_arg(struct eval *e, struct cursor *c, const ast_node *item, scene_light *l)
+{
+	double f;
+	switch (item->kw) {
+	case KW_POINT_AT: return eval_expect_vector(e, item->kids[0], l->point_at);
+	case KW_AREA_LIGHT: return area_light(e, c, item, l);
+	case KW_ADAPTIVE:
+		if (eval_expect_float(e, item->kids[0], &f))
+			return -1;
+		l->adaptive = f < 0 ? 0 : f > 100 ? 100 : (int)f;
+		return 0;
+	case KW_RADIUS: case KW_FALLOFF: case KW_TIGHTNESS: case KW_FADE_DISTANCE: case KW_FADE_POWER:
+		if (eval_expect_float(e, item->kids[0], &f))
+			return -1;
+		*(item->kw == KW_RADIUS ? &l->radius : item->kw == KW_FALLOFF ? &l->falloff
+		  : item->kw == KW_TIGHTNESS ? &l->tightness : item->kw == KW_FADE_DISTANCE ? &l->fade_distance
+		  : &l->fade_power) = (float)f;
+		return 0;
+	default:
+		return 1;
+	}
+}
+
+static int light_flag(struct eval *e, const ast_node *item, scene_light *l)
+{
+	switch (item->kw) {
+	case KW_SPOTLIGHT: l->kind = LIGHT_SPOT; return 0;
+	case KW_PARALLEL:
+		if (l->kind == LIGHT_SPOT)
+			eval_warn_once(e, item->loc, "parallel spotlight", "a parallel spotlight is not supported yet; "
+			               "it stays a spotlight");
+		else
+			l->kind = LIGHT_PARALLEL;
+		return 0;
+	case KW_JITTER: l->jitter = true; return 0;
+	case KW_CIRCULAR: l->circular = true; return 0;
+	case KW_ORIENT: l->orient = true; return 0;
+	case KW_SHADOWLESS: l->shadowless = true; return 0;
+	default: return 1;
+	}
+}
+
+static int light_item(struct eval *e, struct cursor *c, const ast_node *item, struct lightval *l)
+{
+	xform t = scene_xform_identity();
+	int rc = eval_transform_item(e, c, item, &t);
+	if (rc > 0)
+		eval_transform_light(l, &t);
+	if (rc != 0)
+		return rc < 0 ? -1 : 0;
+	if (item->kind == AST_ARG && (rc = light_arg(e, c, item, &l->light)) <= 0)
+		return rc;
+	if (item->kind == AST_FLAG && (rc = light_flag(e, item, &l->light)) <= 0)
+		return rc;
+	if (item->kind == AST_BLOCK && item->kw == KW_LOOKS_LIKE)
+		return eval_looks_like(e, item, l->light.position, l);
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str) &&
+	    strcmp(eval_pov_word(item->str), "object") != 0) {
+		eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
+		return 0;
+	}
+	return eval_not_valid(e, item, "a light_source");
+}
+
+/* light_source { <Location>, COLOR [spotlight] [parallel] [point_at <P>] [radius F]
+ *   [falloff F] [tightness F] [area_light <A1>, <A2>, N1, N2] [adaptive N] [jitter]
+ *   [circular] [orient] [shadowless] [fade_distance F] [fade_power F]
+ *   [looks_like { OBJECT }] [TRANSFORMATIONS...] } */
+int eval_light(struct eval *e, const ast_node *b, value *out)
+{
+	struct lightval l = { .light = scene_default_light() };
+	l.light.loc = b->loc;
+	struct cursor c;
+	int err = 0, rc;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	rc = light_args(e, &c, b, &l);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL)
+		rc = light_item(e, &c, item, &l);
+	eval_cursor_free(&c);
+	if (rc == 0 && !err && l.light.circular && l.light.area && (l.light.size1 <= 1 || l.light.size2 <= 1)) {
+		eval_error(e, b->loc, "a circular area_light needs more than 1 light along each axis");
+		rc = -1;
+	}
+	if (rc || err) {
+		free(l.looks);
+		return -1;
+	}
+	*out = (value){ .kind = V_OBJECT, .obj = eval_objval_new(b->loc) };
+	eval_objval_add_light(out->obj, &l);
+	return 0;
+}
+
+/* ---- background, sky_sphere, global_settings ---- */
+
+/* background { COLOR } */
+static int background(struct eval *e, const ast_node *b)
+{
+	struct cursor c;
+	int err = 0, rc = 0;
+	double col[5];
+	eval_cursor_init(&c, e, b);
+	const ast_node *item = eval_next(&c, &err), *more = NULL;
+	if (!item || !AST_IS_EXPRESSION(item->kind)) {
+		if (!err)
+			eval_error(e, item ? item->loc : b->loc, "background needs one colour");
+		rc = -1;
+	} else if ((rc = eval_expect_color(e, item, col)) == 0 && (more = eval_next(&c, &err)) != NULL) {
+		rc = eval_not_valid(e, more, "a background");
+	}
+	eval_cursor_free(&c);
+	if (rc || err)
+		return -1;
+	for (int i = 0; i < 3; i++)
+		e->s->background[i] = (float)col[i];
+	return 0;
+}
+
+/* sky_sphere { [SKY_SPHERE_IDENTIFIER] [PIGMENT...] [emission COLOR] [TRANSFORMATIONS...] }:
+ * eclat's sky is one colour, the average of the first pigment. */
+static int sky_sphere(struct eval *e, const ast_node *b, value *out)
+{
+	struct cursor c;
+	int err = 0, rc = 0, pigments = 0;
+	scene_material m = e->default_mat;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		xform t = scene_xform_identity();
+		value v;
+		if (AST_IS_EXPRESSION(item->kind) && pigments == 0) {
+			if ((rc = eval_expr(e, item, &v)) == 0 && (v.kind != V_OTHER || strcmp(v.str, "sky_sphere") != 0))
+				rc = eval_not_valid(e, item, "a sky_sphere");
+			else if (rc == 0)
+				m = v.mat, pigments++;
+			eval_value_free(&v);
+		} else if (item->kind == AST_BLOCK && item->kw == KW_PIGMENT) {
+			if (pigments++ == 0)
+				rc = eval_material_block(e, item, &m);
+			else
+				eval_warn_once(e, item->loc, "sky_sphere layers",
+				               "the pigments of a sky_sphere after the first are not supported yet; ignored");
+		} else if (item->kind == AST_ARG && item->kw == KW_EMISSION) {
+			rc = eval_expect_color(e, item->kids[0], (double[5]){ 0 });
+		} else if ((rc = eval_transform_item(e, &c, item, &t)) == 0) {
+			rc = eval_not_valid(e, item, "a sky_sphere");
+		} else {
+			rc = rc < 0 ? -1 : 0;
+		}
+	}
+	eval_cursor_free(&c);
+	if (rc || err)
+		return -1;
+	*out = (value){ .kind = V_OTHER, .str = eval_xstrdup("sky_sphere"), .mat = m };
+	return 0;
+}
+
+static int global_arg(struct eval *e, const ast_node *item)
+{
+	double f;
+	float *c3 = NULL;
+	switch (item->kw) {
+	case KW_ASSUMED_GAMMA: case KW_ADC_BAILOUT: case KW_MAX_TRACE_LEVEL:
+		if (eval_expect_float(e, item->kids[0], &f))
+			return -1;
+		break;
+	case KW_AMBIENT_LIGHT:
+		c3 = e->s->ambient_light;
+		break;
+	default:
+		return eval_not_valid(e, item, "global_settings");
+	}
+	if (c3) {
+		double col[5];
+		if (eval_expect_color(e, item->kids[0], col))
+			return -1;
+		for (int i = 0; i < 3; i++)
+			c3[i] = (float)col[i];
+		return 0;
+	}
+	if (item->kw == KW_MAX_TRACE_LEVEL && (f < 1 || f > 256)) {
+		eval_error(e, item->kids[0]->loc, "max_trace_level must be between 1 and 256");
+		return -1;
+	}
+	if (item->kw == KW_ASSUMED_GAMMA && f <= 0) {
+		eval_error(e, item->kids[0]->loc, "assumed_gamma must be greater than 0");
+		return -1;
+	}
+	if (item->kw == KW_MAX_TRACE_LEVEL)
+		e->s->max_trace_level = (int)f;
+	else if (item->kw == KW_ASSUMED_GAMMA)
+		e->s->assumed_gamma = (float)f;
+	else
+		e->s->adc_bailout = (float)f;
+	return 0;
+}
+
+/* global_settings { [assumed_gamma F] [max_trace_level N] [adc_bailout F]
+ *                   [ambient_light COLOR] }: POV-Ray's other settings are ignored. */
+static int global_settings(struct eval *e, const ast_node *b)
+{
+	struct cursor c;
+	int err = 0, rc = 0;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		const char *w = item->kind == AST_IDENT || (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN)
+		              ? eval_pov_word(item->str) : NULL;
+		if (w && !(item->kind == AST_IDENT && eval_lookup(e, item->str))) {
+			eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
+			const ast_node *arg;
+			while (item->kind == AST_IDENT && (arg = eval_next_expr(&c, &err)) != NULL)
+				;   /* its value */
+		} else if (item->kind == AST_ARG) {
+			rc = global_arg(e, item);
+		} else {
+			rc = eval_not_valid(e, item, "global_settings");
+		}
+	}
+	eval_cursor_free(&c);
+	return rc || err ? -1 : 0;
+}
+
+/* ---- values of blocks and arrays ---- */
+
+static int array_init(struct eval *e, const ast_node *init, struct array *a, int dim, int *at)
+{
+	if (init->n_kids != a->size[dim]) {
+		eval_error(e, init->loc, "the initialiser has %d element%s, the array's dimension %d has %d", init->n_kids,
+		           init->n_kids == 1 ? "" : "s", dim + 1, a->size[dim]);
+		return -1;
+	}
+	for (int i = 0; i < init->n_kids; i++) {
+		const ast_node *k = init->kids[i];
+		if (dim + 1 < a->dims) {
+			if (k->kind != AST_INIT) {
+				eval_error(e, k->loc, "expected { ... } for dimension %d", dim + 2);
+				return -1;
+			}
+			if (array_init(e, k, a, dim + 1, at))
+				return -1;
+			continue;
+		}
+		if (k->kind == AST_INIT) {
+			eval_error(e, k->loc, "the array has %d dimension%s", a->dims, a->dims == 1 ? "" : "s");
+			return -1;
+		}
+		value *v = &a->elems[(*at)++];
+		if (AST_IS_EXPRESSION(k->kind) ? eval_expr(e, k, v) : eval_block_value(e, k, v))
+			return -1;
+	}
+	return 0;
+}
+
+#define MAX_ARRAY_ELEMENTS 50000000
+
+/* array[N1][N2]... [{ INITIALISERS }] */
+static int array(struct eval *e, const ast_node *n, value *out)
+{
+	const ast_node *dims = n->kids[0];
+	struct array a = { .dims = dims->n_kids, .n = 1 };
+	if (a.dims > 5) {
+		eval_error(e, n->loc, "an array has at most 5 dimensions");
+		return -1;
+	}
+	for (int i = 0; i < a.dims; i++) {
+		if (eval_expect_int(e, dims->kids[i], &a.size[i]))
+			return -1;
+		if (a.size[i] < 1 || a.size[i] > MAX_ARRAY_ELEMENTS / a.n) {
+			eval_error(e, dims->kids[i]->loc, "an array dimension of %d (an array holds 1 to %d elements)",
+			           a.size[i], MAX_ARRAY_ELEMENTS);
+			return -1;
+		}
+		a.n *= a.size[i];
+	}
+	a.elems = calloc(a.n, sizeof *a.elems);
+	if (!a.elems)
+		eval_xrealloc(NULL, (size_t)-1 / 2);
+	*out = (value){ .kind = V_ARRAY, .arr = eval_xrealloc(NULL, sizeof a) };
+	*out->arr = a;
+	int at = 0;
+	if (n->n_kids > 1 && array_init(e, n->kids[1], out->arr, 0, &at)) {
+		eval_value_free(out);
+		return -1;
+	}
+	return 0;
+}
+
+static int transform_value(struct eval *e, const ast_node *b, value *out)
+{
+	*out = (value){ .kind = V_TRANSFORM, .xf = scene_xform_identity() };
+	ast_node item = { .kind = AST_BLOCK, .kw = KW_TRANSFORM, .loc = b->loc, .kids = b->kids, .n_kids = b->n_kids };
+	xform t = scene_xform_identity();
+	int rc = eval_transform_item(e, NULL, &item, &t);
+	out->xf = t;
+	return rc < 0 ? -1 : 0;
+}
+
+int eval_block_value(struct eval *e, const ast_node *b, value *out)
+{
+	*out = (value){ .kind = V_NONE };
+	if (b->kind == AST_FUNCTION) {
+		*out = (value){ .kind = V_FUNCTION, .node = b };
+		return 0;
+	}
+	if (b->kind == AST_ARRAY)
+		return array(e, b, out);
+	if (b->kind != AST_BLOCK)
+		return eval_not_valid(e, b, "a value");
+	if (eval_is_object_block(b))
+		return eval_object(e, b, out);
+	switch (b->kw) {
+	case KW_PIGMENT: case KW_FINISH: case KW_TEXTURE: case KW_NORMAL: case KW_INTERIOR: case KW_MATERIAL:
+	case KW_COLOR_MAP: case KW_COLOUR_MAP: case KW_PIGMENT_MAP: case KW_TEXTURE_MAP: case KW_NORMAL_MAP:
+		return eval_material_value(e, b, out);
+	case KW_TRANSFORM:
+		return transform_value(e, b, out);
+	case KW_CAMERA: {
+		scene_camera c;
+		if (eval_camera(e, b, &c))
+			return -1;
+		*out = (value){ .kind = V_CAMERA, .cam = eval_xrealloc(NULL, sizeof c) };
+		*out->cam = c;
+		return 0;
+	}
+	case KW_SKY_SPHERE:
+		return sky_sphere(e, b, out);
+	case KW_UNKNOWN:
+		if (strcmp(b->str, "layers") == 0)
+			return eval_material_value(e, b, out);
+		if (eval_pov_word(b->str)) {   /* declared, for a use eclat will refuse */
+			*out = (value){ .kind = V_OTHER, .str = eval_xstrdup(b->str) };
+			return 0;
+		}
+		return eval_not_valid(e, b, "a #declare");
+	default:
+		eval_error(e, b->loc, "%s cannot be declared", ast_keyword_name(b->kw));
+		return -1;
+	}
+}
+
+/* ---- statements ---- */
+
+static int place_object(struct eval *e, const ast_node *b)
+{
+	value v;
+	if (eval_object(e, b, &v))
+		return -1;
+	eval_place(e, &v);
+	eval_value_free(&v);
+	return 0;
+}
+
+static int statement_block(struct eval *e, const ast_node *b)
+{
+	value v;
+	switch (b->kw) {
+	case KW_CAMERA: return eval_camera(e, b, &e->s->camera);
+	case KW_BACKGROUND: return background(e, b);
+	case KW_GLOBAL_SETTINGS: return global_settings(e, b);
+	case KW_SKY_SPHERE:
+		if (sky_sphere(e, b, &v))
+			return -1;
+		e->s->has_sky = true;
+		for (int i = 0; i < 3; i++)
+			e->s->sky[i] = v.mat.pigment[i];
+		eval_value_free(&v);
+		return 0;
+	default:
+		break;
+	}
+	if (eval_is_object_block(b))
+		return place_object(e, b);
+	if (b->kw == KW_UNKNOWN && eval_pov_word(b->str)) {
+		eval_warn_once(e, b->loc, b->str, "'%s' is not supported yet; ignored", b->str);
+		return 0;
+	}
+	return eval_not_valid(e, b, "the scene (expected an object, camera, light_source or directive)");
+}
+
+int eval_scene_statement(struct eval *e, const ast_node *item)
+{
+	if (item->kind == AST_BLOCK)
+		return statement_block(e, item);
+	if (item->kind == AST_CALL) {   /* not a macro: say why */
+		value v;
+		if (eval_expr(e, item, &v))
+			return -1;
+		eval_value_free(&v);
+	}
+	return eval_not_valid(e, item, "the scene (expected an object, camera, light_source or directive)");
+}
