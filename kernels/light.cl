@@ -124,7 +124,7 @@ inline float light_pdf(global const dev_emitter *em, global const dev_prim *prim
 		float3 nl = normalize(x + t * wi - c);
 		return e->pdf * t * t / (e->area * fabs(dot(nl, wi)));
 	}
-	float3 nl = normalize(cross(prim->b.xyz, prim->c.xyz));
+	float3 nl = normalize(cross(prim->b.xyz - prim->a.xyz, prim->c.xyz - prim->a.xyz));
 	float cos_l = fabs(dot(nl, wi));
 	return cos_l > 0.0f ? e->pdf * t * t / (e->area * cos_l) : 0.0f;
 }
@@ -165,7 +165,7 @@ inline float3 light_emitters(global const bvh_node *nodes, global const dev_prim
 		wi = normalize(pos - x);
 	} else {
 		float su = sqrt(u1);
-		pos = prim->a.xyz + su * (1.0f - u2) * prim->b.xyz + su * u2 * prim->c.xyz;
+		pos = (1.0f - su) * prim->a.xyz + su * (1.0f - u2) * prim->b.xyz + su * u2 * prim->c.xyz;
 		wi = normalize(pos - x);
 	}
 	float dist = length(pos - x);

@@ -36,7 +36,8 @@ enum {
  * primitives in world space and one instance per placed mesh; each mesh has a
  * BVH of its own over its triangles in object space, stored once however many
  * times it is placed.
- * Triangle: a = v0, b = v1 - v0, c = v2 - v0 (the Moller-Trumbore edges);
+ * Triangle: a, b, c = its corners, as given: neighbours must see bit-identical
+ *   shared corners for the watertight test;
  *   link: index into the emitter table when it emits (top level only), else -1.
  * Smooth triangle: as a triangle; link: its three normals in the normals buffer.
  * Sphere: a.xyz = centre, a.w = radius; link as for a triangle.

@@ -165,7 +165,7 @@ static void add_triangle_to(struct lowering *lw, struct prim_list *list, const d
 			diag_warning(loc, "triangle with no area skipped");
 		return;
 	}
-	dev_prim p = { .a = f4(v[0], 0), .b = f4(e1, 0), .c = f4(e2, 0), .type = PRIM_TRIANGLE,
+	dev_prim p = { .a = f4(v[0], 0), .b = f4(v[1], 0), .c = f4(v[2], 0), .type = PRIM_TRIANGLE,
 	               .material = material, .object = object, .link = -1 };
 	if (normals) {
 		p.type = PRIM_SMOOTH_TRIANGLE;
@@ -367,7 +367,8 @@ static int lower_mesh_once(struct lowering *lw, const scene *s, int index)
 		for (int k = 0; k < 3 && smooth; k++)
 			memcpy(n[k], m->nrm[m->face_nrm[f][k]], sizeof n[k]);
 		int fm = m->face_mat && m->face_mat[f] >= 0 && m->face_mat[f] < m->n_mats ? first_mat + m->face_mat[f] : -1;
-		add_triangle_to(lw, &lm->prims, v, smooth ? (const double (*)[3])n : NULL, fm, -1, m->loc);
+		/* object: the face, for tests and debugging; surfaces take the instance's */
+		add_triangle_to(lw, &lm->prims, v, smooth ? (const double (*)[3])n : NULL, fm, f, m->loc);
 	}
 	lm->stats = (lower_bvh_stats){ .mesh = index, .loc = m->loc };
 	if (lm->prims.n == 0 || build_tree(lw, &lm->prims, &lm->bvh, &lm->stats)) {
@@ -494,8 +495,10 @@ static void lower_emitters(lower_result *r)
 		if (p->type == PRIM_SPHERE) {
 			area = 4 * M_PI * p->a.w * p->a.w;
 		} else {
-			double cx = p->b.y * p->c.z - p->b.z * p->c.y, cy = p->b.z * p->c.x - p->b.x * p->c.z,
-			       cz = p->b.x * p->c.y - p->b.y * p->c.x;
+			double e1[3] = { p->b.x - p->a.x, p->b.y - p->a.y, p->b.z - p->a.z };
+			double e2[3] = { p->c.x - p->a.x, p->c.y - p->a.y, p->c.z - p->a.z };
+			double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
+			       cz = e1[0] * e2[1] - e1[1] * e2[0];
 			area = 0.5 * sqrt(cx * cx + cy * cy + cz * cz);
 		}
 		p->link = r->n_emitters;
@@ -588,8 +591,8 @@ static bvh_box prim_box(const struct lowering *lw, const dev_prim *p)
 		return b;
 	}
 	float v[3][3] = { { p->a.x, p->a.y, p->a.z },
-	                  { p->a.x + p->b.x, p->a.y + p->b.y, p->a.z + p->b.z },
-	                  { p->a.x + p->c.x, p->a.y + p->c.y, p->a.z + p->c.z } };
+	                  { p->b.x, p->b.y, p->b.z },
+	                  { p->c.x, p->c.y, p->c.z } };
 	for (int k = 0; k < 3; k++) {
 		b.min[k] = fminf(v[0][k], fminf(v[1][k], v[2][k]));
 		b.max[k] = fmaxf(v[0][k], fmaxf(v[1][k], v[2][k]));
