@@ -315,6 +315,17 @@ static int write_aovs(const struct options *o, const film *f)
 	int rc = rgb ? 0 : -1;
 	for (int i = 0; rc == 0 && i < o->n_aovs; i++) {
 		struct output out = { o->aov_file[i], o->scene };
+		if (strcmp(o->aov_name[i], "heat") == 0) {
+			image_meta meta = { o->scene, f->samples };
+			char err[512];
+			double mean;
+			rc = image_write_heat(out.path, f->heat, f->width, f->height, &meta, &mean, err, sizeof err);
+			if (rc)
+				fprintf(stderr, "eclat: %s\n", err);
+			else if (!o->quiet)
+				fprintf(stderr, "eclat: heat map: %.1f BVH tests per camera ray (per pixel per sample) on average\n", mean);
+			continue;
+		}
 		film view = *f;
 		view.rgb = rgb;
 		rc = film_aov(f, o->aov_name[i], rgb) || write_film(&view, &out);
