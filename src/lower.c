@@ -541,15 +541,22 @@ static void *xmalloc(size_t n)
 	return p;
 }
 
+/* The local-to-world map of an ellipsoid or instance, whose rows hold the inverse. */
+static xform local_to_world(const dev_prim *p)
+{
+	xform to_local, to_world;
+	const float4 *rows[3] = { &p->a, &p->b, &p->c };
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 4; j++)
+			to_local.m[i][j] = ((const float *)rows[i])[j];
+	invert(&to_local, &to_world);
+	return to_world;
+}
+
 /* The world box of an instance: the mesh's box with its eight corners moved. */
 static bvh_box world_box(const dev_prim *inst, const float box[2][3])
 {
-	xform to_mesh, to_world;
-	const float4 *rows[3] = { &inst->a, &inst->b, &inst->c };
-	for (int i = 0; i < 3; i++)
-		for (int j = 0; j < 4; j++)
-			to_mesh.m[i][j] = ((const float *)rows[i])[j];
-	invert(&to_mesh, &to_world);
+	xform to_world = local_to_world(inst);
 	bvh_box b = { { 1e30f, 1e30f, 1e30f }, { -1e30f, -1e30f, -1e30f } };
 	for (int c = 0; c < 8; c++) {
 		double p[3] = { box[c & 1][0], box[(c >> 1) & 1][1], box[(c >> 2) & 1][2] }, w[3];
@@ -576,12 +583,7 @@ static bvh_box prim_box(const struct lowering *lw, const dev_prim *p)
 	if (p->type == PRIM_INSTANCE)   /* link is still the mesh's index here */
 		return world_box(p, lw->meshes[p->link].box);
 	if (p->type == PRIM_ELLIPSOID) {   /* the box of the image of the unit sphere */
-		xform to_unit, to_world;
-		const float4 *rows[3] = { &p->a, &p->b, &p->c };
-		for (int i = 0; i < 3; i++)
-			for (int j = 0; j < 4; j++)
-				to_unit.m[i][j] = ((const float *)rows[i])[j];
-		invert(&to_unit, &to_world);
+		xform to_world = local_to_world(p);
 		for (int k = 0; k < 3; k++) {
 			double h = sqrt(to_world.m[k][0] * to_world.m[k][0] + to_world.m[k][1] * to_world.m[k][1] +
 			                to_world.m[k][2] * to_world.m[k][2]) * (1 + 1e-5);

@@ -49,8 +49,10 @@ struct hit {
 	double margin;   /* the smallest barycentric coordinate: near 0 on an edge */
 };
 
-/* The smallest barycentric coordinate of the ray's crossing with face f, in double. */
-static double face_margin(const struct soup *s, int f, const float o[3], const float d[3])
+/* Where the ray (o, d) crosses the plane of face f, in double: returns the
+ * smallest barycentric coordinate (negative outside the face, near 0 on an edge)
+ * and sets *t; -1 for a face with no area or a ray along its plane. */
+static double face_crossing(const struct soup *s, int f, const float o[3], const float d[3], double *t)
 {
 	const double (*v)[3] = s->v[f];
 	double e1[3], e2[3], p[3], q[3], tv[3];
@@ -66,30 +68,22 @@ static double face_margin(const struct soup *s, int f, const float o[3], const f
 	double u = (tv[0] * p[0] + tv[1] * p[1] + tv[2] * p[2]) / det;
 	q[0] = tv[1] * e1[2] - tv[2] * e1[1], q[1] = tv[2] * e1[0] - tv[0] * e1[2], q[2] = tv[0] * e1[1] - tv[1] * e1[0];
 	double w = (d[0] * q[0] + d[1] * q[1] + d[2] * q[2]) / det;
+	*t = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
 	return fmin(fmin(u, w), 1 - u - w);
 }
 
-/* Watertight in double: the reference. */
+static double face_margin(const struct soup *s, int f, const float o[3], const float d[3])
+{
+	double t;
+	return face_crossing(s, f, o, d, &t);
+}
+
+/* The reference: the nearest face the ray crosses, edges included, in double. */
 static struct hit brute_force(const struct soup *s, const float o[3], const float d[3], double tmax)
 {
 	struct hit best = { tmax, -1, 0 };
 	for (int f = 0; f < s->n; f++) {
-		const double (*v)[3] = s->v[f];
-		double e1[3], e2[3], p[3], q[3], tv[3];
-		for (int k = 0; k < 3; k++) {
-			e1[k] = v[1][k] - v[0][k];
-			e2[k] = v[2][k] - v[0][k];
-			tv[k] = o[k] - v[0][k];
-		}
-		p[0] = d[1] * e2[2] - d[2] * e2[1], p[1] = d[2] * e2[0] - d[0] * e2[2], p[2] = d[0] * e2[1] - d[1] * e2[0];
-		double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
-		if (det == 0)
-			continue;
-		double u = (tv[0] * p[0] + tv[1] * p[1] + tv[2] * p[2]) / det;
-		q[0] = tv[1] * e1[2] - tv[2] * e1[1], q[1] = tv[2] * e1[0] - tv[0] * e1[2], q[2] = tv[0] * e1[1] - tv[1] * e1[0];
-		double w = (d[0] * q[0] + d[1] * q[1] + d[2] * q[2]) / det;
-		double t = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
-		double m = fmin(fmin(u, w), 1 - u - w);
+		double t, m = face_crossing(s, f, o, d, &t);
 		if (m >= -1e-7 && t > 0 && t < best.t)
 			best = (struct hit){ t, f, m };
 	}
