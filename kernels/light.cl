@@ -54,7 +54,7 @@ inline float light_spot(global const dev_light *l, float3 to_surface)
 inline float3 light_pov(global const bvh_node *nodes, global const dev_prim *prims,
                         global const dev_light *lights, global const dev_params *p,
                         global const dev_material *m, const material_lobes *lobes,
-                        float3 x, float3 n, float3 wo, uint key, uint dim, uint *counts)
+                        float3 x, float3 ng, float3 n, float3 wo, uint key, uint dim, uint *counts)
 {
 	float3 sum = (float3)(0.0f);
 	for (int i = 0; i < p->n_lights; i++) {
@@ -82,10 +82,10 @@ inline float3 light_pov(global const bvh_node *nodes, global const dev_prim *pri
 		}
 		float pdf;
 		float3 f = material_eval(m, lobes, n, wo, wi, &pdf);
-		if (k <= 0.0f || (f.x <= 0.0f && f.y <= 0.0f && f.z <= 0.0f))
+		if (k <= 0.0f || dot(ng, wi) <= 0.0f || (f.x <= 0.0f && f.y <= 0.0f && f.z <= 0.0f))
 			continue;
 		if (!l->shadowless && dist > 0.0f) {
-			counts[COUNT_SHADOW]++;
+			counts[COUNT_RAYS + RAY_SHADOW]++;
 			if (traverse_any(nodes, prims, p->n_prims, p->n_planes, x, wi, 0.0f, dist, counts))
 				continue;
 		}
@@ -113,7 +113,7 @@ inline int light_choose(global const dev_emitter *em, int n, float u)
 inline float light_pdf(global const dev_emitter *em, global const dev_prim *prim, float3 x,
                        float3 wi, float t)
 {
-	global const dev_emitter *e = &em[prim->emitter];
+	global const dev_emitter *e = &em[prim->link];
 	if (prim->type == PRIM_SPHERE) {
 		float3 c = prim->a.xyz;
 		float r = prim->a.w, d2 = dot(c - x, c - x);
@@ -124,7 +124,7 @@ inline float light_pdf(global const dev_emitter *em, global const dev_prim *prim
 		float3 nl = normalize(x + t * wi - c);
 		return e->pdf * t * t / (e->area * fabs(dot(nl, wi)));
 	}
-	float3 nl = normalize(cross(prim->b.xyz, prim->c.xyz));
+	float3 nl = normalize(cross(prim->b.xyz - prim->a.xyz, prim->c.xyz - prim->a.xyz));
 	float cos_l = fabs(dot(nl, wi));
 	return cos_l > 0.0f ? e->pdf * t * t / (e->area * cos_l) : 0.0f;
 }
@@ -138,7 +138,7 @@ inline float light_power_heuristic(float a, float b)
 inline float3 light_emitters(global const bvh_node *nodes, global const dev_prim *prims,
                              global const dev_material *materials, global const dev_emitter *em,
                              global const dev_params *p, global const dev_material *m,
-                             const material_lobes *lobes, float3 x, float3 n, float3 wo,
+                             const material_lobes *lobes, float3 x, float3 ng, float3 n, float3 wo,
                              uint key, uint dim, uint *counts)
 {
 	if (p->n_emitters == 0)
@@ -165,15 +165,15 @@ inline float3 light_emitters(global const bvh_node *nodes, global const dev_prim
 		wi = normalize(pos - x);
 	} else {
 		float su = sqrt(u1);
-		pos = prim->a.xyz + su * (1.0f - u2) * prim->b.xyz + su * u2 * prim->c.xyz;
+		pos = (1.0f - su) * prim->a.xyz + su * (1.0f - u2) * prim->b.xyz + su * u2 * prim->c.xyz;
 		wi = normalize(pos - x);
 	}
 	float dist = length(pos - x);
 	float pdf_light = light_pdf(em, prim, x, wi, dist), pdf_bsdf;
 	float3 f = material_eval(m, lobes, n, wo, wi, &pdf_bsdf);
-	if (pdf_light <= 0.0f || (f.x <= 0.0f && f.y <= 0.0f && f.z <= 0.0f))
+	if (pdf_light <= 0.0f || dot(ng, wi) <= 0.0f || (f.x <= 0.0f && f.y <= 0.0f && f.z <= 0.0f))
 		return (float3)(0.0f);
-	counts[COUNT_SHADOW]++;
+	counts[COUNT_RAYS + RAY_SHADOW]++;
 	/* stop short of the emitter itself */
 	if (traverse_any(nodes, prims, p->n_prims, p->n_planes, x, wi, 0.0f, dist * (1.0f - 1e-4f), counts))
 		return (float3)(0.0f);

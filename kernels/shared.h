@@ -27,19 +27,30 @@ typedef struct {
  * deeper tree rather than let a ray silently miss. */
 #define BVH_STACK_SIZE 64
 
-enum { PRIM_TRIANGLE = 0, PRIM_SPHERE = 1, PRIM_PLANE = 2, PRIM_ELLIPSOID = 3 };
+enum {
+	PRIM_TRIANGLE = 0, PRIM_SPHERE = 1, PRIM_PLANE = 2, PRIM_ELLIPSOID = 3,
+	PRIM_SMOOTH_TRIANGLE = 4, PRIM_INSTANCE = 5,
+};
 
-/* A primitive in world space, 64 bytes.
- * Triangle: a = v0, b = v1 - v0, c = v2 - v0 (the Moller-Trumbore edges).
- * Sphere: a.xyz = centre, a.w = radius; b and c unused.
+/* A primitive, 64 bytes. The BVH is two-level: the top level holds the scene's
+ * primitives in world space and one instance per placed mesh; each mesh has a
+ * BVH of its own over its triangles in object space, stored once however many
+ * times it is placed.
+ * Triangle: a, b, c = its corners, as given: neighbours must see bit-identical
+ *   shared corners for the watertight test;
+ *   link: index into the emitter table when it emits (top level only), else -1.
+ * Smooth triangle: as a triangle; link: its three normals in the normals buffer.
+ * Sphere: a.xyz = centre, a.w = radius; link as for a triangle.
  * Plane: a.xyz = unit normal, a.w = distance along it; planes are unbounded, so
- * they sit after the BVH's primitives and every ray tests them all.
- * Ellipsoid (a sphere scaled unevenly): a, b, c are the rows of the affine map from
- * world space to the unit sphere's space.
- * emitter: index into the emitter table when the material emits, else -1. */
+ *   they sit after the top level's primitives and every ray tests them all.
+ * Ellipsoid (a sphere scaled unevenly) and instance: a, b, c are the rows of the
+ *   affine map from world space to the unit sphere's or the mesh's space; for an
+ *   instance, link is the root node of the mesh's BVH.
+ * material: -1 in a mesh's triangle without a texture of its own: the instance's.
+ * object: the scene object's number (-1 in a mesh: the instance's). */
 typedef struct {
 	float4 a, b, c;
-	int type, material, object, emitter;
+	int type, material, object, link;
 } dev_prim;
 
 /* A physically based material, 112 bytes, made by lower.c from POV-Ray's texture
@@ -81,8 +92,15 @@ typedef struct {
 
 enum { INTEGRATOR_PATH = 0, INTEGRATOR_NAIVE = 1 };
 
-/* Ray and test counters, added up per pass by the kernel. */
-enum { COUNT_CAMERA, COUNT_BOUNCE, COUNT_SHADOW, COUNT_TESTS, COUNT_N };
+/* Ray kinds, and counters added up per pass by the kernel: rays of each kind, and
+ * the BVH node tests and primitive tests they made. */
+enum { RAY_CAMERA, RAY_BOUNCE, RAY_SHADOW, RAY_KINDS };
+enum {
+	COUNT_RAYS = 0,                    /* + kind */
+	COUNT_NODES = RAY_KINDS,           /* + kind */
+	COUNT_PRIMS = 2 * RAY_KINDS,       /* + kind */
+	COUNT_N = 3 * RAY_KINDS,
+};
 
 /* Everything a render pass needs besides the buffers, 144 bytes. The camera
  * vectors are POV-Ray's after look_at: a primary ray is direction + sx * right +

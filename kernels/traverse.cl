@@ -39,105 +39,127 @@ inline float traverse_box(global const bvh_node *n, const traverse_ray *r, float
 typedef struct {
 	float t;
 	int prim;      /* -1: no hit */
+	int inst;      /* the instance the primitive was found through, or -1 */
 } traverse_hit;
 
-/* The unbounded primitives (planes) after the BVH's n_prims: every ray tests them. */
-inline traverse_hit traverse_planes(global const dev_prim *prims, int n_prims, int n_planes,
-                                    float3 o, float3 d, float tmin, traverse_hit hit, uint *counts)
-{
-	for (int i = n_prims; i < n_prims + n_planes; i++) {
-		float t = intersect_plane(o, d, &prims[i], tmin, hit.t);
-		counts[COUNT_TESTS]++;
+/* The traversal loop of one BVH from root, written once and made into a function
+ * for each level (OpenCL has no recursion, and the top level calls the mesh
+ * level). LEAF_PRIM tests primitive i against the ray (o, d), lowering hit.t and
+ * setting hit.prim and hit.inst. With any, the first hit ends the walk. counts
+ * adds up the node and primitive tests for the ray's kind (the heat map's measure). */
+#define TRAVERSE_FUNCTION(NAME, LEAF_PRIM)                                                      \
+inline traverse_hit NAME(global const bvh_node *nodes, global const dev_prim *prims, int root,  \
+                         float3 o, float3 d, float tmin, float tmax, bool any, uint *counts,     \
+                         int kind)                                                              \
+{                                                                                               \
+	traverse_hit hit = { tmax, -1, -1 };                                                        \
+	traverse_ray r = traverse_setup(o, d);                                                      \
+	int stack[BVH_STACK_SIZE], sp = 0, node = root;                                             \
+	counts[COUNT_NODES + kind]++;                                                               \
+	if (traverse_box(&nodes[root], &r, hit.t) == INFINITY)                                      \
+		return hit;                                                                             \
+	for (;;) {                                                                                  \
+		global const bvh_node *n = &nodes[node];                                                \
+		if (n->count > 0) {                                                                     \
+			for (int i = n->left_first; i < n->left_first + n->count; i++) {                    \
+				counts[COUNT_PRIMS + kind]++;                                                   \
+				LEAF_PRIM                                                                       \
+				if (any && hit.prim >= 0)                                                       \
+					return hit;                                                                 \
+			}                                                                                   \
+		} else {                                                                                \
+			int a = n->left_first, b = a + 1;                                                   \
+			float ta = traverse_box(&nodes[a], &r, hit.t);                                      \
+			float tb = traverse_box(&nodes[b], &r, hit.t);                                      \
+			counts[COUNT_NODES + kind] += 2;                                                    \
+			if (ta > tb) {                                                                      \
+				float tt = ta; ta = tb; tb = tt;                                                \
+				int ti = a; a = b; b = ti;                                                      \
+			}                                                                                   \
+			if (ta != INFINITY) {                                                               \
+				if (tb != INFINITY)                                                             \
+					stack[sp++] = b;                                                            \
+				node = a;                                                                       \
+				continue;                                                                       \
+			}                                                                                   \
+		}                                                                                       \
+		/* pop the next node still nearer than the closest hit */                               \
+		for (;;) {                                                                              \
+			if (sp == 0)                                                                        \
+				return hit;                                                                     \
+			node = stack[--sp];                                                                 \
+			if (traverse_box(&nodes[node], &r, hit.t) != INFINITY)                              \
+				break;                                                                          \
+		}                                                                                       \
+	}                                                                                           \
+}
+
+/* A mesh's BVH, in the mesh's space: its primitives are triangles. */
+TRAVERSE_FUNCTION(traverse_mesh, {
+	float t = intersect_prim(o, d, &prims[i], tmin, hit.t);
+	if (t < hit.t) {
+		hit.t = t;
+		hit.prim = i;
+	}
+})
+
+/* The top level: an instance takes the ray into its mesh's space, where the
+ * direction is not unit length, so t means the same distance in both spaces. */
+TRAVERSE_FUNCTION(traverse_top, {
+	global const dev_prim *q = &prims[i];
+	if (q->type == PRIM_INSTANCE) {
+		float3 mo = intersect_to_local(q, o);
+		float3 md = (float3)(dot(q->a.xyz, d), dot(q->b.xyz, d), dot(q->c.xyz, d));
+		traverse_hit h = traverse_mesh(nodes, prims, q->link, mo, md, tmin, hit.t, any, counts, kind);
+		if (h.prim >= 0) {
+			hit.t = h.t;
+			hit.prim = h.prim;
+			hit.inst = i;
+		}
+	} else {
+		float t = intersect_prim(o, d, q, tmin, hit.t);
 		if (t < hit.t) {
 			hit.t = t;
 			hit.prim = i;
 		}
 	}
+})
+
+/* The unbounded primitives (planes) after the top level's n_prims: every ray tests them. */
+inline traverse_hit traverse_planes(global const dev_prim *prims, int n_prims, int n_planes,
+                                    float3 o, float3 d, float tmin, traverse_hit hit, uint *counts,
+                                    int kind)
+{
+	for (int i = n_prims; i < n_prims + n_planes; i++) {
+		float t = intersect_plane(o, d, &prims[i], tmin, hit.t);
+		counts[COUNT_PRIMS + kind]++;
+		if (t < hit.t) {
+			hit.t = t;
+			hit.prim = i;
+			hit.inst = -1;
+		}
+	}
 	return hit;
 }
 
-/* Closest hit in (tmin, tmax). counts[COUNT_TESTS] adds up box and primitive
- * tests (the heat map's measure). */
+/* Closest hit in (tmin, tmax). */
 inline traverse_hit traverse_closest(global const bvh_node *nodes, global const dev_prim *prims,
                                      int n_prims, int n_planes, float3 o, float3 d, float tmin,
-                                     float tmax, uint *counts)
+                                     float tmax, uint *counts, int kind)
 {
-	traverse_hit hit = { tmax, -1 };
-	hit = traverse_planes(prims, n_prims, n_planes, o, d, tmin, hit, counts);
-	if (n_prims == 0)
-		return hit;
-	traverse_ray r = traverse_setup(o, d);
-	int stack[BVH_STACK_SIZE], sp = 0, node = 0;
-	uint *tests = &counts[COUNT_TESTS];
-	*tests += 1;
-	if (traverse_box(&nodes[0], &r, hit.t) == INFINITY)
-		return hit;
-	for (;;) {
-		global const bvh_node *n = &nodes[node];
-		if (n->count > 0) {
-			for (int i = n->left_first; i < n->left_first + n->count; i++) {
-				float t = intersect_prim(o, d, &prims[i], tmin, hit.t);
-				*tests += 1;
-				if (t < hit.t) {
-					hit.t = t;
-					hit.prim = i;
-				}
-			}
-		} else {
-			int a = n->left_first, b = a + 1;
-			float ta = traverse_box(&nodes[a], &r, hit.t);
-			float tb = traverse_box(&nodes[b], &r, hit.t);
-			*tests += 2;
-			if (ta > tb) {
-				float tt = ta; ta = tb; tb = tt;
-				int ti = a; a = b; b = ti;
-			}
-			if (ta != INFINITY) {
-				if (tb != INFINITY)
-					stack[sp++] = b;
-				node = a;
-				continue;
-			}
-		}
-		/* pop the next node still nearer than the closest hit */
-		for (;;) {
-			if (sp == 0)
-				return hit;
-			node = stack[--sp];
-			if (traverse_box(&nodes[node], &r, hit.t) != INFINITY)
-				break;
-		}
-	}
+	traverse_hit hit = { tmax, -1, -1 };
+	if (n_prims > 0)
+		hit = traverse_top(nodes, prims, 0, o, d, tmin, tmax, false, counts, kind);
+	return traverse_planes(prims, n_prims, n_planes, o, d, tmin, hit, counts, kind);
 }
 
 /* Any hit in (tmin, tmax): shadow rays stop at the first occluder. */
 inline bool traverse_any(global const bvh_node *nodes, global const dev_prim *prims, int n_prims,
                          int n_planes, float3 o, float3 d, float tmin, float tmax, uint *counts)
 {
-	traverse_hit planes = { tmax, -1 };
-	if (traverse_planes(prims, n_prims, n_planes, o, d, tmin, planes, counts).prim >= 0)
+	traverse_hit none = { tmax, -1, -1 };
+	if (traverse_planes(prims, n_prims, n_planes, o, d, tmin, none, counts, RAY_SHADOW).prim >= 0)
 		return true;
-	if (n_prims == 0)
-		return false;
-	uint *tests = &counts[COUNT_TESTS];
-	traverse_ray r = traverse_setup(o, d);
-	int stack[BVH_STACK_SIZE], sp = 0;
-	stack[sp++] = 0;
-	while (sp > 0) {
-		global const bvh_node *n = &nodes[stack[--sp]];
-		*tests += 1;
-		if (traverse_box(n, &r, tmax) == INFINITY)
-			continue;
-		if (n->count > 0) {
-			for (int i = n->left_first; i < n->left_first + n->count; i++) {
-				*tests += 1;
-				if (intersect_prim(o, d, &prims[i], tmin, tmax) < tmax)
-					return true;
-			}
-		} else {
-			stack[sp++] = n->left_first + 1;
-			stack[sp++] = n->left_first;
-		}
-	}
-	return false;
+	return n_prims > 0 &&
+	       traverse_top(nodes, prims, 0, o, d, tmin, tmax, true, counts, RAY_SHADOW).prim >= 0;
 }

@@ -381,7 +381,7 @@ static int build_subtree(builder *b, work w)
 /* Sum over interior nodes of area / root area, plus over leaves of
  * area / root area * count. A root of area 0 (all primitives on one line or
  * point) makes every ratio 1. */
-static double sah_cost(const bvh_node *nodes, int n_nodes)
+double bvh_sah_cost(const bvh_node *nodes, int n_nodes)
 {
 	box4 root = node_box(&nodes[0]);
 	double root_area = box_area(&root);
@@ -482,7 +482,7 @@ int bvh_build(const bvh_box *boxes, int n, bvh_tree *t)
 	t->n_nodes = b.n_nodes;
 	t->n_prims = n;
 	t->depth = b.depth;
-	t->sah_cost = sah_cost(b.nodes, b.n_nodes);
+	t->sah_cost = bvh_sah_cost(b.nodes, b.n_nodes);
 	/* Give back the unused tail of the 2n - 1 nodes; keep the block if the
 	 * shrink fails, it is still valid. */
 	t->nodes = realloc(b.nodes, (size_t)b.n_nodes * sizeof *b.nodes);

@@ -33,6 +33,15 @@ typedef struct {
  * Returns 0, or -1 when memory runs out (t is then left empty). */
 #define BVH_MAX_LEAF 4
 int bvh_build(const bvh_box *boxes, int n, bvh_tree *t);
+
+/* The reference paper's builder, for comparison (--bvh median): a node's box is
+ * cut in two at the middle of its longest side, the primitives going to the side
+ * of their centroid, down to max_depth (root = 1) or until a node holds at most
+ * two primitives or cannot be cut. Leaves may hold many primitives. */
+int bvh_build_median(const bvh_box *boxes, int n, int max_depth, bvh_tree *t);
+
+/* The SAH cost of a tree, as in bvh_tree.sah_cost. */
+double bvh_sah_cost(const bvh_node *nodes, int n_nodes);
 void bvh_free(bvh_tree *t);
 
 #endif

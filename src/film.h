@@ -22,8 +22,8 @@ int film_aov_known(const char *name);
 /* Fills rgb (width * height * 3) with the AOV: albedo (of the first surface,
  * averaged over the pixel), normal (components in -1..1), depth (distance to the
  * first surface, inf where none), id (object number of the pixel centre's first
- * sample, -1 where none) and heat (box and primitive tests per sample, over the
- * whole path). Returns -1 when the AOV needs film.aov and it is missing. */
+ * sample, -1 where none) and heat (box and primitive tests of the camera ray, per
+ * sample). Returns -1 when the AOV needs film.aov and it is missing. */
 int film_aov(const film *f, const char *name, float *rgb);
 
 #endif

@@ -22,6 +22,12 @@ typedef struct {
 int image_write(const char *path, const float *rgb, int width, int height, const image_meta *meta,
                 char *err, size_t errlen);
 
+/* The heat map: the BVH tests per pixel per sample. Linear formats get the counts;
+ * 8-bit formats a colour map ("turbo") with a legend under it that gives the scale
+ * and the units, as in the reference paper's figure. *mean gets the mean. */
+int image_write_heat(const char *path, const float *heat, int width, int height, const image_meta *meta,
+                     double *mean, char *err, size_t errlen);
+
 /* 1 when the extension of path names a format OpenImageIO can write. */
 int image_format_known(const char *path);
 

@@ -1,9 +1,13 @@
 // image_oiio.cpp: the only file that talks to OpenImageIO.
 #include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/strutil.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <string>
 #include <unistd.h>
@@ -37,15 +41,17 @@ extern "C" int image_format_known(const char *path)
 	return out ? 1 : 0;
 }
 
-extern "C" int image_write(const char *path, const float *rgb, int width, int height,
-                           const image_meta *meta, char *err, size_t errlen)
+/* Writes pixels (channels floats a pixel) to a temporary file beside path, then
+ * renames it: the file appears whole or not at all. srgb: encode the values for
+ * an 8-bit format; they are display values already when not. */
+static int write_atomic(const std::string &p, const float *rgb, int width, int height, int channels,
+                        bool srgb, const image_meta *meta, char *err, size_t errlen)
 {
-	std::string p(path);
 	auto out = ImageOutput::create(p);
 	if (!out)
 		return fail(err, errlen, "cannot write '" + p + "': no image format for this extension");
 	bool linear = is_linear_format(p);
-	ImageSpec spec(width, height, 3, linear ? TypeDesc::FLOAT : TypeDesc::UINT8);
+	ImageSpec spec(width, height, channels, linear ? TypeDesc::FLOAT : TypeDesc::UINT8);
 	spec.attribute("oiio:ColorSpace", linear ? "Linear" : "sRGB");
 	spec.attribute("Software", "eclat " PACKAGE_VERSION);
 	if (meta && meta->scene)
@@ -53,8 +59,8 @@ extern "C" int image_write(const char *path, const float *rgb, int width, int he
 	if (meta)
 		spec.attribute("eclat:samples", (int)meta->samples);
 
-	std::vector<float> pixels(rgb, rgb + (size_t)width * height * 3);
-	if (!linear)
+	std::vector<float> pixels(rgb, rgb + (size_t)width * height * channels);
+	if (!linear && srgb)
 		for (float &c : pixels)
 			c = srgb_encode(c);
 
@@ -77,4 +83,71 @@ extern "C" int image_write(const char *path, const float *rgb, int width, int he
 		return fail(err, errlen, "cannot write '" + p + "': " + why);
 	}
 	return 0;
+}
+
+extern "C" int image_write(const char *path, const float *rgb, int width, int height,
+                           const image_meta *meta, char *err, size_t errlen)
+{
+	return write_atomic(path, rgb, width, height, 3, true, meta, err, errlen);
+}
+
+/* A round number at or above v, for the legend's scale: 1, 2, 5 times a power of ten. */
+static float nice_ceiling(float v)
+{
+	if (!(v > 0))
+		return 1;
+	float p = std::pow(10.0f, std::floor(std::log10(v)));
+	for (float m : { 1.0f, 2.0f, 5.0f, 10.0f })
+		if (m * p >= v)
+			return m * p;
+	return 10 * p;
+}
+
+static const char *const legend_font = "DejaVuSans";
+
+extern "C" int image_write_heat(const char *path, const float *heat, int width, int height,
+                                const image_meta *meta, double *mean, char *err, size_t errlen)
+{
+	size_t n = (size_t)width * height;
+	double sum = 0;
+	float top = 0;
+	for (size_t i = 0; i < n; i++) {
+		sum += heat[i];
+		top = std::max(top, heat[i]);
+	}
+	*mean = n ? sum / n : 0;
+	std::string p(path);
+	if (is_linear_format(p)) {   /* the counts themselves, in every channel */
+		std::vector<float> rgb(n * 3);
+		for (size_t i = 0; i < n; i++)
+			rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = heat[i];
+		return write_atomic(p, rgb.data(), width, height, 3, false, meta, err, errlen);
+	}
+	/* The paper's figure: a colour map, and under it a legend with its scale and units. */
+	float scale = nice_ceiling(top);
+	ImageBuf counts(ImageSpec(width, height, 1, TypeDesc::FLOAT), (void *)heat);
+	ImageBuf mapped = ImageBufAlgo::color_map(ImageBufAlgo::mul(counts, 1.0f / scale), 0, "turbo");
+	int w = std::max(width, 360), legend = 64, ramp_w = w - 40;
+	ImageBuf canvas(ImageSpec(w, height + legend, 3, TypeDesc::FLOAT));
+	ImageBufAlgo::zero(canvas);
+	ImageBufAlgo::paste(canvas, (w - width) / 2, 0, 0, 0, mapped);
+	ImageBuf ramp(ImageSpec(ramp_w, 12, 1, TypeDesc::FLOAT));
+	for (ImageBuf::Iterator<float> it(ramp); !it.done(); ++it)
+		it[0] = (float)it.x() / (ramp_w - 1);
+	ImageBufAlgo::paste(canvas, 20, height + 10, 0, 0, ImageBufAlgo::color_map(ramp, 0, "turbo"));
+	char text[160];
+	const float white[3] = { 1, 1, 1 };
+	bool ok = ImageBufAlgo::render_text(canvas, 20, height + 38, "0", 14, legend_font, white);
+	snprintf(text, sizeof text, "%g", scale);
+	ok = ok && ImageBufAlgo::render_text(canvas, 20 + ramp_w, height + 38, text, 14, legend_font, white,
+	                                     ImageBufAlgo::TextAlignX::Right);
+	snprintf(text, sizeof text, "BVH tests per camera ray (mean %.1f)", *mean);
+	ok = ok && ImageBufAlgo::render_text(canvas, w / 2, height + 56, text, 14, legend_font, white,
+	                                     ImageBufAlgo::TextAlignX::Center);
+	if (!ok)
+		return fail(err, errlen, "cannot draw the heat map's legend: " + canvas.geterror() +
+		                         " (the font DejaVu Sans comes with fonts-dejavu-core)");
+	std::vector<float> pixels((size_t)w * (height + legend) * 3);
+	canvas.get_pixels(ROI::All(), TypeDesc::FLOAT, pixels.data());
+	return write_atomic(p, pixels.data(), w, height + legend, 3, false, meta, err, errlen);
 }

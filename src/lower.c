@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "lower.h"
 
@@ -22,14 +23,30 @@ _Static_assert(sizeof(dev_emitter) == 16, "dev_emitter is 16 bytes");
 _Static_assert(sizeof(dev_params) == 144, "dev_params is 144 bytes");
 _Static_assert(offsetof(dev_params, width) == 96, "dev_params ints at 96");
 
-/* Growing arrays of primitives and materials while lowering. */
-struct lowering {
-	dev_prim *prims;
+/* A growing array of primitives. */
+struct prim_list {
+	dev_prim *p;
 	int n, cap;
-	dev_prim *planes;
-	int n_planes, cap_planes;
+};
+
+/* A mesh lowered once: its triangles in object space, in its BVH's order. */
+struct lowered_mesh {
+	int done;
+	struct prim_list prims;
+	bvh_tree bvh;
+	float box[2][3];
+	lower_bvh_stats stats;
+};
+
+/* Everything that grows while lowering. */
+struct lowering {
+	const lower_options *opt;
+	struct prim_list top, planes;
 	dev_material *mats;
 	int n_mats, cap_mats;
+	float4 *normals;
+	int n_normals, cap_normals;
+	struct lowered_mesh *meshes;
 	int n_degenerate;
 };
 
@@ -106,24 +123,35 @@ static int add_material(struct lowering *lw, const scene_material *m)
 
 /* ---- shapes ---- */
 
+static void push_prim(struct prim_list *l, dev_prim p)
+{
+	if (l->n == l->cap)
+		l->p = grow(l->p, &l->cap, sizeof p);
+	l->p[l->n++] = p;
+}
+
 static void add_prim(struct lowering *lw, dev_prim p, int material, int object)
 {
 	p.material = material;
 	p.object = object;
-	p.emitter = -1;
-	if (p.type == PRIM_PLANE) {
-		if (lw->n_planes == lw->cap_planes)
-			lw->planes = grow(lw->planes, &lw->cap_planes, sizeof p);
-		lw->planes[lw->n_planes++] = p;
-		return;
-	}
-	if (lw->n == lw->cap)
-		lw->prims = grow(lw->prims, &lw->cap, sizeof p);
-	lw->prims[lw->n++] = p;
+	p.link = -1;
+	push_prim(p.type == PRIM_PLANE ? &lw->planes : &lw->top, p);
 }
 
-static void add_triangle(struct lowering *lw, const double v[3][3], int material, int object,
-                         src_loc loc)
+/* Three shading normals; returns the index of the first, for a smooth triangle's link. */
+static int add_normals(struct lowering *lw, const double n[3][3])
+{
+	for (int k = 0; k < 3; k++) {
+		if (lw->n_normals == lw->cap_normals)
+			lw->normals = grow(lw->normals, &lw->cap_normals, sizeof *lw->normals);
+		lw->normals[lw->n_normals++] = f4(n[k], 0);
+	}
+	return lw->n_normals / 3 - 1;
+}
+
+/* A triangle into list, unless it has no area; normals (or NULL) make it smooth. */
+static void add_triangle_to(struct lowering *lw, struct prim_list *list, const double v[3][3],
+                            const double (*normals)[3], int material, int object, src_loc loc)
 {
 	double e1[3], e2[3];
 	for (int k = 0; k < 3; k++) {
@@ -137,8 +165,19 @@ static void add_triangle(struct lowering *lw, const double v[3][3], int material
 			diag_warning(loc, "triangle with no area skipped");
 		return;
 	}
-	add_prim(lw, (dev_prim){ .a = f4(v[0], 0), .b = f4(e1, 0), .c = f4(e2, 0), .type = PRIM_TRIANGLE },
-	         material, object);
+	dev_prim p = { .a = f4(v[0], 0), .b = f4(v[1], 0), .c = f4(v[2], 0), .type = PRIM_TRIANGLE,
+	               .material = material, .object = object, .link = -1 };
+	if (normals) {
+		p.type = PRIM_SMOOTH_TRIANGLE;
+		p.link = add_normals(lw, normals);
+	}
+	push_prim(list, p);
+}
+
+static void add_triangle(struct lowering *lw, const double v[3][3], int material, int object,
+                         src_loc loc)
+{
+	add_triangle_to(lw, &lw->top, v, NULL, material, object, loc);
 }
 
 static double det3(const xform *t)
@@ -266,28 +305,124 @@ static int lower_plane(struct lowering *lw, const scene_object *o, int mat, int 
 	return 0;
 }
 
-static void lower_mesh(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id)
+static double ms_since(const struct timespec *t0)
 {
-	const scene_mesh *m = &s->meshes[o->mesh];
-	int *face_mats = NULL;
-	if (m->n_mats > 0) {
-		face_mats = malloc(m->n_mats * sizeof *face_mats);
-		if (!face_mats) {
-			fprintf(stderr, "eclat: out of memory\n");
-			exit(1);
-		}
-		for (int i = 0; i < m->n_mats; i++)
-			face_mats[i] = add_material(lw, &m->mats[i]);
-	}
-	int flip = det3(&o->xf) < 0;
+	struct timespec t1;
+	clock_gettime(CLOCK_MONOTONIC, &t1);
+	return (t1.tv_sec - t0->tv_sec) * 1e3 + (t1.tv_nsec - t0->tv_nsec) * 1e-6;
+}
+
+static bvh_box prim_box(const struct lowering *lw, const dev_prim *p);
+
+/* Builds the chosen BVH over list and reorders list into its leaf order. */
+static int build_tree(struct lowering *lw, struct prim_list *list, bvh_tree *t, lower_bvh_stats *st)
+{
+	struct timespec t0;
+	clock_gettime(CLOCK_MONOTONIC, &t0);
+	bvh_box *boxes = malloc((list->n ? list->n : 1) * sizeof *boxes);
+	if (!boxes)
+		return -1;
+	for (int i = 0; i < list->n; i++)
+		boxes[i] = prim_box(lw, &list->p[i]);
+	int rc = lw->opt->builder == LOWER_BVH_MEDIAN
+	       ? bvh_build_median(boxes, list->n, lw->opt->median_depth, t)
+	       : bvh_build(boxes, list->n, t);
+	free(boxes);
+	if (rc)
+		return -1;
+	dev_prim *sorted = malloc((list->n ? list->n : 1) * sizeof *sorted);
+	if (!sorted)
+		return -1;
+	for (int i = 0; i < list->n; i++)
+		sorted[i] = list->p[t->prim_index[i]];
+	free(list->p);
+	list->p = sorted;
+	list->cap = list->n;
+	st->build_ms = ms_since(&t0);
+	st->prims = list->n;
+	st->nodes = t->n_nodes;
+	st->depth = t->depth;
+	st->sah_cost = t->sah_cost;
+	for (int i = 0; i < t->n_nodes; i++)
+		st->leaves += t->nodes[i].count > 0;
+	st->bytes = (size_t)t->n_nodes * sizeof(bvh_node) + (size_t)list->n * sizeof(dev_prim);
+	return 0;
+}
+
+/* A mesh's triangles in its own space, with the face textures it has. */
+static int lower_mesh_once(struct lowering *lw, const scene *s, int index)
+{
+	struct lowered_mesh *lm = &lw->meshes[index];
+	if (lm->done)
+		return lm->done < 0 ? -1 : 0;
+	const scene_mesh *m = &s->meshes[index];
+	int first_mat = lw->n_mats, normals_before = lw->n_normals;
+	for (int i = 0; i < m->n_mats; i++)
+		add_material(lw, &m->mats[i]);
 	for (int f = 0; f < m->n_faces; f++) {
-		double v[3][3];
+		double v[3][3], n[3][3];
 		for (int k = 0; k < 3; k++)
-			scene_xform_point(&o->xf, m->v[m->face[f][k]], v[flip ? 2 - k : k]);
-		int fm = m->face_mat && m->face_mat[f] >= 0 && m->face_mat[f] < m->n_mats ? face_mats[m->face_mat[f]] : mat;
-		add_triangle(lw, v, fm, id, o->loc);
+			memcpy(v[k], m->v[m->face[f][k]], sizeof v[k]);
+		int smooth = m->nrm && m->face_nrm;
+		for (int k = 0; k < 3 && smooth; k++)
+			memcpy(n[k], m->nrm[m->face_nrm[f][k]], sizeof n[k]);
+		int fm = m->face_mat && m->face_mat[f] >= 0 && m->face_mat[f] < m->n_mats ? first_mat + m->face_mat[f] : -1;
+		/* object: the face, for tests and debugging; surfaces take the instance's */
+		add_triangle_to(lw, &lm->prims, v, smooth ? (const double (*)[3])n : NULL, fm, f, m->loc);
 	}
-	free(face_mats);
+	lm->stats = (lower_bvh_stats){ .mesh = index, .loc = m->loc };
+	if (lm->prims.n == 0 || build_tree(lw, &lm->prims, &lm->bvh, &lm->stats)) {
+		if (lm->prims.n == 0)
+			diag_error(m->loc, "the mesh has no triangle with an area");
+		else
+			fprintf(stderr, "eclat: out of memory building a mesh's BVH\n");
+		lm->done = -1;
+		return -1;
+	}
+	lm->stats.bytes += (size_t)(lw->n_normals - normals_before) * sizeof(float4);
+	const bvh_node *root = &lm->bvh.nodes[0];
+	float box[2][3] = { { root->min_x, root->min_y, root->min_z }, { root->max_x, root->max_y, root->max_z } };
+	memcpy(lm->box, box, sizeof box);
+	lm->done = 1;
+	return 0;
+}
+
+/* A placed mesh: an instance in the top level, the world-to-mesh map in its rows;
+ * link holds the mesh's index until the node arrays are joined. */
+static int lower_instance(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id)
+{
+	if (lower_mesh_once(lw, s, o->mesh))
+		return -1;
+	xform to_mesh;
+	if (invert(&o->xf, &to_mesh)) {
+		diag_error(o->loc, "the mesh's transform is singular (a scale of 0?)");
+		return -1;
+	}
+	dev_prim p = { .type = PRIM_INSTANCE, .material = mat, .object = id, .link = o->mesh };
+	float4 *rows[3] = { &p.a, &p.b, &p.c };
+	for (int i = 0; i < 3; i++)
+		*rows[i] = (float4){ (float)to_mesh.m[i][0], (float)to_mesh.m[i][1], (float)to_mesh.m[i][2],
+		                     (float)to_mesh.m[i][3] };
+	push_prim(&lw->top, p);
+	return 0;
+}
+
+/* Its corners and normals in world space: normals map by the transposed inverse. */
+static int lower_smooth_triangle(struct lowering *lw, const scene_object *o, int mat, int id)
+{
+	xform inv;
+	double v[3][3], n[3][3];
+	if (invert(&o->xf, &inv)) {
+		diag_error(o->loc, "the triangle's transform is singular");
+		return -1;
+	}
+	for (int i = 0; i < 3; i++) {
+		scene_xform_point(&o->xf, o->p[i], v[i]);
+		for (int k = 0; k < 3; k++)
+			n[i][k] = inv.m[0][k] * o->n[i][0] + inv.m[1][k] * o->n[i][1] + inv.m[2][k] * o->n[i][2];
+	}
+	add_triangle_to(lw, &lw->top, v, (const double (*)[3])n, mat, id, o->loc);
+	return 0;
 }
 
 static int lower_object(struct lowering *lw, const scene *s, int id)
@@ -299,19 +434,19 @@ static int lower_object(struct lowering *lw, const scene *s, int id)
 	case SHAPE_SPHERE:
 		return lower_sphere(lw, o, mat, id);
 	case SHAPE_TRIANGLE:
-	case SHAPE_SMOOTH_TRIANGLE:   /* shading normals come with the BVH issue: flat for now */
 		for (int i = 0; i < 3; i++)
 			scene_xform_point(&o->xf, o->p[i], v[i]);
 		add_triangle(lw, v, mat, id, o->loc);
 		return 0;
+	case SHAPE_SMOOTH_TRIANGLE:
+		return lower_smooth_triangle(lw, o, mat, id);
 	case SHAPE_BOX:
 		lower_box(lw, o, mat, id);
 		return 0;
 	case SHAPE_PLANE:
 		return lower_plane(lw, o, mat, id);
 	case SHAPE_MESH:
-		lower_mesh(lw, s, o, mat, id);
-		return 0;
+		return lower_instance(lw, s, o, mat, id);
 	}
 	return 0;
 }
@@ -355,16 +490,18 @@ static void lower_emitters(lower_result *r)
 		dev_prim *p = &r->prims[i];
 		float4 e = r->materials[p->material].emission;
 		double lum = 0.2126 * e.x + 0.7152 * e.y + 0.0722 * e.z, area;
-		if (lum <= 0 || p->type == PRIM_ELLIPSOID)
+		if (lum <= 0 || (p->type != PRIM_SPHERE && p->type != PRIM_TRIANGLE))
 			continue;
 		if (p->type == PRIM_SPHERE) {
 			area = 4 * M_PI * p->a.w * p->a.w;
 		} else {
-			double cx = p->b.y * p->c.z - p->b.z * p->c.y, cy = p->b.z * p->c.x - p->b.x * p->c.z,
-			       cz = p->b.x * p->c.y - p->b.y * p->c.x;
+			double e1[3] = { p->b.x - p->a.x, p->b.y - p->a.y, p->b.z - p->a.z };
+			double e2[3] = { p->c.x - p->a.x, p->c.y - p->a.y, p->c.z - p->a.z };
+			double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
+			       cz = e1[0] * e2[1] - e1[1] * e2[0];
 			area = 0.5 * sqrt(cx * cx + cy * cy + cz * cz);
 		}
-		p->emitter = r->n_emitters;
+		p->link = r->n_emitters;
 		r->emitters[r->n_emitters++] = (dev_emitter){ .cdf = (float)(lum * area), .area = (float)area, .prim = i };
 		total += lum * area;
 	}
@@ -404,7 +541,35 @@ static void *xmalloc(size_t n)
 	return p;
 }
 
-static bvh_box prim_box(const dev_prim *p)
+/* The local-to-world map of an ellipsoid or instance, whose rows hold the inverse. */
+static xform local_to_world(const dev_prim *p)
+{
+	xform to_local, to_world;
+	const float4 *rows[3] = { &p->a, &p->b, &p->c };
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 4; j++)
+			to_local.m[i][j] = ((const float *)rows[i])[j];
+	invert(&to_local, &to_world);
+	return to_world;
+}
+
+/* The world box of an instance: the mesh's box with its eight corners moved. */
+static bvh_box world_box(const dev_prim *inst, const float box[2][3])
+{
+	xform to_world = local_to_world(inst);
+	bvh_box b = { { 1e30f, 1e30f, 1e30f }, { -1e30f, -1e30f, -1e30f } };
+	for (int c = 0; c < 8; c++) {
+		double p[3] = { box[c & 1][0], box[(c >> 1) & 1][1], box[(c >> 2) & 1][2] }, w[3];
+		scene_xform_point(&to_world, p, w);
+		for (int k = 0; k < 3; k++) {
+			b.min[k] = fminf(b.min[k], (float)w[k]);
+			b.max[k] = fmaxf(b.max[k], (float)w[k]);
+		}
+	}
+	return b;
+}
+
+static bvh_box prim_box(const struct lowering *lw, const dev_prim *p)
 {
 	bvh_box b;
 	if (p->type == PRIM_SPHERE) {
@@ -415,13 +580,10 @@ static bvh_box prim_box(const dev_prim *p)
 		}
 		return b;
 	}
+	if (p->type == PRIM_INSTANCE)   /* link is still the mesh's index here */
+		return world_box(p, lw->meshes[p->link].box);
 	if (p->type == PRIM_ELLIPSOID) {   /* the box of the image of the unit sphere */
-		xform to_unit, to_world;
-		const float4 *rows[3] = { &p->a, &p->b, &p->c };
-		for (int i = 0; i < 3; i++)
-			for (int j = 0; j < 4; j++)
-				to_unit.m[i][j] = ((const float *)rows[i])[j];
-		invert(&to_unit, &to_world);
+		xform to_world = local_to_world(p);
 		for (int k = 0; k < 3; k++) {
 			double h = sqrt(to_world.m[k][0] * to_world.m[k][0] + to_world.m[k][1] * to_world.m[k][1] +
 			                to_world.m[k][2] * to_world.m[k][2]) * (1 + 1e-5);
@@ -431,8 +593,8 @@ static bvh_box prim_box(const dev_prim *p)
 		return b;
 	}
 	float v[3][3] = { { p->a.x, p->a.y, p->a.z },
-	                  { p->a.x + p->b.x, p->a.y + p->b.y, p->a.z + p->b.z },
-	                  { p->a.x + p->c.x, p->a.y + p->c.y, p->a.z + p->c.z } };
+	                  { p->b.x, p->b.y, p->b.z },
+	                  { p->c.x, p->c.y, p->c.z } };
 	for (int k = 0; k < 3; k++) {
 		b.min[k] = fminf(v[0][k], fminf(v[1][k], v[2][k]));
 		b.max[k] = fmaxf(v[0][k], fmaxf(v[1][k], v[2][k]));
@@ -440,35 +602,79 @@ static bvh_box prim_box(const dev_prim *p)
 	return b;
 }
 
-static int build_bvh(struct lowering *lw, lower_result *out)
+/* The top level's BVH, then one node array and one primitive array for all:
+ * each mesh's nodes and triangles are moved after the top level's, and its
+ * instances point at its root. */
+static int join(struct lowering *lw, const scene *s, lower_result *out)
 {
-	bvh_box *boxes = xmalloc(lw->n * sizeof *boxes);
-	for (int i = 0; i < lw->n; i++)
-		boxes[i] = prim_box(&lw->prims[i]);
-	int rc = bvh_build(boxes, lw->n, &out->bvh);
-	free(boxes);
-	if (rc != 0) {
-		fprintf(stderr, "eclat: out of memory building the BVH\n");
+	bvh_tree top;
+	out->stats = calloc(1 + s->n_meshes, sizeof *out->stats);
+	if (!out->stats)
 		return -1;
-	}
-	if (out->bvh.depth > BVH_STACK_SIZE) {
-		diag_error(SRC_NOWHERE, "the BVH is %d levels deep, more than the %d the kernels can traverse",
-		           out->bvh.depth, BVH_STACK_SIZE);
+	out->stats[0].mesh = -1;
+	out->stats[0].loc = SRC_NOWHERE;
+	if (build_tree(lw, &lw->top, &top, &out->stats[0]))
 		return -1;
+	out->n_stats = 1;
+	int n_nodes = top.n_nodes, n_prims = lw->top.n + lw->planes.n;
+	int *node_base = calloc(s->n_meshes + 1, sizeof *node_base), *prim_base = calloc(s->n_meshes + 1, sizeof *prim_base);
+	for (int m = 0; m < s->n_meshes; m++) {
+		node_base[m] = n_nodes;
+		prim_base[m] = n_prims;
+		if (lw->meshes[m].done > 0) {
+			n_nodes += lw->meshes[m].bvh.n_nodes;
+			n_prims += lw->meshes[m].prims.n;
+			out->stats[out->n_stats++] = lw->meshes[m].stats;
+		}
 	}
-	out->prims = xmalloc((lw->n + lw->n_planes) * sizeof *out->prims);
-	for (int i = 0; i < lw->n; i++)
-		out->prims[i] = lw->prims[out->bvh.prim_index[i]];
-	memcpy(out->prims + lw->n, lw->planes, lw->n_planes * sizeof *lw->planes);
-	out->n_prims = lw->n;
-	out->n_planes = lw->n_planes;
+	out->nodes = xmalloc(n_nodes * sizeof *out->nodes);
+	out->prims = xmalloc(n_prims * sizeof *out->prims);
+	memcpy(out->nodes, top.nodes, top.n_nodes * sizeof *top.nodes);
+	memcpy(out->prims, lw->top.p, lw->top.n * sizeof *lw->top.p);
+	memcpy(out->prims + lw->top.n, lw->planes.p, lw->planes.n * sizeof *lw->planes.p);
+	for (int m = 0; m < s->n_meshes; m++) {
+		struct lowered_mesh *lm = &lw->meshes[m];
+		if (lm->done <= 0)
+			continue;
+		for (int i = 0; i < lm->bvh.n_nodes; i++) {
+			bvh_node n = lm->bvh.nodes[i];
+			n.left_first += n.count > 0 ? prim_base[m] : node_base[m];
+			out->nodes[node_base[m] + i] = n;
+		}
+		memcpy(out->prims + prim_base[m], lm->prims.p, lm->prims.n * sizeof *lm->prims.p);
+	}
+	for (int i = 0; i < lw->top.n; i++)
+		if (out->prims[i].type == PRIM_INSTANCE)
+			out->prims[i].link = node_base[out->prims[i].link];
+	out->n_nodes = n_nodes;
+	out->n_prims = lw->top.n;
+	out->n_planes = lw->planes.n;
+	out->n_all_prims = n_prims;
+	free(node_base);
+	free(prim_base);
+	bvh_free(&top);
 	return 0;
 }
 
-int lower_scene(const scene *s, lower_result *out)
+static int check_depths(const lower_result *out)
+{
+	for (int i = 0; i < out->n_stats; i++)
+		if (out->stats[i].depth > BVH_STACK_SIZE) {
+			diag_error(out->stats[i].loc, "a BVH is %d levels deep, more than the %d the kernels can traverse",
+			           out->stats[i].depth, BVH_STACK_SIZE);
+			return -1;
+		}
+	return 0;
+}
+
+int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 {
 	memset(out, 0, sizeof *out);
-	struct lowering lw = { 0 };
+	static const lower_options defaults = { LOWER_BVH_SAH, 24 };
+	struct lowering lw = { .opt = opt ? opt : &defaults };
+	lw.meshes = calloc(s->n_meshes + 1, sizeof *lw.meshes);
+	if (!lw.meshes)
+		return -1;
 	int rc = 0;
 	for (int i = 0; i < s->n_objects; i++)
 		if (lower_object(&lw, s, i))
@@ -482,22 +688,33 @@ int lower_scene(const scene *s, lower_result *out)
 	out->n_lights = s->n_lights;
 	out->materials = lw.mats;
 	out->n_materials = lw.n_mats;
+	out->normals = lw.normals;
+	out->n_normals = lw.n_normals;
 	lower_camera(s, &out->params);
+	if (rc == 0 && join(&lw, s, out))
+		rc = -1;
 	if (rc == 0)
-		rc = build_bvh(&lw, out);
+		rc = check_depths(out);
 	if (rc == 0)
 		lower_emitters(out);
-	free(lw.prims);
-	free(lw.planes);
+	for (int m = 0; m < s->n_meshes; m++) {
+		free(lw.meshes[m].prims.p);
+		bvh_free(&lw.meshes[m].bvh);
+	}
+	free(lw.meshes);
+	free(lw.top.p);
+	free(lw.planes.p);
 	return rc;
 }
 
 void lower_free(lower_result *r)
 {
+	free(r->nodes);
+	free(r->normals);
+	free(r->stats);
 	free(r->prims);
 	free(r->materials);
 	free(r->lights);
 	free(r->emitters);
-	bvh_free(&r->bvh);
 	memset(r, 0, sizeof *r);
 }

@@ -1,30 +1,56 @@
-/* lower.h: the scene flattened into the buffers the kernels read, plus its BVH. */
+/* lower.h: the scene flattened into the buffers the kernels read, plus its BVHs:
+ * one for the top level (the scene's primitives and one instance per placed
+ * mesh) and one per mesh, stored once however often the mesh is placed. */
 #ifndef ECLAT_LOWER_H
 #define ECLAT_LOWER_H
+
+#include <stddef.h>
 
 #include "../kernels/shared.h"
 #include "bvh.h"
 #include "scene.h"
 
+enum { LOWER_BVH_SAH, LOWER_BVH_MEDIAN };
+
 typedef struct {
-	dev_prim *prims;          /* BVH leaf order, then the planes */
-	int n_prims;              /* in the BVH */
+	int builder;        /* LOWER_BVH_SAH (default) or LOWER_BVH_MEDIAN */
+	int median_depth;   /* the median builder's maximum depth */
+} lower_options;
+
+/* What --stats prints about one BVH. */
+typedef struct {
+	int mesh;           /* the scene mesh, or -1 for the top level */
+	src_loc loc;
+	int prims, nodes, leaves, depth;
+	double sah_cost, build_ms;
+	size_t bytes;       /* nodes, primitives and normals */
+} lower_bvh_stats;
+
+typedef struct {
+	bvh_node *nodes;          /* the top level's, then each mesh's */
+	int n_nodes;
+	dev_prim *prims;          /* the top level's in BVH order, the planes, then each mesh's */
+	int n_prims;              /* in the top level's BVH */
 	int n_planes;             /* after them */
+	int n_all_prims;
+	float4 *normals;          /* three a smooth triangle */
+	int n_normals;
 	dev_material *materials;
 	int n_materials;
 	dev_light *lights;
 	int n_lights;
-	dev_emitter *emitters;    /* emissive primitives, with their power's cdf */
+	dev_emitter *emitters;    /* emissive primitives of the top level, with their power's cdf */
 	int n_emitters;
-	bvh_tree bvh;
+	lower_bvh_stats *stats;   /* [0] the top level, then one per mesh placed */
+	int n_stats;
 	dev_params params;        /* camera and background; the renderer fills the rest */
 } lower_result;
 
 /* Returns 0, or -1 after printing errors against the objects' source lines. */
-int lower_scene(const scene *s, lower_result *out);
+int lower_scene(const scene *s, const lower_options *opt, lower_result *out);
 void lower_free(lower_result *r);
 
-/* The physically based material of a POV-Ray texture and interior (exported for tests). */
+/* The physically based material of a POV-Ray texture and interior. */
 dev_material lower_material(const scene_material *m);
 
 #endif

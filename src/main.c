@@ -29,12 +29,13 @@ struct options {
 	int width, height, samples, seed, max_depth, device, quiet, integrator;
 	int list_devices, check, dump_ast, dump_scene;
 	double time_limit, checkpoint;
+	int bvh, stats;
 	const char *aov_name[MAX_AOVS], *aov_file[MAX_AOVS];
 	int n_aovs;
 };
 
 enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_DIR,
-       OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV };
+       OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_STATS };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -47,6 +48,8 @@ static const struct option long_options[] = {
 	{ "time-limit", required_argument, NULL, OPT_TIME_LIMIT },
 	{ "checkpoint", required_argument, NULL, OPT_CHECKPOINT },
 	{ "aov", required_argument, NULL, OPT_AOV },
+	{ "bvh", required_argument, NULL, OPT_BVH },
+	{ "stats", no_argument, NULL, OPT_STATS },
 	{ "device", required_argument, NULL, OPT_DEVICE },
 	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
 	{ "kernel-dir", required_argument, NULL, OPT_KERNEL_DIR },
@@ -78,6 +81,9 @@ static void usage(FILE *out)
 		"      --checkpoint S    write the image rendered so far every S seconds\n"
 		"      --aov NAME=FILE   also write an AOV: albedo, normal, depth, id or heat\n"
 		"                        (box and primitive tests per sample); repeatable\n"
+		"      --bvh NAME        sah (default): binned SAH; median: the reference paper's\n"
+		"                        split at the middle of the longest side, for comparison\n"
+		"      --stats           print the BVHs' statistics and the tests per ray\n"
 		"      --device N        OpenCL device to use (default: first GPU, else first CPU)\n"
 		"      --list-devices    list the OpenCL devices and exit\n"
 		"      --kernel-dir DIR  read the kernel sources from DIR instead of the built-in copy\n"
@@ -194,6 +200,14 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case OPT_TIME_LIMIT: o->time_limit = seconds_arg("--time-limit", optarg); break;
 		case OPT_CHECKPOINT: o->checkpoint = seconds_arg("--checkpoint", optarg); break;
 		case OPT_AOV: aov_arg(o, optarg); break;
+		case OPT_BVH:
+			if (strcmp(optarg, "sah") != 0 && strcmp(optarg, "median") != 0) {
+				fprintf(stderr, "eclat: --bvh is sah or median, not '%s'\n", optarg);
+				exit(1);
+			}
+			o->bvh = strcmp(optarg, "median") == 0 ? LOWER_BVH_MEDIAN : LOWER_BVH_SAH;
+			break;
+		case OPT_STATS: o->stats = 1; break;
 		case OPT_LIST_DEVICES: o->list_devices = 1; break;
 		case OPT_KERNEL_DIR: o->kernel_dir = optarg; break;
 		case OPT_CHECK: o->check = 1; break;
@@ -301,6 +315,17 @@ static int write_aovs(const struct options *o, const film *f)
 	int rc = rgb ? 0 : -1;
 	for (int i = 0; rc == 0 && i < o->n_aovs; i++) {
 		struct output out = { o->aov_file[i], o->scene };
+		if (strcmp(o->aov_name[i], "heat") == 0) {
+			image_meta meta = { o->scene, f->samples };
+			char err[512];
+			double mean;
+			rc = image_write_heat(out.path, f->heat, f->width, f->height, &meta, &mean, err, sizeof err);
+			if (rc)
+				fprintf(stderr, "eclat: %s\n", err);
+			else if (!o->quiet)
+				fprintf(stderr, "eclat: heat map: %.1f BVH tests per camera ray (per pixel per sample) on average\n", mean);
+			continue;
+		}
 		film view = *f;
 		view.rgb = rgb;
 		rc = film_aov(f, o->aov_name[i], rgb) || write_film(&view, &out);
@@ -321,16 +346,62 @@ static void summary(const render_settings *rs, const render_stats *st, const dev
 {
 	double s = st->seconds > 0 ? st->seconds : 1e-9, m = 1e-6 / s;
 	double paths = (double)rs->width * rs->height * st->samples;
+	const uint64_t *c = st->counts + COUNT_RAYS;
 	fprintf(stderr, "eclat: %dx%d, %ld samples in %.2f s on %s: %.2f M paths/s, %.2f M rays/s "
 	        "(camera %.2f, bounce %.2f, shadow %.2f)\n", rs->width, rs->height, st->samples, s, d->name,
-	        paths * m, (st->counts[COUNT_CAMERA] + st->counts[COUNT_BOUNCE] + st->counts[COUNT_SHADOW]) * m,
-	        st->counts[COUNT_CAMERA] * m, st->counts[COUNT_BOUNCE] * m, st->counts[COUNT_SHADOW] * m);
+	        paths * m, render_rays(st) * m, c[RAY_CAMERA] * m, c[RAY_BOUNCE] * m, c[RAY_SHADOW] * m);
+}
+
+static int instances(const lower_result *lr)
+{
+	int n = 0;
+	for (int i = 0; i < lr->n_prims; i++)
+		n += lr->prims[i].type == PRIM_INSTANCE;
+	return n;
+}
+
+/* --stats: each BVH as built, then what the rays cost. */
+static void print_bvh_stats(const scene *s, const lower_result *lr)
+{
+	for (int i = 0; i < lr->n_stats; i++) {
+		const lower_bvh_stats *b = &lr->stats[i];
+		if (b->mesh < 0)
+			fprintf(stderr, "bvh: top level (%d objects, %d of them placed meshes)", s->n_objects,
+			        instances(lr));
+		else
+			fprintf(stderr, "bvh: mesh %d at %s:%d:%d", b->mesh, diag_source_name(b->loc.file), b->loc.line,
+			        b->loc.col);
+		fprintf(stderr, ": %d primitives, %d nodes, %d leaves, depth %d, SAH cost %.2f, built in %.1f ms, "
+		        "%.2f MB\n", b->prims, b->nodes, b->leaves, b->depth, b->sah_cost, b->build_ms,
+		        b->bytes / 1048576.0);
+	}
+}
+
+static void print_ray_stats(const render_stats *st)
+{
+	static const char *const kinds[RAY_KINDS] = { "camera", "bounce", "shadow" };   /* ORDER RAY_ */
+	uint64_t rays = 0, tests = 0;
+	for (int k = 0; k < RAY_KINDS; k++) {
+		uint64_t n = st->counts[COUNT_RAYS + k];
+		rays += n;
+		tests += st->counts[COUNT_NODES + k] + st->counts[COUNT_PRIMS + k];
+		fprintf(stderr, "rays: %s: %llu rays, %.2f node tests and %.2f primitive tests per ray\n", kinds[k],
+		        (unsigned long long)n, n ? (double)st->counts[COUNT_NODES + k] / n : 0,
+		        n ? (double)st->counts[COUNT_PRIMS + k] / n : 0);
+	}
+	fprintf(stderr, "rays: all: %.2f tests per ray, %.2f tests per path (per pixel per sample)\n",
+	        rays ? (double)tests / rays : 0, st->counts[COUNT_RAYS + RAY_CAMERA]
+	        ? (double)tests / st->counts[COUNT_RAYS + RAY_CAMERA] : 0);
 }
 
 static int render_scene(const struct options *o, const scene *s, const char *output)
 {
 	lower_result lr;
-	if (lower_scene(s, &lr) || o->check) {
+	lower_options lo = { o->bvh, 24 };
+	int failed = lower_scene(s, &lo, &lr);
+	if (!failed && o->stats)
+		print_bvh_stats(s, &lr);
+	if (failed || o->check) {
 		int rc = diag_error_count() > 0;
 		lower_free(&lr);
 		return rc;
@@ -355,6 +426,8 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	    render_run(&dev, prog, &lr, &rs, &f, &st) == 0) {
 		if (!o->quiet)
 			summary(&rs, &st, &dev);
+		if (o->stats)
+			print_ray_stats(&st);
 		if (write_film(&f, &out) == 0 && write_aovs(o, &f) == 0)
 			rc = stop_signal ? 128 + stop_signal : 0;
 	}

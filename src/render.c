@@ -10,8 +10,9 @@
 /* The kernel's buffers in argument order (an X-macro, so creating, binding and
  * releasing them cannot drift apart): name, host pointer, bytes, flags. */
 #define RENDER_BUFFERS(X, LR, PARAMS, NPIX) \
-	X(nodes, (LR)->bvh.nodes, (LR)->bvh.n_nodes * sizeof(bvh_node), CL_MEM_READ_ONLY) \
-	X(prims, (LR)->prims, ((LR)->n_prims + (LR)->n_planes) * sizeof(dev_prim), CL_MEM_READ_ONLY) \
+	X(nodes, (LR)->nodes, (LR)->n_nodes * sizeof(bvh_node), CL_MEM_READ_ONLY) \
+	X(prims, (LR)->prims, (LR)->n_all_prims * sizeof(dev_prim), CL_MEM_READ_ONLY) \
+	X(normals, (LR)->normals, (LR)->n_normals * sizeof(float4), CL_MEM_READ_ONLY) \
 	X(materials, (LR)->materials, (LR)->n_materials * sizeof(dev_material), CL_MEM_READ_ONLY) \
 	X(lights, (LR)->lights, (LR)->n_lights * sizeof(dev_light), CL_MEM_READ_ONLY) \
 	X(emitters, (LR)->emitters, (LR)->n_emitters * sizeof(dev_emitter), CL_MEM_READ_ONLY) \
@@ -94,9 +95,10 @@ static void format_time(double s, char *out, size_t n)
 		snprintf(out, n, "%ld:%02ld", t / 60, t % 60);
 }
 
-static double rays(const render_stats *st)
+double render_rays(const render_stats *st)
 {
-	return (double)st->counts[COUNT_CAMERA] + st->counts[COUNT_BOUNCE] + st->counts[COUNT_SHADOW];
+	return (double)st->counts[COUNT_RAYS + RAY_CAMERA] + st->counts[COUNT_RAYS + RAY_BOUNCE] +
+	       st->counts[COUNT_RAYS + RAY_SHADOW];
 }
 
 /* One line, redrawn in place: samples, speed, time spent and left. */
@@ -110,7 +112,7 @@ static void progress(const struct pass_loop *pl)
 	format_time(frac > 0 ? el / frac - el : 0, left, sizeof left);
 	fprintf(stderr, "\r%3d%% [%.*s%*s] %ld/%d samples  %.2f M paths/s  %.2f M rays/s  %s elapsed  %s left ",
 	        (int)(100 * frac), bar, "========================", width - bar, "", st->samples,
-	        pl->rs->samples, pl->npix * (double)st->samples / el * 1e-6, rays(st) / el * 1e-6, elapsed,
+	        pl->rs->samples, pl->npix * (double)st->samples / el * 1e-6, render_rays(st) / el * 1e-6, elapsed,
 	        left);
 }
 

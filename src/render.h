@@ -30,6 +30,9 @@ typedef struct {
 	uint64_t counts[COUNT_N];    /* camera, bounce and shadow rays, box and primitive tests */
 } render_stats;
 
+/* All rays counted in st. */
+double render_rays(const render_stats *st);
+
 /* Renders up to rs->samples samples per pixel into f (film_init'ed here). Returns
  * 0 with f holding the samples done (fewer when stopped or out of time), or -1
  * after printing the OpenCL error. */

@@ -1,0 +1,16 @@
+/* mesh_io.h: triangle meshes from files (OBJ, PLY, STL, OFF, glTF and every other
+ * format assimp reads) into a scene_mesh. */
+#ifndef ECLAT_MESH_IO_H
+#define ECLAT_MESH_IO_H
+
+#include <stddef.h>
+
+#include "scene.h"
+
+/* Loads every triangle of the file, with the node transforms applied and shared
+ * vertices joined; the file's own normals become shading normals when it has them
+ * for every vertex. Points and lines are dropped. Returns 0, or -1 with assimp's
+ * reason (or ours) in err. m's arrays are the caller's (scene_add_mesh takes them). */
+int mesh_io_load(const char *path, scene_mesh *m, char *err, size_t errlen);
+
+#endif
