@@ -23,19 +23,22 @@
 #define DEFAULT_MAX_DEPTH 5
 #define MAX_SIZE 32768
 #define MAX_AOVS 8
+#define MAX_LIST 64   /* -I and -D options each */
 
 struct options {
 	const char *scene, *output, *kernel_dir;
 	int width, height, samples, seed, max_depth, device, quiet, integrator;
 	int list_devices, check, dump_ast, dump_scene;
 	double time_limit, checkpoint;
-	int bvh, stats;
+	int bvh, stats, skip_unsupported;
+	const char *include_dirs[MAX_LIST], *declares[MAX_LIST];
+	int n_include_dirs, n_declares;
 	const char *aov_name[MAX_AOVS], *aov_file[MAX_AOVS];
 	int n_aovs;
 };
 
 enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_DIR,
-       OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_STATS };
+       OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_STATS, OPT_SKIP_UNSUPPORTED };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -50,6 +53,9 @@ static const struct option long_options[] = {
 	{ "aov", required_argument, NULL, OPT_AOV },
 	{ "bvh", required_argument, NULL, OPT_BVH },
 	{ "stats", no_argument, NULL, OPT_STATS },
+	{ "include-path", required_argument, NULL, 'I' },
+	{ "declare", required_argument, NULL, 'D' },
+	{ "skip-unsupported", no_argument, NULL, OPT_SKIP_UNSUPPORTED },
 	{ "device", required_argument, NULL, OPT_DEVICE },
 	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
 	{ "kernel-dir", required_argument, NULL, OPT_KERNEL_DIR },
@@ -87,6 +93,10 @@ static void usage(FILE *out)
 		"      --device N        OpenCL device to use (default: first GPU, else first CPU)\n"
 		"      --list-devices    list the OpenCL devices and exit\n"
 		"      --kernel-dir DIR  read the kernel sources from DIR instead of the built-in copy\n"
+		"  -I, --include-path DIR  look for #include files in DIR too (repeatable)\n"
+		"  -D, --declare NAME=VALUE  declare NAME before the scene is read, as #declare\n"
+		"                        does; VALUE is a number, a \"string\" or an expression\n"
+		"      --skip-unsupported  leave out objects eclat cannot render, with a warning\n"
 		"      --check           check the scene for errors and warnings, render nothing\n"
 		"      --dump-ast        print the syntax tree and exit\n"
 		"      --dump-scene      print the evaluated scene in world space and exit\n"
@@ -94,7 +104,7 @@ static void usage(FILE *out)
 		"  -h, --help            show this help and exit\n"
 		"  -V, --version         show the version and exit\n"
 		"\n"
-		"POV-Ray's +WN +HN +OFILE +IFILE switches work too. Ctrl-C finishes the pass\n"
+		"POV-Ray's +WN +HN +OFILE +IFILE switches and Declare=NAME=VALUE work too. Ctrl-C finishes the pass\n"
 		"under way and writes the image rendered so far.\n"
 		"The scene language is described in eclat-scene(5), the options in eclat(1).\n",
 		DEFAULT_WIDTH, DEFAULT_HEIGHT, DEFAULT_SAMPLES, DEFAULT_MAX_DEPTH);
@@ -124,6 +134,15 @@ static double seconds_arg(const char *opt, const char *s)
 		exit(1);
 	}
 	return v;
+}
+
+static void list_arg(const char *opt, const char **list, int *n, const char *value)
+{
+	if (*n == MAX_LIST) {
+		fprintf(stderr, "eclat: at most %d %s options\n", MAX_LIST, opt);
+		exit(1);
+	}
+	list[(*n)++] = value;
 }
 
 /* --aov NAME=FILE */
@@ -161,6 +180,15 @@ static void translate_pov_switches(int argc, char **argv)
 	static const char *const map[][2] = { { "W", "--width=" }, { "H", "--height=" },
 	                                      { "O", "--output=" }, { "I", "" } };
 	for (int i = 1; i < argc; i++) {
+		if (strncmp(argv[i], "Declare=", 8) == 0) {   /* POV-Ray's Declare=NAME=VALUE */
+			size_t n = strlen(argv[i]) + 3;
+			char *opt = malloc(n);
+			if (!opt)
+				exit(1);
+			snprintf(opt, n, "-D%s", argv[i] + 8);
+			argv[i] = opt;
+			continue;
+		}
 		if (argv[i][0] != '+' || !argv[i][1])
 			continue;
 		size_t k = 0;
@@ -187,7 +215,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 	o->kernel_dir = getenv("ECLAT_KERNEL_DIR");
 	translate_pov_switches(argc, argv);
 	int c;
-	while ((c = getopt_long(argc, argv, "o:W:H:s:qhV", long_options, NULL)) != -1) {
+	while ((c = getopt_long(argc, argv, "o:W:H:s:I:D:qhV", long_options, NULL)) != -1) {
 		switch (c) {
 		case 'o': o->output = optarg; break;
 		case 'W': o->width = int_arg("--width", optarg, 1, MAX_SIZE); break;
@@ -208,6 +236,9 @@ static void parse_options(int argc, char **argv, struct options *o)
 			o->bvh = strcmp(optarg, "median") == 0 ? LOWER_BVH_MEDIAN : LOWER_BVH_SAH;
 			break;
 		case OPT_STATS: o->stats = 1; break;
+		case 'I': list_arg("-I", o->include_dirs, &o->n_include_dirs, optarg); break;
+		case 'D': list_arg("-D", o->declares, &o->n_declares, optarg); break;
+		case OPT_SKIP_UNSUPPORTED: o->skip_unsupported = 1; break;
 		case OPT_LIST_DEVICES: o->list_devices = 1; break;
 		case OPT_KERNEL_DIR: o->kernel_dir = optarg; break;
 		case OPT_CHECK: o->check = 1; break;
@@ -457,6 +488,14 @@ int main(int argc, char **argv)
 		free(output);
 		return 1;
 	}
+	eval_options eopt = eval_options_default();
+	eopt.include_dirs = o.include_dirs;
+	eopt.n_include_dirs = o.n_include_dirs;
+	eopt.declares = o.declares;
+	eopt.n_declares = o.n_declares;
+	eopt.skip_unsupported = o.skip_unsupported;
+	eopt.image_width = o.width;
+	eopt.image_height = o.height;
 	ast_node *tree = parse_file(o.scene, SRC_NOWHERE);
 	scene s;
 	scene_init(&s);
@@ -465,7 +504,7 @@ int main(int argc, char **argv)
 	else if (o.dump_ast) {
 		ast_dump(tree, stdout);
 		rc = 0;
-	} else if (eval_scene(tree, &s, NULL) == 0 && diag_error_count() == 0) {
+	} else if (eval_scene(tree, &s, &eopt) == 0 && diag_error_count() == 0) {
 		if (o.dump_scene)
 			scene_dump(&s, stdout);
 		rc = render_scene(&o, &s, output);
