@@ -90,6 +90,7 @@ enum kw_class {
 	X(FREQUENCY, "frequency", ARG) \
 	X(GRADIENT, "gradient", ARG) \
 	X(INSIDE_VECTOR, "inside_vector", ARG) \
+	X(MESH_FILE, "file", ARG) \
 	X(IOR, "ior", ARG) \
 	X(LAMBDA, "lambda", ARG) \
 	X(LOCATION, "location", ARG) \

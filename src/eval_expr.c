@@ -852,6 +852,25 @@ static int vector_function(struct eval *e, const ast_node *n, value *out)
 	return 0;
 }
 
+/* min_extent(Object), max_extent(Object): the corners of the object's box. */
+static int extent(struct eval *e, const ast_node *n, value *out)
+{
+	value v;
+	if (n->n_kids != 1 || eval_expr(e, n->kids[0], &v))
+		return -1;
+	if (v.kind != V_OBJECT || v.obj->n_objs == 0) {
+		eval_error(e, n->kids[0]->loc, "%s() needs an object", ast_keyword_name(n->kw));
+		eval_value_free(&v);
+		return -1;
+	}
+	double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
+	for (int i = 0; i < v.obj->n_objs; i++)
+		scene_object_bounds(e->s, &v.obj->objs[i], lo, hi);
+	eval_value_free(&v);
+	*out = eval_vector3(n->kw == KW_MIN_EXTENT ? lo : hi);
+	return 0;
+}
+
 static int builtin(struct eval *e, const ast_node *n, value *out)
 {
 	switch (n->kw) {
@@ -860,7 +879,9 @@ static int builtin(struct eval *e, const ast_node *n, value *out)
 		return string_function(e, n, &out->str);
 	case KW_VLENGTH: case KW_VDOT: case KW_VNORMALIZE: case KW_VCROSS: case KW_VROTATE: case KW_VAXIS_ROTATE:
 		return vector_function(e, n, out);
-	case KW_INSIDE: case KW_TRACE: case KW_MIN_EXTENT: case KW_MAX_EXTENT: case KW_VTURBULENCE:
+	case KW_MIN_EXTENT: case KW_MAX_EXTENT:
+		return extent(e, n, out);
+	case KW_INSIDE: case KW_TRACE: case KW_VTURBULENCE:
 		eval_error(e, n->loc, "%s() is not supported yet", ast_keyword_name(n->kw));
 		return -1;
 	default: {

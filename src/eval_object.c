@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "eval_int.h"
+#include "mesh_io.h"
 
 /* "a sphere", "an object": for the messages. */
 static const char *with_article(const char *name, char *out, size_t size)
@@ -301,6 +302,8 @@ static int object_modifier(struct eval *e, struct cursor *c, const ast_node *ite
 		return rc;
 	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING)
 		return 0;
+	if ((rc = eval_skip_pov_word(e, c, item)) <= 0)
+		return rc;
 	if (item->kind == AST_BLOCK && (item->kw == KW_BOUNDED_BY || item->kw == KW_CLIPPED_BY)) {
 		eval_warn_once(e, item->loc, ast_keyword_name(item->kw), "'%s' is not supported yet; ignored",
 		               ast_keyword_name(item->kw));
@@ -725,7 +728,53 @@ static int mesh_object(struct eval *e, const ast_node *b, struct mesh_build *mb,
 	return rc;
 }
 
-/* mesh { TRIANGLE... [inside_vector <V>] [OBJECT_MODIFIERS...] } */
+/* The folder of the file that holds loc, joined to name when name is relative. */
+static char *beside_source(src_loc loc, const char *name)
+{
+	const char *from = diag_source_name(loc.file), *slash = strrchr(from, '/');
+	size_t n = strlen(name) + (slash ? (size_t)(slash - from) + 1 : 0) + 1;
+	char *path = eval_xrealloc(NULL, n);
+	if (name[0] == '/' || !slash)
+		snprintf(path, n, "%s", name);
+	else
+		snprintf(path, n, "%.*s/%s", (int)(slash - from), from, name);
+	return path;
+}
+
+/* file "NAME" in a mesh, an eclat extension: the triangles of a mesh file (OBJ,
+ * PLY, STL, OFF, glTF and the other formats assimp reads), NAME relative to the
+ * folder of the scene file that says it. POV-Ray skips it inside
+ * #ifdef (eclat_version). */
+static int mesh_file(struct eval *e, const ast_node *item, struct mesh_build *mb)
+{
+	char *name, err[512];
+	if (eval_expect_string(e, item->kids[0], &name))
+		return -1;
+	if (mb->m.n_faces > 0) {
+		eval_error(e, item->loc, "a mesh takes its triangles from a file or from triangle blocks, not both");
+		free(name);
+		return -1;
+	}
+	char *path = beside_source(item->kids[0]->loc, name);
+	free(name);
+	scene_mesh m;
+	int rc = mesh_io_load(path, &m, err, sizeof err);
+	if (rc)
+		eval_error(e, item->kids[0]->loc, "cannot load the mesh '%s': %s", path, err);
+	free(path);
+	if (rc)
+		return -1;
+	m.face_mat = eval_xrealloc(NULL, (m.n_faces ? m.n_faces : 1) * sizeof *m.face_mat);
+	for (int f = 0; f < m.n_faces; f++)
+		m.face_mat[f] = -1;   /* every face takes the mesh's texture */
+	mesh_build_free(mb);
+	*mb = (struct mesh_build){ .m = m, .cap_v = m.n_v, .cap_f = m.n_faces, .cap_nrm = m.n_nrm,
+	                           .smooth = m.nrm != NULL };
+	return 0;
+}
+
+/* mesh { TRIANGLE... [inside_vector <V>] [OBJECT_MODIFIERS...] }
+ * mesh { file "NAME" [inside_vector <V>] [OBJECT_MODIFIERS...] }   (eclat) */
 static int mesh(struct eval *e, const ast_node *b, value *out)
 {
 	struct mesh_build mb = { 0 };
@@ -738,6 +787,8 @@ static int mesh(struct eval *e, const ast_node *b, value *out)
 			rc = mesh_triangle(e, item, &mb);
 		else if (item->kind == AST_ARG && item->kw == KW_INSIDE_VECTOR)
 			rc = inside_vector(e, item, &mb.m);
+		else if (item->kind == AST_ARG && item->kw == KW_MESH_FILE)
+			rc = mesh_file(e, item, &mb);
 		else {
 			eval_unget(&c, item);
 			break;

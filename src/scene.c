@@ -526,3 +526,54 @@ void scene_dump(const scene *s, FILE *out)
 	for (int i = 0; i < s->n_meshes; i++)
 		dump_mesh(out, i, &s->meshes[i]);
 }
+
+static void grow_box(double lo[3], double hi[3], const double p[3])
+{
+	for (int k = 0; k < 3; k++) {
+		lo[k] = fmin(lo[k], p[k]);
+		hi[k] = fmax(hi[k], p[k]);
+	}
+}
+
+void scene_object_bounds(const scene *s, const scene_object *o, double lo[3], double hi[3])
+{
+	double w[3];
+	switch (o->shape) {
+	case SHAPE_SPHERE:   /* the box of the image of a ball: per axis, the row's length */
+		for (int k = 0; k < 3; k++) {
+			double c = o->xf.m[k][0] * o->p[0][0] + o->xf.m[k][1] * o->p[0][1] + o->xf.m[k][2] * o->p[0][2] +
+			           o->xf.m[k][3];
+			double h = o->radius * sqrt(o->xf.m[k][0] * o->xf.m[k][0] + o->xf.m[k][1] * o->xf.m[k][1] +
+			                            o->xf.m[k][2] * o->xf.m[k][2]);
+			lo[k] = fmin(lo[k], c - h);
+			hi[k] = fmax(hi[k], c + h);
+		}
+		return;
+	case SHAPE_TRIANGLE:
+	case SHAPE_SMOOTH_TRIANGLE:
+		for (int i = 0; i < 3; i++) {
+			scene_xform_point(&o->xf, o->p[i], w);
+			grow_box(lo, hi, w);
+		}
+		return;
+	case SHAPE_BOX:
+		for (int c = 0; c < 8; c++) {
+			double p[3] = { o->p[c & 1][0], o->p[(c >> 1) & 1][1], o->p[(c >> 2) & 1][2] };
+			scene_xform_point(&o->xf, p, w);
+			grow_box(lo, hi, w);
+		}
+		return;
+	case SHAPE_MESH:
+		for (int v = 0; v < s->meshes[o->mesh].n_v; v++) {
+			scene_xform_point(&o->xf, s->meshes[o->mesh].v[v], w);
+			grow_box(lo, hi, w);
+		}
+		return;
+	case SHAPE_PLANE:   /* unbounded, as POV-Ray says */
+		for (int k = 0; k < 3; k++) {
+			lo[k] = -1e10;
+			hi[k] = 1e10;
+		}
+		return;
+	}
+}
