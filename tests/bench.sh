@@ -27,6 +27,11 @@ run "the paper's random walk, SAH BVH, $SAMPLES samples" -s "$SAMPLES" --integra
 run "path tracer, the paper's median-split BVH, 1 sample" -s 1 --bvh median
 median=$(sed -n 's/^rays: all: .*, \([0-9.]*\) tests per path.*/\1/p' "$out/log")
 
+echo "== 10,000 dragons (a billion triangles), 480x270, 4 samples"
+"$ECLAT" --stats -W 480 -H 270 -s 4 -D Mesh="\"$MESH_DIR/dragon.obj\"" -o "$out/dragons.png" \
+	"$top_srcdir/tests/bench/dragons.scn" 2> "$out/log" || { cat "$out/log"; exit 1; }
+tr '\r' '\n' < "$out/log" | grep -E '^(eclat|bvh):' | sed 's/^/  /'
+
 echo "== summary"
 echo "$paths $sah $median" | awk '{
 	printf "  path tracer: %.2f M paths/s; Blender Cycles (CPU) does 0.75 M samples/s here (%.2fx),\n", $1, $1 / 0.75
