@@ -28,6 +28,7 @@ typedef void *yyscan_t;
 #define YYMAXDEPTH 2000
 #define CHECK_DEPTH(n) parse_check_depth(ctx, (n))
 #define LIST(name, yl) ast_block(ast_new(AST_BLOCK, L(yl)), KW_UNKNOWN, strdup(name), L(yl))
+#define NAMED(name, items) ast_block((items), KW_UNKNOWN, strdup(name), (items)->loc)
 static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct parse_ctx *ctx, const char *msg);
 }
 
@@ -115,6 +116,7 @@ items:
 	%empty                        { $$ = ast_new(AST_BLOCK, L(@$)); }
 	| items item                  { $$ = ast_append($1, CHECK_DEPTH($2)); }
 	| items ','                   { $$ = $1; /* commas between arguments are optional in POV-Ray */ }
+	| items ';'                   { $$ = $1; /* the end of a #declare, maybe given by a macro */ }
 	| items error                 { $$ = $1; if (ctx->errors >= PARSE_MAX_ERRORS) YYABORT; }
 	;
 
@@ -123,6 +125,9 @@ item:
 	| block                       { $$ = $1; }
 	| T_ARG_KW cexpr %prec LOW    { $$ = ast_keyword(AST_ARG, L(@1), $1, $2); }
 	| T_FLAG_KW                   { $$ = ast_keyword(AST_FLAG, L(@1), $1, NULL); }
+	| T_BLOCK_KW cexpr %prec LOW  { $$ = ast_keyword(AST_ARG, L(@1), $1, $2);
+	                                /* interior 2, .5 of a fractal pattern */ }
+	| T_ONCE                      { $$ = ast_keyword(AST_FLAG, L(@1), KW_ONCE, NULL); /* image_map { ... once } */ }
 	| '[' items ']'               { $$ = $2; $$->kind = AST_ENTRY; $$->loc = L(@1); }
 	| directive                   { $$ = $1; }
 	;
@@ -148,39 +153,41 @@ layers:
 	;
 
 function:
-	T_FUNCTION '{' items '}'      { $$ = ast_op(AST_FUNCTION, L(@1), 0, LIST("params", @1), $3); }
+	T_FUNCTION '{' items '}'      { $$ = ast_op(AST_FUNCTION, L(@1), 0, LIST("params", @1), NAMED("body", $3)); }
+	| T_FUNCTION T_NUMBER ',' T_NUMBER '{' items '}'
+	                              { $$ = ast_op(AST_FUNCTION, L(@1), 0, LIST("params", @1), NAMED("body", $6));
+	                                /* an image of Width, Height pixels: read, not evaluated */ }
 	| T_FUNCTION '(' params ')' '{' items '}'
-	                              { $$ = ast_op(AST_FUNCTION, L(@1), 0, $3, $6); }
+	                              { $$ = ast_op(AST_FUNCTION, L(@1), 0, $3, NAMED("body", $6)); }
 	;
 
 /* ---- directives ---- */
 
 directive:
-	decl_kw lvalue '=' value opt_semi     { $$ = ast_declare(L(@1), $1, $2, $4); }
-	| decl_kw T_DEPRECATED deprecation T_STRING lvalue '=' value opt_semi
+	decl_kw lvalue '=' value              { $$ = ast_declare(L(@1), $1, $2, $4); }
+	| decl_kw T_DEPRECATED deprecation T_STRING lvalue '=' value
 	                                      { $$ = ast_declare(L(@1), $1, $5, $7); free($4); }
 	| D_INCLUDE cexpr %prec LOW           { $$ = ast_op(AST_INCLUDE, L(@1), 0, $2, NULL); }
 	| D_MACRO T_IDENT '(' params ')' T_MACRO_BODY
 	                                      { $$ = ast_named(AST_MACRO, L(@1), $2, $4, $6); }
-	| D_IF '(' expr ')' items if_tail     { $$ = ast_concat(ast_op(AST_IF, L(@1), 'i', $3, $5), $6); }
+	| D_IF '(' expr ')' items if_tail     { $$ = ast_concat(ast_op(AST_IF, L(@1), 'i', $3, NAMED("then", $5)), $6); }
 	| D_IF '(' expr ')' items head D_ELSE items head D_END items '}'
-	                                      { $$ = ast_if_heads(L(@1), $3, $5, $6, $8, $9, $11); }
+	                                      { $$ = ast_if_heads(L(@1), $3, NAMED("then", $5), $6, NAMED("else", $8), $9, $11); }
 	| D_IFDEF '(' lvalue ')' items if_tail
-	                                      { $$ = ast_concat(ast_op(AST_IF, L(@1), 'd', $3, $5), $6); }
+	                                      { $$ = ast_concat(ast_op(AST_IF, L(@1), 'd', $3, NAMED("then", $5)), $6); }
 	| D_IFNDEF '(' lvalue ')' items if_tail
-	                                      { $$ = ast_concat(ast_op(AST_IF, L(@1), 'n', $3, $5), $6); }
-	| D_WHILE '(' expr ')' items D_END    { $$ = ast_op(AST_WHILE, L(@1), 0, $3, $5); }
+	                                      { $$ = ast_concat(ast_op(AST_IF, L(@1), 'n', $3, NAMED("then", $5)), $6); }
+	| D_WHILE '(' expr ')' items D_END    { $$ = ast_op(AST_WHILE, L(@1), 0, $3, NAMED("body", $5)); }
 	| D_FOR '(' T_IDENT ',' expr ',' expr ')' items D_END
-	                                      { $$ = ast_named(AST_FOR, L(@1), $3, $5, $7); ast_append($$, $9); }
+	                                      { $$ = ast_named(AST_FOR, L(@1), $3, $5, $7); ast_append($$, NAMED("body", $9)); }
 	| D_FOR '(' T_IDENT ',' expr ',' expr ',' expr ')' items D_END
 	                                      { $$ = ast_named(AST_FOR, L(@1), $3, $5, $7);
-	                                        ast_append(ast_append($$, $9), $11); }
+	                                        ast_append(ast_append($$, $9), NAMED("body", $11)); }
 	| D_SWITCH '(' expr ')' switch_items D_END
 	                                      { $$ = ast_op(AST_SWITCH, L(@1), 0, $3, $5); }
 	| D_BREAK                             { $$ = ast_new(AST_BREAK, L(@1)); }
 	| D_UNDEF T_IDENT                     { $$ = ast_text(AST_UNDEF, L(@1), $2); }
 	| D_VERSION cexpr %prec LOW           { $$ = ast_op(AST_VERSION, L(@1), 0, $2, NULL); }
-	| D_VERSION cexpr ';'                 { $$ = ast_op(AST_VERSION, L(@1), 0, $2, NULL); }
 	| D_DEFAULT '{' items '}'             { $$ = $3; $$->kind = AST_DEFAULT; $$->loc = L(@1); }
 	| D_DEBUG cexpr %prec LOW             { $$ = ast_op(AST_MESSAGE, L(@1), 'd', $2, NULL); }
 	| D_WARNING cexpr %prec LOW           { $$ = ast_op(AST_MESSAGE, L(@1), 'w', $2, NULL); }
@@ -189,8 +196,8 @@ directive:
 	                                        free($2); free($4); }
 	| D_FCLOSE T_IDENT                    { $$ = ast_named(AST_FILE_IO, L(@1), strdup("fclose"), NULL, NULL);
 	                                        free($2); }
-	| D_READ '(' args ')'                 { $$ = ast_named(AST_FILE_IO, L(@1), strdup("read"), $3, NULL); }
-	| D_WRITE '(' args ')'                { $$ = ast_named(AST_FILE_IO, L(@1), strdup("write"), $3, NULL); }
+	| D_READ '(' items ')'                { $$ = ast_named(AST_FILE_IO, L(@1), strdup("read"), $3, NULL); }
+	| D_WRITE '(' items ')'               { $$ = ast_named(AST_FILE_IO, L(@1), strdup("write"), $3, NULL); }
 	;
 
 /* The opening of a block, when an #if chooses between two (merge or union). */
@@ -225,11 +232,13 @@ value:
 	| layers %prec LOW            { $$ = $1; }
 	| function                    { $$ = $1; }
 	| array                       { $$ = $1; }
-	;
-
-opt_semi:
-	%empty
-	| ';'
+	| D_IF '(' expr ')' items if_tail
+	                              { $$ = ast_concat(ast_op(AST_IFEXPR, L(@1), 'i', $3, NAMED("then", $5)), $6);
+	                                /* #declare S = #if (C) sphere {...} #else box {...} #end */ }
+	| D_IFDEF '(' lvalue ')' items if_tail
+	                              { $$ = ast_concat(ast_op(AST_IFEXPR, L(@1), 'd', $3, NAMED("then", $5)), $6); }
+	| D_IFNDEF '(' lvalue ')' items if_tail
+	                              { $$ = ast_concat(ast_op(AST_IFEXPR, L(@1), 'n', $3, NAMED("then", $5)), $6); }
 	;
 
 if_tail:
@@ -237,13 +246,14 @@ if_tail:
 	| D_ELSE items D_END          { $$ = ast_append(ast_new(AST_BLOCK, L(@1)),
 	                                                ast_block($2, KW_UNKNOWN, strdup("else"), L(@1))); }
 	| D_ELSEIF '(' expr ')' items if_tail
-	                              { $$ = ast_concat(ast_op(AST_BLOCK, L(@1), 0, $3, $5), $6); }
+	                              { $$ = ast_concat(ast_op(AST_BLOCK, L(@1), 0, $3, NAMED("then", $5)), $6); }
 	;
 
 switch_items:
 	%empty                        { $$ = ast_block(ast_new(AST_BLOCK, L(@$)), KW_UNKNOWN, strdup("body"), L(@$)); }
 	| switch_items item           { $$ = ast_append($1, CHECK_DEPTH($2)); }
 	| switch_items ','            { $$ = $1; }
+	| switch_items ';'            { $$ = $1; }
 	| switch_items error          { $$ = $1; if (ctx->errors >= PARSE_MAX_ERRORS) YYABORT; }
 	| switch_items D_CASE '(' expr ')'
 	                              { $$ = ast_append($1, ast_op(AST_CASE, L(@2), 0, $4, NULL)); }
@@ -353,9 +363,10 @@ primary:
 	| T_IDENT '(' args ')'        { $$ = ast_concat(ast_text(AST_CALL, L(@1), $1), $3); }
 	| T_FUNC_KW '(' args ')'      { $$ = ast_concat(ast_keyword(AST_FUNC, L(@1), $1, NULL), $3); }
 	| '<' components '>'          { $$ = $2; $$->loc = L(@1); }
+	| '<' components ',' '>'      { $$ = $2; $$->loc = L(@1); /* POV-Ray allows <1, 2, 3,> */ }
 	| '(' expr ')'                { $$ = $2; }
 	| '(' D_IF '(' expr ')' items if_tail ')'
-	                              { $$ = ast_concat(ast_op(AST_IFEXPR, L(@2), 'i', $4, $6), $7); }
+	                              { $$ = ast_concat(ast_op(AST_IFEXPR, L(@2), 'i', $4, NAMED("then", $6)), $7); }
 	;
 
 /* POV-Ray's commas between components are optional too: <1 2 3>, but <1 -2> is <-1>. */

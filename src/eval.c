@@ -584,22 +584,24 @@ static bool enter_macro(struct cursor *c, const ast_node *call, const value *mac
 		           call->str, EVAL_MAX_MACRO_DEPTH);
 		return false;
 	}
-	const ast_node *body = macro->node->kids[1];
+	const ast_node *def = macro->node;   /* the arguments may redeclare the macro */
+	const ast_node *body = def->kids[1];
 	if (body->kind == AST_MESSAGE) {   /* its syntax error, kept until now (parse_macro_body) */
-		if (e->n_ctx < EVAL_MAX_CONTEXT)
-			e->ctx[e->n_ctx++] = (struct context){ macro->node->str, call->loc };
+		bool pushed = e->n_ctx < EVAL_MAX_CONTEXT;
+		if (pushed)
+			e->ctx[e->n_ctx++] = (struct context){ def->str, call->loc };
 		eval_error(e, body->loc, "%s", body->str);
-		e->n_ctx--;
+		e->n_ctx -= pushed;
 		return false;
 	}
-	struct scope *s = bind_args(e, call, macro->node);
+	struct scope *s = bind_args(e, call, def);
 	if (!s)
 		return false;
 	scope_push(e, s);
 	e->macro_depth++;
-	struct frame *f = push_frame(c, FR_MACRO, macro->node->kids[1]);
+	struct frame *f = push_frame(c, FR_MACRO, body);
 	f->scope = true;
-	push_context(e, f, macro->node->str, call->loc);
+	push_context(e, f, def->str, call->loc);
 	return true;
 }
 
@@ -949,6 +951,16 @@ const ast_node *eval_next_expr(struct cursor *c, int *err)
 {
 	const ast_node *n = eval_next(c, err);
 	if (n && !AST_IS_EXPRESSION(n->kind)) {
+		eval_unget(c, n);
+		return NULL;
+	}
+	return n;
+}
+
+const ast_node *eval_next_optional(struct cursor *c, int *err)
+{
+	const ast_node *n = eval_next_expr(c, err);
+	if (n && n->kind == AST_IDENT && !eval_lookup(c->e, n->str)) {
 		eval_unget(c, n);
 		return NULL;
 	}

@@ -41,42 +41,45 @@ static int identifier(struct eval *e, const ast_node *n, value *out)
 	return 0;
 }
 
-/* An element of an array: the index of each dimension, 0-based. */
+/* An element of an array: the index of each dimension, 0-based. The indices are
+ * evaluated first: one may call a macro that changes the array. */
 static value *element(struct eval *e, const ast_node *n, int *err)
 {
 	const ast_node *base = n, *idx[8];
-	int k = 0;
+	int k = 0, at = 0, i[8];
 	while (base->kind == AST_INDEX && k < 8) {
 		idx[k++] = base->kids[1];
 		base = base->kids[0];
 	}
+	for (int d = 0; d < k; d++)
+		if (eval_expect_int(e, idx[k - 1 - d], &i[d])) {
+			*err = 1;
+			return NULL;
+		}
+	if (base->kind != AST_IDENT) {
+		eval_error(e, n->loc, "only a declared array can be indexed");
+		*err = 1;
+		return NULL;
+	}
 	value *a = eval_reference(e, base, err);
 	if (!a)
 		return NULL;
-	if (a->kind != V_ARRAY) {
-		eval_error(e, n->loc, "expected an array before '[', found %s", eval_kind_name(a->kind));
+	if (a->kind != V_ARRAY || k != a->arr->dims) {
+		if (a->kind != V_ARRAY)
+			eval_error(e, n->loc, "expected an array before '[', found %s", eval_kind_name(a->kind));
+		else
+			eval_error(e, n->loc, "the array has %d dimension%s, not %d", a->arr->dims,
+			           a->arr->dims == 1 ? "" : "s", k);
 		*err = 1;
 		return NULL;
 	}
-	if (k != a->arr->dims) {
-		eval_error(e, n->loc, "the array has %d dimension%s, not %d", a->arr->dims, a->arr->dims == 1 ? "" : "s", k);
-		*err = 1;
-		return NULL;
-	}
-	int at = 0;
 	for (int d = 0; d < k; d++) {
-		int i;
-		const ast_node *ix = idx[k - 1 - d];
-		if (eval_expect_int(e, ix, &i)) {
+		if (i[d] < 0 || i[d] >= a->arr->size[d]) {
+			eval_error(e, idx[k - 1 - d]->loc, "index %d is out of the range 0 to %d", i[d], a->arr->size[d] - 1);
 			*err = 1;
 			return NULL;
 		}
-		if (i < 0 || i >= a->arr->size[d]) {
-			eval_error(e, ix->loc, "index %d is out of the range 0 to %d", i, a->arr->size[d] - 1);
-			*err = 1;
-			return NULL;
-		}
-		at = at * a->arr->size[d] + i;
+		at = at * a->arr->size[d] + i[d];
 	}
 	return &a->arr->elems[at];
 }
@@ -324,9 +327,15 @@ static int rgb_form(struct eval *e, const ast_node *n, const value *a, value *ou
 /* red F, Base green F...: one component set in a colour (black by default). */
 static int component_form(struct eval *e, const ast_node *n, value *out)
 {
-	value base = { .kind = V_COLOR, .n = 5 }, c;
+	value base = { .kind = V_COLOR, .n = 5 };
 	if (n->n_kids == 2 && expr(e, n->kids[0], &base))
 		return -1;
+	return eval_component(e, n, &base, out);
+}
+
+int eval_component(struct eval *e, const ast_node *n, value *base_in, value *out)
+{
+	value base = *base_in, c;
 	if (!numeric(e, n, &base, ast_keyword_name(n->kw))) {
 		eval_value_free(&base);
 		return -1;
@@ -579,7 +588,9 @@ static int array_float(struct eval *e, const ast_node *n, double *r)
 {
 	if (nargs(e, n, n->kw == KW_DIMENSIONS ? 1 : 2, n->kw == KW_DIMENSIONS ? 1 : 2))
 		return -1;
-	int err = 0;
+	int err = 0, d = 0;
+	if (n->kw == KW_DIMENSION_SIZE && eval_expect_int(e, n->kids[1], &d))
+		return -1;   /* first: it may run a macro that changes the array */
 	const value *a = eval_reference(e, n->kids[0], &err);
 	if (!a || a->kind != V_ARRAY) {
 		if (!err)
@@ -590,9 +601,6 @@ static int array_float(struct eval *e, const ast_node *n, double *r)
 		*r = a->arr->dims;
 		return 0;
 	}
-	int d;
-	if (eval_expect_int(e, n->kids[1], &d))
-		return -1;
 	if (d < 1 || d > a->arr->dims) {
 		eval_warning(e, n->kids[1]->loc, "dimension %d of an array of %d dimension%s; its size is 0", d,
 		             a->arr->dims, a->arr->dims == 1 ? "" : "s");
@@ -941,7 +949,10 @@ static int call(struct eval *e, const ast_node *n, value *out)
 		value f = *v;
 		return eval_call_function(e, n, &f, out);
 	}
-	eval_error(e, n->loc, "'%s' is %s, not a macro or a function", n->str, eval_kind_name(v->kind));
+	if (v->kind == V_OTHER)
+		eval_error(e, n->loc, "'%s' is a %s, which eclat cannot evaluate yet", n->str, v->str);
+	else
+		eval_error(e, n->loc, "'%s' is %s, not a macro or a function", n->str, eval_kind_name(v->kind));
 	return -1;
 }
 

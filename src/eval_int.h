@@ -120,7 +120,6 @@ struct eval {
 	int n_trees;
 	char **warned;           /* the kinds of constructs already warned about */
 	int n_warned;
-	int camera_set;
 };
 
 /* Errors and warnings with the chain of includes and macro calls as notes. */
@@ -158,6 +157,9 @@ void eval_unget(struct cursor *c, const ast_node *item);
 /* The next item if it is an expression (used for optional arguments), else NULL
  * with the item left for the next eval_next. */
 const ast_node *eval_next_expr(struct cursor *c, int *err);
+/* The same for an optional value after a keyword (hollow [Bool]): an
+ * identifier that is not declared is no value but the next keyword of POV-Ray's. */
+const ast_node *eval_next_optional(struct cursor *c, int *err);
 
 /* Whether a file named in the scene can be found, as #include looks for it. */
 bool eval_file_exists(struct eval *e, int from_file, const char *name);
@@ -169,6 +171,8 @@ int eval_if_value(struct eval *e, const ast_node *n, value *out);
 
 /* ---- expressions (eval_expr.c) ---- */
 int eval_expr(struct eval *e, const ast_node *n, value *out);
+/* Sets the component of n (red F...) in base (taken). */
+int eval_component(struct eval *e, const ast_node *n, value *base, value *out);
 int eval_expect_float(struct eval *e, const ast_node *n, double *f);
 int eval_expect_int(struct eval *e, const ast_node *n, int *i);
 int eval_expect_vector(struct eval *e, const ast_node *n, double out[3]);
@@ -206,6 +210,8 @@ int eval_default(struct eval *e, const ast_node *d);
 void eval_place(struct eval *e, value *obj);
 /* Complains about an item a block does not accept. */
 int eval_not_valid(struct eval *e, const ast_node *item, const char *where);
+int eval_skip_pov_word(struct eval *e, struct cursor *c, const ast_node *item);
+const ast_node *eval_pov_word_item(struct eval *e, const ast_node *item);
 /* The POV-Ray words eclat parses but cannot do: "object", "modifier"... or NULL. */
 const char *eval_pov_word(const char *name);
 /* Colours: pow(sRGB decode(c), 1 / assumed_gamma). */

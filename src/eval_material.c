@@ -114,6 +114,7 @@ static void map_average(const struct map_point *p, int n, double out[5])
 struct map_build {
 	struct map_point *p;
 	int n;
+	bool unordered;          /* entries without values (average): a plain mean */
 	bool finish_set;
 	scene_material first;   /* a texture_map's first texture, for its finish */
 };
@@ -159,23 +160,48 @@ static int entry_color(struct eval *e, const ast_node *at, value *v, int map_kw,
  * the items after the value are those of a pigment { } or texture { }. */
 static int body_entry(struct eval *e, const ast_node *entry, int map_kw, struct map_build *mb)
 {
-	double at, c[5];
-	if (entry->n_kids < 2) {
+	double at = 0, c[5];
+	/* The maps of the average pattern may leave the value out (a weight of 1):
+	 * the first item is the value when it is a float and more items follow. */
+	int first = 0;
+	if (entry->n_kids >= 2 && AST_IS_EXPRESSION(entry->kids[0]->kind)) {
+		value v0;
+		if (eval_expr(e, entry->kids[0], &v0))
+			return -1;
+		first = v0.kind == V_FLOAT;
+		at = v0.v[0];
+		eval_value_free(&v0);
+	}
+	if (entry->n_kids < 1) {
 		eval_error(e, entry->loc, "a map entry is [Value ITEMS]");
 		return -1;
 	}
-	if (eval_expect_float(e, entry->kids[0], &at))
-		return -1;
+	if (!first)
+		mb->unordered = true;
 	ast_node body = { .kind = AST_BLOCK, .kw = map_kw == KW_PIGMENT_MAP ? KW_PIGMENT : KW_TEXTURE,
-	                  .loc = entry->kids[1]->loc, .kids = entry->kids + 1, .n_kids = entry->n_kids - 1 };
+	                  .loc = entry->kids[first]->loc, .kids = entry->kids + first, .n_kids = entry->n_kids - first };
 	value v;
 	if (eval_material_value(e, &body, &v))
 		return -1;
-	int rc = entry_color(e, entry->kids[1], &v, map_kw, mb, c);
+	int rc = entry_color(e, entry->kids[first], &v, map_kw, mb, c);
 	if (rc == 0)
 		map_add(mb, at, c);
 	eval_value_free(&v);
 	return rc;
+}
+
+/* [0.5 red 1 green 0.5]: the grammar reads "0.5 red 1" as a colour of base 0.5.
+ * POV-Ray reads the value, then a colour: undo the first, with black instead. */
+static int split_entry(struct eval *e, const ast_node *n, value *at, value *col)
+{
+	if (n->kind == AST_COLOR && n->n_kids == 2 && ast_keyword_class(n->kw) == KWC_COMP) {
+		value base;
+		if (split_entry(e, n->kids[0], at, &base))
+			return -1;
+		return eval_component(e, n, &base, col);
+	}
+	*col = (value){ .kind = V_COLOR, .n = 5 };
+	return eval_expr(e, n, at);
 }
 
 /* [Value ITEM [MODIFIERS]] or POV-Ray's old [Value1, Value2 COLOR1 COLOR2]: the
@@ -186,7 +212,12 @@ static int map_entry(struct eval *e, const ast_node *entry, int map_kw, struct m
 	value v[4] = { 0 };
 	const ast_node *at[4];
 	int n = 0, rc = 0;
-	for (int i = 0; rc == 0 && i < entry->n_kids; i++) {
+	if (entry->n_kids == 1 && entry->kids[0]->kind == AST_COLOR && entry->kids[0]->n_kids == 2) {
+		at[0] = at[1] = entry->kids[0];
+		rc = split_entry(e, entry->kids[0], &v[0], &v[1]);
+		n = rc == 0 ? 2 : 0;
+	}
+	for (int i = n ? entry->n_kids : 0; rc == 0 && i < entry->n_kids; i++) {
 		const ast_node *k = entry->kids[i];
 		xform t = scene_xform_identity();
 		if (AST_IS_EXPRESSION(k->kind) || (k->kind == AST_BLOCK && n > 0 && !eval_transform_item(e, NULL, k, &t))) {
@@ -248,8 +279,13 @@ static int map_block(struct eval *e, const ast_node *b, value *out)
 	}
 	eval_cursor_free(&c);
 	if (rc == 0 && !err) {
-		double avg[5];
-		map_average(mb.p, mb.n, avg);
+		double avg[5] = { 0 };
+		if (mb.unordered)
+			for (int i = 0; i < mb.n; i++)
+				for (int k = 0; k < 5; k++)
+					avg[k] += mb.p[i].c[k] / mb.n;
+		else
+			map_average(mb.p, mb.n, avg);
 		if (mb.finish_set)
 			out->mat = mb.first;
 		for (int k = 0; k < 5; k++)
@@ -286,6 +322,7 @@ static bool is_pattern_modifier(const ast_node *item)
 		switch (item->kw) {
 		case KW_TURBULENCE: case KW_OCTAVES: case KW_OMEGA: case KW_LAMBDA: case KW_FREQUENCY:
 		case KW_PHASE: case KW_AGATE_TURB: case KW_BRICK_SIZE: case KW_MORTAR:
+		case KW_INTERIOR: case KW_EXPONENT:   /* interior 2, .5 and exponent 3 of fractal patterns */
 			return true;
 		default:
 			return false;
@@ -325,7 +362,8 @@ static void pattern_result(struct eval *e, struct pattern *p, double c[5])
 	                : "rgb 0.5, the average of the default colour map";
 	char key[64];
 	snprintf(key, sizeof key, "pattern %s", p->name);
-	eval_warn_once(e, p->at->loc, key, "pattern '%s' is not supported yet; using %s", p->name, how);
+	if (strcmp(p->name, "average") != 0 || !p->has_map)   /* average is its map's mean: exact */
+		eval_warn_once(e, p->at->loc, key, "pattern '%s' is not supported yet; using %s", p->name, how);
 	for (int k = 0; k < 5; k++) {
 		double sum = 0;
 		for (int i = 0; i < p->n_list; i++)
@@ -357,6 +395,23 @@ static void list_add(struct pattern *p, const double c[5])
 {
 	if (p->n_list < 3)
 		memcpy(p->list[p->n_list++], c, sizeof p->list[0]);
+}
+
+/* A POV-Ray pattern that is not an eclat keyword (mandel, average...) starts a
+ * pattern; another POV-Ray word (quick_color, exterior...) is skipped; both
+ * with the numbers after them. 1 when item is neither. */
+static int pattern_word(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p)
+{
+	const ast_node *w = eval_pov_word_item(e, item);
+	if (!w)
+		return 1;
+	if (strcmp(eval_pov_word(w->str), "pattern") != 0)
+		return eval_skip_pov_word(e, c, item);
+	int err = 0;
+	start_pattern(p, w, w->str);
+	while (w == item && eval_next_optional(c, &err))
+		;
+	return err ? -1 : 0;
 }
 
 /* ---- pigment ---- */
@@ -393,8 +448,12 @@ static int pigment_value(struct eval *e, const ast_node *item, struct pattern *p
 	return 0;
 }
 
-static int pigment_item(struct eval *e, const ast_node *item, struct pattern *p, scene_material *m)
+static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p,
+                        scene_material *m)
 {
+	int rc = pattern_word(e, c, item, p);
+	if (rc <= 0)
+		return rc;
 	if (AST_IS_EXPRESSION(item->kind))
 		return pigment_value(e, item, p, m);
 	if (is_pattern(item)) {
@@ -418,13 +477,17 @@ static int pigment_item(struct eval *e, const ast_node *item, struct pattern *p,
 		return 0;
 	}
 	xform t = scene_xform_identity();
-	int rc = eval_transform_item(e, NULL, item, &t);
+	rc = eval_transform_item(e, NULL, item, &t);
 	if (rc != 0 || is_pattern_modifier(item))
 		return rc < 0 ? -1 : 0;   /* a pigment's transformations move its pattern only */
-	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
-		start_pattern(p, item, item->str);   /* image_map, function... */
+	if ((item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) ||
+	    item->kind == AST_FUNCTION || (item->kind == AST_BLOCK && item->kw == KW_OBJECT)) {
+		const char *name = item->kind == AST_FUNCTION ? "function" : item->kw == KW_OBJECT ? "object" : item->str;
+		start_pattern(p, item, name);   /* image_map, function, object... */
 		return 0;
 	}
+	if (item->kind == AST_FLAG && item->kw == KW_ONCE)
+		return 0;
 	return eval_not_valid(e, item, "a pigment");
 }
 
@@ -438,7 +501,7 @@ static int pigment_block(struct eval *e, const ast_node *b, scene_material *m, c
 	const ast_node *item;
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL)
-		rc = pigment_item(e, item, &p, m);
+		rc = pigment_item(e, &c, item, &p, m);
 	eval_cursor_free(&c);
 	if (rc || err)
 		return -1;
@@ -478,7 +541,7 @@ static int float_arg(struct eval *e, const ast_node *n, float *out)
 static int optional_float(struct eval *e, struct cursor *c, double def, double *out)
 {
 	int err = 0;
-	const ast_node *arg = eval_next_expr(c, &err);
+	const ast_node *arg = eval_next_optional(c, &err);
 	*out = def;
 	return arg ? eval_expect_float(e, arg, out) : err ? -1 : 0;
 }
@@ -543,7 +606,7 @@ static int diffuse(struct eval *e, struct cursor *c, const ast_node *item, scene
 	int err = 0;
 	if (float_arg(e, item->kids[0], &m->diffuse))
 		return -1;
-	const ast_node *back = eval_next_expr(c, &err);
+	const ast_node *back = eval_next_optional(c, &err);
 	if (back)
 		eval_warn_once(e, back->loc, "diffuse backside", "the backside amount of diffuse is not supported yet; ignored");
 	return err ? -1 : 0;
@@ -592,6 +655,9 @@ static int finish_item(struct eval *e, struct cursor *c, const ast_node *item, s
 		copy_finish(m, &v.mat);
 		return 0;
 	}
+	int rc = eval_skip_pov_word(e, c, item);
+	if (rc <= 0)
+		return rc;
 	if (item->kind == AST_BLOCK && item->kw == KW_REFLECTION)
 		return reflection_block(e, item, m);
 	if (item->kind == AST_ARG)
@@ -625,8 +691,11 @@ static int finish_block(struct eval *e, const ast_node *b, scene_material *m)
 
 /* interior { [INTERIOR_IDENTIFIER] [ior F] [dispersion F] [fade_distance F]
  *            [fade_power F] [fade_color COLOR] [caustics F] } */
-static int interior_item(struct eval *e, const ast_node *item, scene_material *m, bool first)
+static int interior_item(struct eval *e, struct cursor *c, const ast_node *item, scene_material *m, bool first)
 {
+	int rc = eval_skip_pov_word(e, c, item);
+	if (rc <= 0)
+		return rc;
 	if (AST_IS_EXPRESSION(item->kind) && first) {
 		value v;
 		if (eval_expr(e, item, &v))
@@ -667,7 +736,7 @@ static int interior_block(struct eval *e, const ast_node *b, scene_material *m)
 	const ast_node *item;
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
-		rc = interior_item(e, item, m, first);
+		rc = interior_item(e, &c, item, m, first);
 		first = false;
 	}
 	eval_cursor_free(&c);
@@ -678,9 +747,13 @@ static int interior_block(struct eval *e, const ast_node *b, scene_material *m)
 
 /* texture { [TEXTURE_IDENTIFIER] [pigment {...}] [normal {...}] [finish {...}]
  *           [PATTERN texture_map {...} | PATTERN TEXTURE, TEXTURE] [TRANSFORMATIONS] } */
-static int texture_item(struct eval *e, const ast_node *item, struct pattern *p, scene_material *m, bool first)
+static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p, scene_material *m,
+                        bool first)
 {
 	value v;
+	int skip = pattern_word(e, c, item, p);
+	if (skip <= 0)
+		return skip;
 	if (AST_IS_EXPRESSION(item->kind) && first) {
 		if (eval_expr(e, item, &v))
 			return -1;
@@ -697,6 +770,11 @@ static int texture_item(struct eval *e, const ast_node *item, struct pattern *p,
 		return eval_material_block(e, item, m);
 	if (is_pattern(item)) {
 		start_pattern(p, item, ast_keyword_name(item->kw));
+		return 0;
+	}
+	if ((item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str) &&
+	     strcmp(eval_pov_word(item->str), "other") != 0) || (item->kind == AST_BLOCK && item->kw == KW_OBJECT)) {
+		start_pattern(p, item, item->kw == KW_OBJECT ? "object" : item->str);   /* slope { }, object { } */
 		return 0;
 	}
 	if (item->kind == AST_BLOCK && item->kw == KW_TEXTURE_MAP && p->at)
@@ -732,7 +810,7 @@ static int texture_block(struct eval *e, const ast_node *b, scene_material *m)
 	const ast_node *item;
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
-		rc = texture_item(e, item, &p, m, first);
+		rc = texture_item(e, &c, item, &p, m, first);
 		first = false;
 	}
 	eval_cursor_free(&c);

@@ -253,7 +253,7 @@ static int flag_item(struct eval *e, struct cursor *c, const ast_node *item, str
 	if (!flag)
 		return 1;
 	double on = 1;
-	const ast_node *arg = eval_next_expr(c, &err);
+	const ast_node *arg = eval_next_optional(c, &err);
 	if (arg && eval_expect_float(e, arg, &on))
 		return -1;
 	for (int i = 0; i < o->n_objs; i++)

@@ -21,13 +21,19 @@ const char *eval_pov_word(const char *name)
 		"sphere_sweep", "superellipsoid", "text", "torus",
 	};
 	static const char *const statements[] = { "fog", "rainbow", "media" };
+	static const char *const patterns[] = {
+		"aoi", "average", "density_file", "image_pattern", "julia", "magnet", "mandel", "pavement",
+		"pigment_pattern", "slope", "tiling",
+	};
 	static const char *const others[] = {
-		"albedo", "area_illumination", "bump_map", "charset", "density", "density_map", "hf_gray_16",
-		"image_map", "image_pattern", "interior_texture", "irid", "irid_wavelength", "material_map",
-		"max_intersections", "media_attenuation", "media_interaction", "mm_per_unit", "no_radiosity",
-		"noise_generator", "number_of_waves", "photons", "pigment_pattern", "projected_through",
-		"quick_color", "quick_colour", "radiosity", "slope_map", "spline", "subsurface", "tiles", "warp",
-		"function", "pattern",
+		"albedo", "always_sample", "area_illumination", "brightness", "bump_map", "charset",
+		"confidence", "control0", "control1", "count", "density", "density_map", "error_bound",
+		"exterior", "function", "gray_threshold", "hf_gray_16", "image_map", "interior_texture", "irid",
+		"irid_wavelength", "low_error_factor", "material_map", "max_intersections", "media_attenuation",
+		"media_interaction", "metric", "minimum_reuse", "mm_per_unit", "nearest_count", "no_radiosity",
+		"noise_generator", "number_of_waves", "pattern", "photons", "pretrace_end", "pretrace_start",
+		"projected_through", "quick_color", "quick_colour", "radiosity", "recursion_limit", "slope_map",
+		"solid", "spline", "subsurface", "tiles", "variance", "warp",
 	};
 	for (size_t i = 0; i < sizeof objects / sizeof *objects; i++)
 		if (strcmp(objects[i], name) == 0)
@@ -35,10 +41,43 @@ const char *eval_pov_word(const char *name)
 	for (size_t i = 0; i < sizeof statements / sizeof *statements; i++)
 		if (strcmp(statements[i], name) == 0)
 			return "statement";
+	for (size_t i = 0; i < sizeof patterns / sizeof *patterns; i++)
+		if (strcmp(patterns[i], name) == 0)
+			return "pattern";
 	for (size_t i = 0; i < sizeof others / sizeof *others; i++)
 		if (strcmp(others[i], name) == 0)
 			return "other";
 	return NULL;
+}
+
+/* A POV-Ray word eclat does not have, used as an item (confidence 0.9,
+ * quick_color Red...): ignored with one warning, and the values after it with
+ * it. 1 when item is no such word. */
+int eval_skip_pov_word(struct eval *e, struct cursor *c, const ast_node *item)
+{
+	const ast_node *w = eval_pov_word_item(e, item);
+	if (!w)
+		return 1;
+	eval_warn_once(e, w->loc, w->str, "'%s' is not supported yet; ignored", w->str);
+	int err = 0;
+	if (w == item)   /* its values are the items after it, as far as they go */
+		while (eval_next_optional(c, &err))
+			;
+	return err ? -1 : 0;
+}
+
+/* The undeclared POV-Ray word an item starts with, or NULL. The grammar may
+ * have made the word and its arguments one expression: "slope -z" is a
+ * difference, "quick_colour red 0.7" a colour. */
+const ast_node *eval_pov_word_item(struct eval *e, const ast_node *item)
+{
+	const ast_node *n = item;
+	while ((n->kind == AST_BINARY || n->kind == AST_MEMBER || n->kind == AST_INDEX ||
+	        (n->kind == AST_COLOR && n->n_kids == 2)) && n->n_kids > 0)
+		n = n->kids[0];
+	if (n->kind != AST_IDENT || !eval_pov_word(n->str) || eval_lookup(e, n->str))
+		return NULL;
+	return n;
 }
 
 /* The block keyword closest to a misspelt one. */
@@ -86,6 +125,8 @@ int eval_not_valid(struct eval *e, const ast_node *item, const char *where)
 		eval_error(e, item->loc, "unexpected map entry [...] in %s", where);
 	else if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN)
 		unknown_block(e, item);
+	else if ((item->kind == AST_ARG || item->kind == AST_FLAG) && ast_keyword_class(item->kw) == KWC_BLOCK)
+		eval_error(e, item->loc, "expected '{' after '%s'", ast_keyword_name(item->kw));
 	else if (item->kind == AST_FUNCTION || item->kind == AST_ARRAY)
 		eval_error(e, item->loc, "unexpected %s in %s", item->kind == AST_FUNCTION ? "function" : "array", where);
 	else
@@ -130,7 +171,7 @@ static int camera_float(struct eval *e, struct cursor *c, const ast_node *item, 
 			eval_error(e, item->kids[0]->loc, "camera angle must be between 0 and 180 degrees");
 			return -1;
 		}
-		if (eval_next_expr(c, &err))   /* a vertical angle: for camera types eclat has not */
+		if (eval_next_optional(c, &err))   /* a vertical angle: for camera types eclat has not */
 			eval_warn_once(e, item->loc, "vertical angle", "a second camera angle is ignored");
 		return err ? -1 : 0;
 	case KW_APERTURE:
@@ -139,7 +180,7 @@ static int camera_float(struct eval *e, struct cursor *c, const ast_node *item, 
 		if (eval_expect_float(e, item->kids[0], &f))
 			return -1;
 		ci->c.blur_samples = f < 1 ? 1 : f > 1e6 ? 1000000 : (int)f;
-		if (eval_next_expr(c, &err))   /* blur_samples Min, Max */
+		if (eval_next_optional(c, &err))   /* blur_samples Min, Max */
 			eval_warn_once(e, item->loc, "blur_samples max", "the second number of blur_samples is ignored");
 		return err ? -1 : 0;
 	default:
@@ -152,6 +193,12 @@ static int camera_item(struct eval *e, struct cursor *c, const ast_node *item, s
 	int rc = eval_transform_item(e, c, item, &ci->t);
 	if (rc != 0)
 		return rc < 0 ? -1 : 0;
+	if (item->kind == AST_IDENT && strcmp(item->str, "cylinder") == 0 && !eval_lookup(e, item->str)) {
+		eval_error(e, item->loc, "the cylinder camera is not supported yet");
+		return -1;
+	}
+	if ((rc = eval_skip_pov_word(e, c, item)) <= 0)
+		return rc;
 	if (AST_IS_EXPRESSION(item->kind) && first) {
 		value v;
 		if (eval_expr(e, item, &v))
@@ -233,11 +280,34 @@ int eval_camera(struct eval *e, const ast_node *b, scene_camera *out)
 
 /* ---- light sources ---- */
 
+/* light_source { LIGHT_IDENTIFIER ...}: a declared light, to change. 1 if not. */
+static int light_identifier(struct eval *e, const ast_node *pos, struct lightval *l)
+{
+	if (pos->kind != AST_IDENT)
+		return 1;
+	const value *v = eval_lookup(e, pos->str);
+	if (!v || v->kind != V_OBJECT)
+		return 1;
+	if (v->obj->n_lights != 1 || v->obj->n_objs) {
+		eval_error(e, pos->loc, "'%s' is not a light_source", pos->str);
+		return -1;
+	}
+	*l = v->obj->lights[0];
+	l->looks = l->n_looks ? eval_xrealloc(NULL, l->n_looks * sizeof *l->looks) : NULL;
+	if (l->n_looks)
+		memcpy(l->looks, v->obj->lights[0].looks, l->n_looks * sizeof *l->looks);
+	return 0;
+}
+
 static int light_args(struct eval *e, struct cursor *c, const ast_node *b, struct lightval *l)
 {
 	int err = 0;
 	double col[5];
-	const ast_node *pos = eval_next_expr(c, &err), *color = pos ? eval_next_expr(c, &err) : NULL;
+	const ast_node *pos = eval_next_expr(c, &err);
+	int rc = pos ? light_identifier(e, pos, l) : 1;
+	if (rc <= 0)
+		return rc;
+	const ast_node *color = pos ? eval_next_expr(c, &err) : NULL;
 	if (!color) {
 		if (!err)
 			eval_error(e, b->loc, "light_source needs a location and a colour");
@@ -331,6 +401,8 @@ static int light_item(struct eval *e, struct cursor *c, const ast_node *item, st
 		return rc;
 	if (item->kind == AST_BLOCK && item->kw == KW_LOOKS_LIKE)
 		return eval_looks_like(e, item, l->light.position, l);
+	if ((rc = eval_skip_pov_word(e, c, item)) <= 0)
+		return rc;
 	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str) &&
 	    strcmp(eval_pov_word(item->str), "object") != 0) {
 		eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
@@ -481,13 +553,11 @@ static int global_settings(struct eval *e, const ast_node *b)
 	const ast_node *item;
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
-		const char *w = item->kind == AST_IDENT || (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN)
-		              ? eval_pov_word(item->str) : NULL;
-		if (w && !(item->kind == AST_IDENT && eval_lookup(e, item->str))) {
+		if ((rc = eval_skip_pov_word(e, &c, item)) <= 0)
+			continue;
+		if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
 			eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
-			const ast_node *arg;
-			while (item->kind == AST_IDENT && (arg = eval_next_expr(&c, &err)) != NULL)
-				;   /* its value */
+			rc = 0;
 		} else if (item->kind == AST_ARG) {
 			rc = global_arg(e, item);
 		} else {
@@ -529,7 +599,7 @@ static int array_init(struct eval *e, const ast_node *init, struct array *a, int
 	return 0;
 }
 
-#define MAX_ARRAY_ELEMENTS 50000000
+#define MAX_ARRAY_ELEMENTS 4000000   /* a value is some 300 bytes */
 
 /* array[N1][N2]... [{ INITIALISERS }] */
 static int array(struct eval *e, const ast_node *n, value *out)
@@ -543,9 +613,12 @@ static int array(struct eval *e, const ast_node *n, value *out)
 	for (int i = 0; i < a.dims; i++) {
 		if (eval_expect_int(e, dims->kids[i], &a.size[i]))
 			return -1;
-		if (a.size[i] < 1 || a.size[i] > MAX_ARRAY_ELEMENTS / a.n) {
-			eval_error(e, dims->kids[i]->loc, "an array dimension of %d (an array holds 1 to %d elements)",
-			           a.size[i], MAX_ARRAY_ELEMENTS);
+		if (a.size[i] < 1) {
+			eval_error(e, dims->kids[i]->loc, "an array dimension must be at least 1, not %d", a.size[i]);
+			return -1;
+		}
+		if (a.size[i] > MAX_ARRAY_ELEMENTS / a.n) {
+			eval_error(e, dims->kids[i]->loc, "this array would have more than %d elements", MAX_ARRAY_ELEMENTS);
 			return -1;
 		}
 		a.n *= a.size[i];
@@ -648,6 +721,8 @@ static int statement_block(struct eval *e, const ast_node *b)
 	}
 	if (eval_is_object_block(b))
 		return place_object(e, b);
+	if (b->kw == KW_UNKNOWN && strcmp(b->str, "default") == 0)
+		return eval_default(e, b);   /* POV-Ray still reads the old "default { }" */
 	if (b->kw == KW_UNKNOWN && eval_pov_word(b->str)) {
 		eval_warn_once(e, b->loc, b->str, "'%s' is not supported yet; ignored", b->str);
 		return 0;

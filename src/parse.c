@@ -53,7 +53,7 @@ ast_node *parse_macro_body(int file, size_t offset, size_t len, int line, int co
 		return NULL;
 	ast_node *root = run(&ctx, text + offset, len);
 	if (root)
-		return root;
+		return ast_block(root, KW_UNKNOWN, strdup("body"), (src_loc){ file, line, col });
 	ast_node *n = ast_new(AST_MESSAGE, ctx.deferred_loc);
 	n->op = 'e';
 	n->str = strdup(ctx.deferred[0] ? ctx.deferred : "a syntax error");
@@ -209,7 +209,10 @@ void parse_report_syntax_error(struct parse_ctx *ctx, src_loc loc, const char *f
 	if (!ctx->defer)
 		ctx->errors++;   /* parse_error counts the deferred ones */
 	if (!expected) {
-		parse_error(ctx, loc, "%s", found);
+		if (strcmp(found, "memory exhausted") == 0)   /* bison's stack, YYMAXDEPTH */
+			parse_error(ctx, loc, "nested too deeply: parentheses, braces and directives at most 2000 levels");
+		else
+			parse_error(ctx, loc, "%s", found);
 		return;
 	}
 	if (strcmp(found, "invalid token") == 0)

@@ -11,7 +11,9 @@
 //  bozo without a map: 0.5, POV-Ray's default grey ramp;
 //  a declared pattern pigment with a colour_map after it takes the map's
 //    average: <0.5, 0, 0.5>;
-//  a texture_map: the average pigment (0.5) and the first texture's finish.
+//  a texture_map: the average pigment (0.5) and the first texture's finish;
+//  [0.0 blue 0.4] [1 red 1 green 0.5] (a value, then a colour of components):
+//    <0.5, 0.25, 0.2>.
 #version 3.7;
 global_settings { assumed_gamma 1 }
 sphere { 0, 1 pigment { checker rgb <1, 0, 0>, rgb <0, 0, 1> scale 0.2 } }
@@ -25,3 +27,4 @@ sphere { 0, 1 pigment { P color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] } } }
 sphere { 0, 1 texture { gradient x texture_map { [0 pigment { rgb 1 } finish { phong 1 }]
                                                  [1 pigment { rgb 0 }] } } }
 sphere { 0, 1 normal { bumps 0.5 } }
+sphere { 0, 1 pigment { bozo color_map { [0.0 blue 0.4] [1 red 1 green 0.5] } } }
