@@ -50,15 +50,26 @@ struct lowering {
 	int n_degenerate;
 };
 
-static void *grow(void *p, int *cap, size_t size)
+/* Lowering cannot go on without its arrays: running out of memory ends eclat. */
+static void *xrealloc(void *p, size_t n)
 {
-	*cap = *cap ? 2 * *cap : 64;
-	p = realloc(p, (size_t)*cap * size);
+	p = realloc(p, n ? n : 1);
 	if (!p) {
 		fprintf(stderr, "eclat: out of memory\n");
 		exit(1);
 	}
 	return p;
+}
+
+static void *xmalloc(size_t n)
+{
+	return xrealloc(NULL, n);
+}
+
+static void *grow(void *p, int *cap, size_t size)
+{
+	*cap = *cap ? 2 * *cap : 64;
+	return xrealloc(p, (size_t)*cap * size);
 }
 
 static float4 f4(const double v[3], double w)
@@ -481,11 +492,7 @@ static dev_light lower_light(const scene_light *l)
 static void lower_emitters(lower_result *r)
 {
 	double total = 0;
-	r->emitters = malloc((r->n_prims ? r->n_prims : 1) * sizeof *r->emitters);
-	if (!r->emitters) {
-		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
-	}
+	r->emitters = xmalloc(r->n_prims * sizeof *r->emitters);
 	for (int i = 0; i < r->n_prims; i++) {
 		dev_prim *p = &r->prims[i];
 		float4 e = r->materials[p->material].emission;
@@ -529,16 +536,6 @@ static void lower_camera(const scene *s, dev_params *p)
 	for (int i = 0; i < 3; i++)
 		focal += (c->focal_point[i] - c->location[i]) * c->direction[i] / dl;
 	p->lens = (float4){ (float)c->aperture, (float)(focal > 0 ? focal : dl), 0, 0 };
-}
-
-static void *xmalloc(size_t n)
-{
-	void *p = malloc(n ? n : 1);
-	if (!p) {
-		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
-	}
-	return p;
 }
 
 /* The local-to-world map of an ellipsoid or instance, whose rows hold the inverse. */
@@ -617,7 +614,8 @@ static int join(struct lowering *lw, const scene *s, lower_result *out)
 		return -1;
 	out->n_stats = 1;
 	int n_nodes = top.n_nodes, n_prims = lw->top.n + lw->planes.n;
-	int *node_base = calloc(s->n_meshes + 1, sizeof *node_base), *prim_base = calloc(s->n_meshes + 1, sizeof *prim_base);
+	int *node_base = xmalloc((s->n_meshes + 1) * sizeof *node_base);
+	int *prim_base = xmalloc((s->n_meshes + 1) * sizeof *prim_base);
 	for (int m = 0; m < s->n_meshes; m++) {
 		node_base[m] = n_nodes;
 		prim_base[m] = n_prims;
