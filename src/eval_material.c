@@ -279,11 +279,14 @@ static int map_block(struct eval *e, const ast_node *b, value *out)
 	}
 	eval_cursor_free(&c);
 	if (rc == 0 && !err) {
-		double avg[5] = { 0 };
+		double avg[5] = { 0 }, weights = 0;
+		for (int i = 0; i < mb.n; i++)   /* the average pattern's: values are weights */
+			weights += mb.unordered ? 1 : mb.p[i].at;
+		for (int i = 0; i < mb.n; i++)
+			for (int k = 0; k < 5 && weights != 0; k++)
+				out->v[k] += mb.p[i].c[k] * (mb.unordered ? 1 : mb.p[i].at) / weights;
 		if (mb.unordered)
-			for (int i = 0; i < mb.n; i++)
-				for (int k = 0; k < 5; k++)
-					avg[k] += mb.p[i].c[k] / mb.n;
+			memcpy(avg, out->v, sizeof avg);
 		else
 			map_average(mb.p, mb.n, avg);
 		if (mb.finish_set)
@@ -384,8 +387,9 @@ static int map_into(struct eval *e, const ast_node *item, struct pattern *p)
 	if (map_block(e, item, &v))
 		return -1;
 	p->has_map = true;
+	bool average = strcmp(p->name, "average") == 0;
 	for (int k = 0; k < 5; k++)
-		p->map[k] = v.mat.pigment[k];
+		p->map[k] = average ? v.v[k] : v.mat.pigment[k];
 	p->map_mat = v.mat;
 	p->map_finish = item->kw == KW_TEXTURE_MAP;
 	return 0;

@@ -13,7 +13,9 @@
 //    average: <0.5, 0, 0.5>;
 //  a texture_map: the average pigment (0.5) and the first texture's finish;
 //  [0.0 blue 0.4] [1 red 1 green 0.5] (a value, then a colour of components):
-//    <0.5, 0.25, 0.2>.
+//    <0.5, 0.25, 0.2>;
+//  average, whose values are weights: [1 rgb x] [3 rgb z] -> <0.25, 0, 0.75>,
+//    and without a warning, since that is what POV-Ray renders.
 #version 3.7;
 global_settings { assumed_gamma 1 }
 sphere { 0, 1 pigment { checker rgb <1, 0, 0>, rgb <0, 0, 1> scale 0.2 } }
@@ -28,3 +30,4 @@ sphere { 0, 1 texture { gradient x texture_map { [0 pigment { rgb 1 } finish { p
                                                  [1 pigment { rgb 0 }] } } }
 sphere { 0, 1 normal { bumps 0.5 } }
 sphere { 0, 1 pigment { bozo color_map { [0.0 blue 0.4] [1 red 1 green 0.5] } } }
+sphere { 0, 1 pigment { average pigment_map { [1 rgb x] [3 rgb z] } } }
