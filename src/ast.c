@@ -243,7 +243,9 @@ void ast_free(ast_node *n)
 	free(stack);
 }
 
-static const char *op_name(int op)
+/* "+", "<=", ...: an operator as written. The buffer of a one-character operator is
+ * static, so the result lasts until the next call. */
+const char *ast_op_name(int op)
 {
 	static char one[2];
 	switch (op) {
@@ -276,7 +278,7 @@ static void dump_head(const ast_node *n, FILE *out)
 	case AST_STRING: dump_string(n->str, out); break;
 	case AST_IDENT: fprintf(out, "ident %s", n->str); break;
 	case AST_BINARY:
-	case AST_UNARY: fputs(op_name(n->op), out); break;
+	case AST_UNARY: fputs(ast_op_name(n->op), out); break;
 	case AST_BLOCK:
 		fputs(n->kw == KW_UNKNOWN ? n->str : ast_keyword_name(n->kw), out);
 		break;

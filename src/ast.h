@@ -328,6 +328,8 @@ typedef struct ast_node {
 /* Keyword table look-ups. */
 int ast_keyword_lookup(const char *name, enum kw_class *cls); /* -1 when not a keyword */
 const char *ast_keyword_name(int kw);
+/* An operator as written: "+", "<=", "!=" ... */
+const char *ast_op_name(int op);
 enum kw_class ast_keyword_class(int kw);
 
 /* Constructors, one per grammar action. They take ownership of their arguments and

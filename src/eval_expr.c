@@ -125,17 +125,6 @@ static bool numeric(struct eval *e, const ast_node *at, const value *v, const ch
 	return false;
 }
 
-static const char *op_text(int op)
-{
-	static char one[2];
-	switch (op) {
-	case OP_LE: return "<=";
-	case OP_GE: return ">=";
-	case OP_NE: return "!=";
-	default: one[0] = (char)op; return one;
-	}
-}
-
 static double apply(int op, double a, double b)
 {
 	switch (op) {
@@ -160,7 +149,7 @@ static int string_compare(struct eval *e, const ast_node *n, value *a, value *b,
 	int ok = a->kind == V_STRING && b->kind == V_STRING && n->op != '+' && n->op != '-' &&
 	         n->op != '*' && n->op != '/' && n->op != '&' && n->op != '|';
 	if (!ok)
-		eval_error(e, n->loc, "cannot apply '%s' to %s and %s", op_text(n->op), eval_kind_name(a->kind),
+		eval_error(e, n->loc, "cannot apply '%s' to %s and %s", ast_op_name(n->op), eval_kind_name(a->kind),
 		           eval_kind_name(b->kind));
 	else
 		*out = eval_float(apply(n->op, strcmp(a->str, b->str), 0));
@@ -1074,6 +1063,17 @@ int eval_expect_color(struct eval *e, const ast_node *n, double out[5])
 		return type_error(e, n, "a colour", &v);
 	eval_widen(&v, 5, out);
 	return 0;
+}
+
+int eval_expect_kind(struct eval *e, const ast_node *n, val_kind kind, value *out)
+{
+	if (eval_expr(e, n, out))
+		return -1;
+	if (out->kind == kind)
+		return 0;
+	eval_error(e, n->loc, "expected %s, found %s", eval_kind_name(kind), eval_kind_name(out->kind));
+	eval_value_free(out);
+	return -1;
 }
 
 int eval_expect_string(struct eval *e, const ast_node *n, char **out)

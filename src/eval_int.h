@@ -178,6 +178,8 @@ int eval_expect_int(struct eval *e, const ast_node *n, int *i);
 int eval_expect_vector(struct eval *e, const ast_node *n, double out[3]);
 int eval_expect_color(struct eval *e, const ast_node *n, double out[5]);
 int eval_expect_string(struct eval *e, const ast_node *n, char **out);
+/* Evaluates n and checks its kind: "expected a finish, found a float". */
+int eval_expect_kind(struct eval *e, const ast_node *n, val_kind kind, value *out);
 /* The value a node refers to, without copying (an identifier, an element), or NULL. */
 value *eval_reference(struct eval *e, const ast_node *n, int *err);
 bool eval_is_defined(struct eval *e, const ast_node *n);

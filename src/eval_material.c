@@ -649,13 +649,8 @@ static int finish_item(struct eval *e, struct cursor *c, const ast_node *item, s
 {
 	if (AST_IS_EXPRESSION(item->kind) && first) {
 		value v;
-		if (eval_expr(e, item, &v))
+		if (eval_expect_kind(e, item, V_FINISH, &v))
 			return -1;
-		if (v.kind != V_FINISH) {
-			eval_error(e, item->loc, "expected a finish, found %s", eval_kind_name(v.kind));
-			eval_value_free(&v);
-			return -1;
-		}
 		copy_finish(m, &v.mat);
 		return 0;
 	}
@@ -675,8 +670,11 @@ static int finish_item(struct eval *e, struct cursor *c, const ast_node *item, s
 	return eval_not_valid(e, item, "a finish");
 }
 
-/* finish { [FINISH_IDENTIFIER] [FINISH_ITEMS...] } */
-static int finish_block(struct eval *e, const ast_node *b, scene_material *m)
+typedef int material_item_fn(struct eval *e, struct cursor *c, const ast_node *item, scene_material *m,
+                              bool first);
+
+/* The items of a finish or interior block, in order, directives run between them. */
+static int material_items(struct eval *e, const ast_node *b, scene_material *m, material_item_fn *item_fn)
 {
 	struct cursor c;
 	int err = 0, rc = 0;
@@ -684,11 +682,17 @@ static int finish_block(struct eval *e, const ast_node *b, scene_material *m)
 	const ast_node *item;
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
-		rc = finish_item(e, &c, item, m, first);
+		rc = item_fn(e, &c, item, m, first);
 		first = false;
 	}
 	eval_cursor_free(&c);
 	return rc || err ? -1 : 0;
+}
+
+/* finish { [FINISH_IDENTIFIER] [FINISH_ITEMS...] } */
+static int finish_block(struct eval *e, const ast_node *b, scene_material *m)
+{
+	return material_items(e, b, m, finish_item);
 }
 
 /* ---- interior ---- */
@@ -702,13 +706,8 @@ static int interior_item(struct eval *e, struct cursor *c, const ast_node *item,
 		return rc;
 	if (AST_IS_EXPRESSION(item->kind) && first) {
 		value v;
-		if (eval_expr(e, item, &v))
+		if (eval_expect_kind(e, item, V_INTERIOR, &v))
 			return -1;
-		if (v.kind != V_INTERIOR) {
-			eval_error(e, item->loc, "expected an interior, found %s", eval_kind_name(v.kind));
-			eval_value_free(&v);
-			return -1;
-		}
 		copy_interior(m, &v.mat);
 		return 0;
 	}
@@ -734,17 +733,7 @@ static int interior_item(struct eval *e, struct cursor *c, const ast_node *item,
 
 static int interior_block(struct eval *e, const ast_node *b, scene_material *m)
 {
-	struct cursor c;
-	int err = 0, rc = 0;
-	bool first = true;
-	const ast_node *item;
-	eval_cursor_init(&c, e, b);
-	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
-		rc = interior_item(e, &c, item, m, first);
-		first = false;
-	}
-	eval_cursor_free(&c);
-	return rc || err ? -1 : 0;
+	return material_items(e, b, m, interior_item);
 }
 
 /* ---- texture and material ---- */
@@ -759,13 +748,8 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	if (skip <= 0)
 		return skip;
 	if (AST_IS_EXPRESSION(item->kind) && first) {
-		if (eval_expr(e, item, &v))
+		if (eval_expect_kind(e, item, V_TEXTURE, &v))
 			return -1;
-		if (v.kind != V_TEXTURE) {
-			eval_error(e, item->loc, "expected a texture, found %s", eval_kind_name(v.kind));
-			eval_value_free(&v);
-			return -1;
-		}
 		copy_pigment(m, &v.mat);
 		copy_finish(m, &v.mat);
 		return 0;

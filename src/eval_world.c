@@ -201,13 +201,8 @@ static int camera_item(struct eval *e, struct cursor *c, const ast_node *item, s
 		return rc;
 	if (AST_IS_EXPRESSION(item->kind) && first) {
 		value v;
-		if (eval_expr(e, item, &v))
+		if (eval_expect_kind(e, item, V_CAMERA, &v))
 			return -1;
-		if (v.kind != V_CAMERA) {
-			eval_error(e, item->loc, "expected a camera, found %s", eval_kind_name(v.kind));
-			eval_value_free(&v);
-			return -1;
-		}
 		ci->c = *v.cam;
 		eval_value_free(&v);
 		return 0;
