@@ -119,7 +119,8 @@ kernel void render_pass(global const bvh_node *nodes, global const dev_prim *pri
                         global const float4 *normals, global const dev_material *materials,
                         global const dev_light *lights,
                         global const dev_emitter *emitters, global const dev_params *p,
-                        global float4 *film, global uint *counters, global float4 *aov)
+                        global float4 *film, global uint *counters, global float4 *aov,
+                        global const dev_finish *finishes, global const int *objects)
 {
 	int pixel = get_global_id(0);
 	if (pixel >= p->width * p->height)

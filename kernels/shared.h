@@ -68,7 +68,28 @@ typedef struct {
 	float4 coat;        /* x: coat strength, y: coat GGX alpha, z: coat reflectance at normal incidence */
 } dev_material;
 
-/* A light_source, 96 bytes. POV-Ray's lights are invisible and do not fall off
+/* A POV-Ray texture and interior as POV-Ray's classic model reads them, 144
+ * bytes, one per dev_material (same index): what --integrator whitted shades with.
+ * lower.c fills it from the evaluated texture without reinterpreting anything;
+ * ambient is already multiplied by global_settings' ambient_light. */
+typedef struct {
+	float4 pigment;        /* rgb; w: filter */
+	float4 ambient;        /* rgb: ambient * ambient_light; w: transmit */
+	float4 emission;       /* rgb; w: diffuse */
+	float4 highlight;      /* x: phong, y: phong_size, z: specular, w: 1 / roughness */
+	float4 reflection;     /* rgb: reflection at normal incidence (min); w: falloff */
+	float4 reflection_max; /* rgb: at grazing incidence (max); w: exponent */
+	float4 terms;          /* x: brilliance, y: metallic (highlights), z: reflection's metallic,
+	                        * w: 1 for fresnel reflection */
+	float4 interior;       /* x: ior, y: fade_distance, z: fade_power, w: 1 for conserve_energy */
+	float4 fade_color;     /* rgb: interior's fade_color */
+} dev_finish;
+
+/* The objects buffer: one int of POV-Ray's object flags per scene object (the
+ * values of scene.h's OBJ_ flags), indexed by dev_prim.object. */
+enum { OBJECT_NO_SHADOW = 1, OBJECT_NO_IMAGE = 2, OBJECT_NO_REFLECTION = 4, OBJECT_DOUBLE_ILLUMINATE = 16 };
+
+/* A light_source, 112 bytes. POV-Ray's lights are invisible and do not fall off
  * with distance unless fade_power is given; every vertex samples all of them. */
 enum { LIGHT_KIND_POINT = 0, LIGHT_KIND_SPOT = 1, LIGHT_KIND_PARALLEL = 2 };
 typedef struct {
@@ -79,6 +100,8 @@ typedef struct {
 	float4 spot;        /* xyz: unit direction the light points to; w: cos(radius) */
 	float cos_falloff, tightness;
 	int kind, shadowless;
+	float4 grid;        /* area light as POV-Ray's grid: x, y: size1, size2 (0: not an
+	                     * area light), z: adaptive level, w: 1 for orient */
 } dev_light;
 
 /* An emissive primitive, chosen for next-event estimation with probability
@@ -90,7 +113,7 @@ typedef struct {
 	int prim;
 } dev_emitter;
 
-enum { INTEGRATOR_PATH = 0, INTEGRATOR_NAIVE = 1 };
+enum { INTEGRATOR_PATH = 0, INTEGRATOR_NAIVE = 1, INTEGRATOR_WHITTED = 2 };
 
 /* Ray kinds, and counters added up per pass by the kernel: rays of each kind, and
  * the BVH node tests and primitive tests they made. */
@@ -102,7 +125,7 @@ enum {
 	COUNT_N = 3 * RAY_KINDS,
 };
 
-/* Everything a render pass needs besides the buffers, 144 bytes. The camera
+/* Everything a render pass needs besides the buffers, 160 bytes. The camera
  * vectors are POV-Ray's after look_at: a primary ray is direction + sx * right +
  * sy * up with sx, sy in [-0.5, 0.5], sy upwards. */
 typedef struct {
@@ -112,6 +135,7 @@ typedef struct {
 	int width, height, max_depth, seed;
 	int n_lights, sample_base, samples_per_pass, n_prims;
 	int n_planes, n_emitters, integrator, aov;   /* aov: 1 when the aov buffer is there */
+	float4 classic;     /* the Whitted integrator's: w: adc_bailout */
 } dev_params;
 
 /* The aov buffer, when asked for: three float4 a pixel, sums over its samples.

@@ -30,6 +30,7 @@ static void copy_finish(scene_material *d, const scene_material *s)
 	d->reflection_falloff = s->reflection_falloff;
 	d->reflection_exponent = s->reflection_exponent;
 	d->metallic = s->metallic;
+	d->reflection_metallic = s->reflection_metallic;
 	d->reflection_fresnel = s->reflection_fresnel;
 	d->roughness_set = s->roughness_set;
 	d->conserve_energy = s->conserve_energy;
@@ -565,7 +566,7 @@ static int reflection_block(struct eval *e, const ast_node *b, scene_material *m
 		else if (item->kind == AST_FLAG && item->kw == KW_FRESNEL && (rc = optional_float(e, &c, 1, &f)) == 0)
 			m->reflection_fresnel = eval_truth(f);
 		else if (item->kind == AST_FLAG && item->kw == KW_METALLIC && (rc = optional_float(e, &c, 1, &f)) == 0)
-			m->metallic = (float)f;
+			m->reflection_metallic = (float)f;
 		else if (item->kind == AST_ARG && item->kw == KW_FALLOFF)
 			rc = float_arg(e, item->kids[0], &m->reflection_falloff);
 		else if (item->kind == AST_ARG && item->kw == KW_EXPONENT)

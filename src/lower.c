@@ -17,10 +17,15 @@ _Static_assert(offsetof(bvh_node, max_x) == 16, "bvh_node max at 16");
 _Static_assert(sizeof(dev_prim) == 64, "dev_prim is 64 bytes");
 _Static_assert(offsetof(dev_prim, type) == 48, "dev_prim ints at 48");
 _Static_assert(sizeof(dev_material) == 112, "dev_material is 112 bytes");
-_Static_assert(sizeof(dev_light) == 96, "dev_light is 96 bytes");
+_Static_assert(sizeof(dev_light) == 112, "dev_light is 112 bytes");
 _Static_assert(offsetof(dev_light, cos_falloff) == 80, "dev_light scalars at 80");
 _Static_assert(sizeof(dev_emitter) == 16, "dev_emitter is 16 bytes");
-_Static_assert(sizeof(dev_params) == 144, "dev_params is 144 bytes");
+_Static_assert(sizeof(dev_finish) == 144, "dev_finish is 144 bytes");
+_Static_assert(sizeof(dev_params) == 160, "dev_params is 160 bytes");
+_Static_assert((int)OBJECT_NO_SHADOW == (int)OBJ_NO_SHADOW && (int)OBJECT_NO_IMAGE == (int)OBJ_NO_IMAGE &&
+               (int)OBJECT_NO_REFLECTION == (int)OBJ_NO_REFLECTION &&
+               (int)OBJECT_DOUBLE_ILLUMINATE == (int)OBJ_DOUBLE_ILLUMINATE,
+               "the kernels' object flags are scene.h's");
 _Static_assert(offsetof(dev_params, width) == 96, "dev_params ints at 96");
 
 /* A growing array of primitives. */
@@ -41,8 +46,10 @@ struct lowered_mesh {
 /* Everything that grows while lowering. */
 struct lowering {
 	const lower_options *opt;
+	const scene *s;
 	struct prim_list top, planes;
 	dev_material *mats;
+	dev_finish *finishes;
 	int n_mats, cap_mats;
 	float4 *normals;
 	int n_normals, cap_normals;
@@ -101,7 +108,8 @@ dev_material lower_material(const scene_material *m)
 	float tint[3], refl[3], refl_max[3];
 	for (int i = 0; i < 3; i++) {
 		tint[i] = t > 0 ? clamp01((m->pigment[3] * rgb[i] + m->pigment[4]) / t) : 1;
-		float metal = (1 - m->metallic) + m->metallic * rgb[i];
+		float metallic = fmaxf(m->metallic, m->reflection_metallic);
+		float metal = (1 - metallic) + metallic * rgb[i];
 		refl[i] = clamp01(m->reflection[i] * metal);
 		refl_max[i] = clamp01(m->reflection_max[i] * metal);
 	}
@@ -124,11 +132,33 @@ dev_material lower_material(const scene_material *m)
 	return d;
 }
 
+dev_finish lower_finish(const scene_material *m, const float ambient_light[3])
+{
+	const float *p = m->pigment;
+	return (dev_finish){
+		.pigment = { p[0], p[1], p[2], p[3] },
+		.ambient = { m->ambient[0] * ambient_light[0], m->ambient[1] * ambient_light[1],
+		             m->ambient[2] * ambient_light[2], p[4] },
+		.emission = { m->emission[0], m->emission[1], m->emission[2], m->diffuse },
+		.highlight = { m->phong, m->phong_size, m->specular, m->roughness > 0 ? 1 / m->roughness : 0 },
+		.reflection = { m->reflection[0], m->reflection[1], m->reflection[2], m->reflection_falloff },
+		.reflection_max = { m->reflection_max[0], m->reflection_max[1], m->reflection_max[2],
+		                    m->reflection_exponent },
+		.terms = { m->brilliance, m->metallic, m->reflection_metallic, m->reflection_fresnel },
+		.interior = { m->ior > 0 ? m->ior : 1, m->fade_distance, m->fade_power, m->conserve_energy },
+		.fade_color = { m->fade_color[0], m->fade_color[1], m->fade_color[2], 0 },
+	};
+}
+
 static int add_material(struct lowering *lw, const scene_material *m)
 {
-	if (lw->n_mats == lw->cap_mats)
+	if (lw->n_mats == lw->cap_mats) {
+		int cap = lw->cap_mats;
 		lw->mats = grow(lw->mats, &lw->cap_mats, sizeof *lw->mats);
+		lw->finishes = grow(lw->finishes, &cap, sizeof *lw->finishes);
+	}
 	lw->mats[lw->n_mats] = lower_material(m);
+	lw->finishes[lw->n_mats] = lower_finish(m, lw->s->ambient_light);
 	return lw->n_mats++;
 }
 
@@ -484,6 +514,7 @@ static dev_light lower_light(const scene_light *l)
 		.kind = l->kind == LIGHT_SPOT ? LIGHT_KIND_SPOT : l->kind == LIGHT_PARALLEL ? LIGHT_KIND_PARALLEL
 		                                                                          : LIGHT_KIND_POINT,
 		.shadowless = l->shadowless,
+		.grid = { l->area ? l->size1 : 0, l->area ? l->size2 : 0, l->adaptive, l->orient },
 	};
 }
 
@@ -669,7 +700,7 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 {
 	memset(out, 0, sizeof *out);
 	static const lower_options defaults = { LOWER_BVH_SAH, 24 };
-	struct lowering lw = { .opt = opt ? opt : &defaults };
+	struct lowering lw = { .opt = opt ? opt : &defaults, .s = s };
 	lw.meshes = calloc(s->n_meshes + 1, sizeof *lw.meshes);
 	if (!lw.meshes)
 		return -1;
@@ -685,7 +716,12 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 		out->lights[i] = lower_light(&s->lights[i]);
 	out->n_lights = s->n_lights;
 	out->materials = lw.mats;
+	out->finishes = lw.finishes;
 	out->n_materials = lw.n_mats;
+	out->object_flags = xmalloc(s->n_objects * sizeof *out->object_flags);
+	for (int i = 0; i < s->n_objects; i++)
+		out->object_flags[i] = s->objects[i].flags;
+	out->n_objects = s->n_objects;
 	out->normals = lw.normals;
 	out->n_normals = lw.n_normals;
 	lower_camera(s, &out->params);
@@ -712,6 +748,8 @@ void lower_free(lower_result *r)
 	free(r->stats);
 	free(r->prims);
 	free(r->materials);
+	free(r->finishes);
+	free(r->object_flags);
 	free(r->lights);
 	free(r->emitters);
 	memset(r, 0, sizeof *r);

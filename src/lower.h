@@ -36,7 +36,10 @@ typedef struct {
 	float4 *normals;          /* three a smooth triangle */
 	int n_normals;
 	dev_material *materials;
+	dev_finish *finishes;     /* the same textures for the Whitted integrator, one per material */
 	int n_materials;
+	int *object_flags;        /* OBJ_ flags, one per scene object */
+	int n_objects;
 	dev_light *lights;
 	int n_lights;
 	dev_emitter *emitters;    /* emissive primitives of the top level, with their power's cdf */
@@ -52,5 +55,8 @@ void lower_free(lower_result *r);
 
 /* The physically based material of a POV-Ray texture and interior. */
 dev_material lower_material(const scene_material *m);
+/* The same texture and interior as POV-Ray's classic model reads them; ambient
+ * is multiplied by ambient_light. */
+dev_finish lower_finish(const scene_material *m, const float ambient_light[3]);
 
 #endif

@@ -85,7 +85,8 @@ static void usage(FILE *out)
 		"      --seed N          random seed (default 0)\n"
 		"      --max-depth N     bounces per path (default: max_trace_level, else %d)\n"
 		"      --integrator NAME path (default): light sampling with MIS; naive: the\n"
-		"                        reference paper's random walk, for comparison\n"
+		"                        reference paper's random walk, for comparison; whitted:\n"
+		"                        POV-Ray's classic model, one ray a pixel (fast preview)\n"
 		"      --time-limit S    stop after S seconds, or at the samples, whichever is first\n"
 		"      --checkpoint S    write the image rendered so far every S seconds\n"
 		"      --aov NAME=FILE   also write an AOV: albedo, normal, depth, id or heat\n"
@@ -189,7 +190,9 @@ static int integrator_arg(const char *s)
 		return INTEGRATOR_PATH;
 	if (strcmp(s, "naive") == 0)
 		return INTEGRATOR_NAIVE;
-	fprintf(stderr, "eclat: --integrator is path or naive, not '%s'\n", s);
+	if (strcmp(s, "whitted") == 0)
+		return INTEGRATOR_WHITTED;
+	fprintf(stderr, "eclat: --integrator is path, naive or whitted, not '%s'\n", s);
 	exit(1);
 }
 
@@ -453,11 +456,13 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		return rc;
 	}
 	struct output out = { output, o->scene };
+	int whitted = o->integrator == INTEGRATOR_WHITTED;   /* deterministic: one sample is the image */
 	render_settings rs = {
-		.width = o->width, .height = o->height, .samples = o->samples, .seed = o->seed,
+		.width = o->width, .height = o->height, .samples = whitted ? 1 : o->samples, .seed = o->seed,
 		.max_depth = o->max_depth >= 0 ? o->max_depth
 		           : s->max_trace_level > 0 ? s->max_trace_level : DEFAULT_MAX_DEPTH,
-		.integrator = o->integrator, .quiet = o->quiet, .aov = needs_aov_buffer(o),
+		.integrator = o->integrator, .adc_bailout = s->adc_bailout, .quiet = o->quiet,
+		.aov = needs_aov_buffer(o),
 		.time_limit = o->time_limit,
 		.checkpoint = o->checkpoint, .on_checkpoint = write_film, .ctx = &out, .stop = &stop_signal,
 	};

@@ -7,6 +7,8 @@
 
 #include "render.h"
 
+#define WHITTED_GROUP 16
+
 /* The kernel's buffers in argument order (an X-macro, so creating, binding and
  * releasing them cannot drift apart): name, host pointer, bytes, flags. */
 #define RENDER_BUFFERS(X, LR, PARAMS, NPIX) \
@@ -19,7 +21,9 @@
 	X(params, (PARAMS), sizeof(dev_params), CL_MEM_READ_ONLY) \
 	X(film, NULL, (NPIX) * 4 * sizeof(float), CL_MEM_READ_WRITE) \
 	X(counters, NULL, COUNT_N * sizeof(cl_uint), CL_MEM_READ_WRITE) \
-	X(aov, NULL, (PARAMS)->aov ? (NPIX) * AOV_FLOAT4S * 4 * sizeof(float) : 0, CL_MEM_READ_WRITE)
+	X(aov, NULL, (PARAMS)->aov ? (NPIX) * AOV_FLOAT4S * 4 * sizeof(float) : 0, CL_MEM_READ_WRITE) \
+	X(finishes, (LR)->finishes, (LR)->n_materials * sizeof(dev_finish), CL_MEM_READ_ONLY) \
+	X(objects, (LR)->object_flags, (LR)->n_objects * sizeof(cl_int), CL_MEM_READ_ONLY)
 
 enum {
 #define X(NAME, PTR, BYTES, FLAGS) BUF_##NAME,
@@ -141,7 +145,14 @@ static int run_pass(struct pass_loop *pl, int count)
 		                           counts, 0, NULL, NULL);
 	if (err != CL_SUCCESS)
 		return device_fail("clEnqueueWriteBuffer", err);
-	err = clEnqueueNDRangeKernel(pl->d->queue, pl->k, 1, NULL, &pl->npix, NULL, 0, NULL, NULL);
+	/* The Whitted kernel keeps a stack of ray frames per work item; PoCL puts a
+	 * work group's private arrays on one thread's stack, so its groups are kept
+	 * small (the kernel ignores the work items past the last pixel). */
+	size_t local = WHITTED_GROUP, global = (pl->npix + local - 1) / local * local;
+	if (pl->params.integrator == INTEGRATOR_WHITTED)
+		err = clEnqueueNDRangeKernel(pl->d->queue, pl->k, 1, NULL, &global, &local, 0, NULL, NULL);
+	else
+		err = clEnqueueNDRangeKernel(pl->d->queue, pl->k, 1, NULL, &pl->npix, NULL, 0, NULL, NULL);
 	if (err != CL_SUCCESS)
 		return device_fail("clEnqueueNDRangeKernel", err);
 	err = clEnqueueReadBuffer(pl->d->queue, pl->bufs[BUF_counters], CL_TRUE, 0, sizeof counts, counts,
@@ -200,7 +211,9 @@ static int run_passes(struct pass_loop *pl, film *f)
 static int setup(struct pass_loop *pl, cl_program prog, lower_result *lr)
 {
 	cl_int err;
-	pl->k = clCreateKernel(prog, "render_pass", &err);
+	/* the integrators' kernels take the same buffers */
+	const char *name = pl->params.integrator == INTEGRATOR_WHITTED ? "render_whitted" : "render_pass";
+	pl->k = clCreateKernel(prog, name, &err);
 	if (!pl->k)
 		return device_fail("clCreateKernel", err);
 	err = CL_SUCCESS;
@@ -232,6 +245,7 @@ int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_se
 	pl.params.n_planes = lr->n_planes;
 	pl.params.n_emitters = lr->n_emitters;
 	pl.params.aov = rs->aov;
+	pl.params.classic.w = rs->adc_bailout;
 	if (check_fits(d, lr, &pl.params, pl.npix))
 		return -1;
 	int rc = -1;

@@ -14,7 +14,9 @@ typedef struct render_settings {
 	int samples;           /* per pixel, at most */
 	int seed;
 	int max_depth;         /* bounces */
-	int integrator;        /* INTEGRATOR_PATH or INTEGRATOR_NAIVE */
+	int integrator;        /* INTEGRATOR_PATH, INTEGRATOR_NAIVE or INTEGRATOR_WHITTED (whose
+	                        * max_depth is max_trace_level, and which needs one sample) */
+	float adc_bailout;     /* the Whitted integrator's */
 	int quiet;
 	int aov;               /* 1: keep the first hits' albedo, normal, depth and object (film.aov) */
 	double time_limit;     /* seconds; 0: none. The render stops after the pass that passes it. */

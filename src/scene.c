@@ -277,6 +277,7 @@ static void material_extras(FILE *out, const scene_material *m)
 		{ "specular", offsetof(scene_material, specular) },
 		{ "roughness", offsetof(scene_material, roughness) },
 		{ "metallic", offsetof(scene_material, metallic) },
+		{ "reflection_metallic", offsetof(scene_material, reflection_metallic) },
 		{ "reflection_falloff", offsetof(scene_material, reflection_falloff) },
 		{ "reflection_exponent", offsetof(scene_material, reflection_exponent) },
 		{ "ior", offsetof(scene_material, ior) },

@@ -42,7 +42,8 @@ typedef struct {
 	float reflection_max[3]; /* at grazing incidence; equals reflection when one colour is given */
 	float reflection_falloff;  /* 1 */
 	float reflection_exponent; /* 1 */
-	float metallic;          /* 0; "metallic" alone is 1 */
+	float metallic;          /* 0; "metallic" alone is 1: tints highlights */
+	float reflection_metallic; /* 0: reflection { metallic }, tints reflections */
 	bool reflection_fresnel; /* false */
 	bool roughness_set;      /* roughness was given: metal reflections are rough */
 	bool conserve_energy;    /* false */

@@ -1,0 +1,481 @@
+/* integrator_whitted.cl: POV-Ray 3.7's classic lighting model, for previews and
+ * for pixel-level cross-checks against povray (tests/povray.test).
+ *
+ * One ray through each pixel's centre, as povray -A traces it. At each surface,
+ * as POV-Ray's Trace::ComputeLightedTexture does for a one-layer texture:
+ *   colour = pigment * (ambient * ambient_light + emission) * opacity
+ *          + for each light_source: diffuse, phong and specular (whitted_light)
+ *          + filter colour * what the refracted ray sees (TIR: its reflection)
+ *          + reflectivity * what the reflected ray sees ^ exponent
+ * where opacity = 1 - filter - transmit and filter colour = pigment * filter +
+ * transmit. Rays stop at max_trace_level (params max_depth) or when their weight
+ * falls under adc_bailout; POV-Ray's ray tree is walked with an explicit stack of
+ * frames, the reflected and refracted rays being each frame's children. */
+
+#define WHITTED_FRAMES 24        /* trace levels the kernel follows, at most */
+#define WHITTED_CROSSINGS 32     /* transparent surfaces a shadow ray passes, at most */
+#define WHITTED_REGIONS 40       /* an area light's grid regions waiting, at most */
+#define POV_EPSILON 1e-10f       /* POV-Ray's EPSILON */
+
+/* The kinds of rays, for POV-Ray's no_image and no_reflection and for whether a
+ * ray counts a trace level: a ray that only passes through a surface of the same
+ * ior (POV-Ray's "continued" ray) does not. */
+enum { WRAY_IMAGE = 1, WRAY_REFLECTED = 2, WRAY_CONTINUED = 4 };
+
+typedef struct {
+	float3 o, d;
+	float3 mult;       /* the parent adds mult * (this ray's colour)^exponent */
+	float exponent;
+	float weight;      /* POV-Ray's ray weight, against adc_bailout */
+	int level;         /* trace level when the ray is traced */
+	int kind;          /* WRAY_ */
+} whitted_ray;
+
+typedef struct {
+	whitted_ray ray;
+	float3 colour;     /* the ray's colour so far */
+	whitted_ray child[2];
+	int n_child, next;
+} whitted_frame;
+
+/* Everything one shading point needs to know. */
+typedef struct {
+	float3 x;          /* the hit point */
+	float3 n;          /* normal, turned to face the ray */
+	float3 d;          /* the ray's direction */
+	float eps;         /* how far rays start off the surface */
+	int object;
+} whitted_point;
+
+typedef struct {
+	global const bvh_node *nodes;
+	global const dev_prim *prims;
+	global const float4 *normals;
+	global const dev_finish *finishes;
+	global const int *objects;
+	global const dev_light *lights;
+	global const dev_params *p;
+	uint *counts;
+} whitted_scene;
+
+inline float whitted_max3(float3 c)
+{
+	return fmax(c.x, fmax(c.y, c.z));
+}
+
+/* POV-Ray's greyscale weights. */
+inline float whitted_grey(float3 c)
+{
+	return 0.297f * c.x + 0.589f * c.y + 0.114f * c.z;
+}
+
+inline float3 whitted_pow3(float3 c, float e)
+{
+	return e == 1.0f ? c : pow(c, (float3)(e));
+}
+
+/* POV-Ray's empirical Fresnel curve of "metallic": 0 at normal incidence, 1 at
+ * grazing; metallic tints by the pigment where it is small. */
+inline float3 whitted_metallic_tint(float metallic, float cos_angle, float3 pigment)
+{
+	float x = fabs(acos(clamp(cos_angle, -1.0f, 1.0f))) / M_PI_2_F;
+	float f = clamp(0.014567225f / ((x - 1.12f) * (x - 1.12f)) - 0.011612903f, 0.0f, 1.0f);
+	return (float3)(1.0f) + metallic * (1.0f - f) * (pigment - (float3)(1.0f));
+}
+
+/* The closest surface along (o, d) in (tmin, tmax) that does not carry the flags
+ * in skip. */
+inline traverse_hit whitted_closest(const whitted_scene *sc, float3 o, float3 d, float tmin, float tmax,
+                                    int skip, int kind, intersect_surface *surf)
+{
+	for (;;) {
+		traverse_hit h = traverse_closest(sc->nodes, sc->prims, sc->p->n_prims, sc->p->n_planes, o, d, tmin,
+		                                  tmax, sc->counts, kind);
+		if (h.prim < 0)
+			return h;
+		*surf = intersect_surface_at(sc->prims, sc->normals, h.prim, h.inst, o + h.t * d);
+		if (!(sc->objects[surf->object] & skip))
+			return h;
+		tmin = h.t;
+	}
+}
+
+/* POV-Ray's interior fade over a distance t travelled inside. */
+inline float3 whitted_fade(global const dev_finish *f, float t)
+{
+	float fd = f->interior.y, fp = f->interior.z;
+	float3 fc = f->fade_color.xyz;
+	if (fabs(fd) <= POV_EPSILON || fp <= 0.0f)
+		return (float3)(1.0f);
+	if (fp >= 1000.0f)
+		return exp(-((float3)(1.0f) - fc) * (t / fd));
+	return fc + ((float3)(1.0f) - fc) / (1.0f + pow(t / fd, fp));
+}
+
+/* What of the light reaches x from the distance dist along l: each surface
+ * between filters it by pigment * filter + transmit, and by its interior's fade
+ * where the ray crosses the inside; opaque surfaces stop it (TracePointLightShadowRay). */
+inline float3 whitted_shadow(const whitted_scene *sc, float3 x, float3 l, float dist, float3 colour, float eps)
+{
+	float3 o = x;
+	float travelled = 0.0f;
+	for (int i = 0; i < WHITTED_CROSSINGS; i++) {
+		intersect_surface surf;
+		sc->counts[COUNT_RAYS + RAY_SHADOW]++;
+		traverse_hit h = whitted_closest(sc, o, l, 0.0f, dist - travelled - eps, OBJECT_NO_SHADOW, RAY_SHADOW,
+		                                 &surf);
+		if (h.prim < 0)
+			return colour;
+		global const dev_finish *f = &sc->finishes[surf.material];
+		float filter = f->pigment.w, transmit = f->ambient.w;
+		if (fabs(filter) + fabs(transmit) < sc->p->classic.w)
+			return (float3)(0.0f);
+		colour *= f->pigment.xyz * filter + transmit;
+		if (dot(surf.ng, l) > 0.0f)   /* leaving the object: its interior faded the light */
+			colour *= whitted_fade(f, h.t);
+		o += (h.t + eps) * l;
+		travelled += h.t + eps;
+	}
+	return (float3)(0.0f);
+}
+
+/* The position of grid light (u, v) of an area light, and its axes when oriented
+ * (TraceAreaLightSubsetShadowRay, without jitter). */
+inline float3 whitted_grid_point(global const dev_light *l, int size1, int size2, int u, int v, float3 a1, float3 a2)
+{
+	float ju = (float)u, jv = (float)v;
+	if (l->axis2.w > 0.0f) {   /* circular */
+		ju = ju / (float)(size1 - 1) - 0.5f + 0.001f;
+		jv = jv / (float)(size2 - 1) - 0.5f + 0.001f;
+		float s = fmax(fabs(ju), fabs(jv)) / sqrt(ju * ju + jv * jv);
+		return l->position.xyz + a1 * (ju * s) + a2 * (jv * s);
+	}
+	float3 p = l->position.xyz;
+	if (size1 > 1)
+		p += a1 * (ju / (float)(size1 - 1) - 0.5f);
+	if (size2 > 1)
+		p += a2 * (jv / (float)(size2 - 1) - 0.5f);
+	return p;
+}
+
+/* The light of one grid point that reaches x. */
+inline float3 whitted_grid_sample(const whitted_scene *sc, global const dev_light *l, int s1, int s2, int u, int v,
+                                  float3 a1, float3 a2, float3 x, float3 colour, float eps)
+{
+	float3 to = whitted_grid_point(l, s1, s2, u, v, a1, a2) - x;
+	float dist = length(to);
+	return dist > 0.0f ? whitted_shadow(sc, x, to / dist, dist, colour, eps) : colour;
+}
+
+/* An area light's shadow: POV-Ray samples the grid's corners and splits a region
+ * in four while its corners differ (or down to the adaptive level), averaging
+ * the four quarters; the grid is size1 x size2 lights, unjittered. */
+inline float3 whitted_area_shadow(const whitted_scene *sc, global const dev_light *l, float3 x, float3 to_light,
+                                  float3 colour, float eps)
+{
+	int s1 = (int)l->grid.x, s2 = (int)l->grid.y;
+	float3 a1 = l->axis1.xyz, a2 = l->axis2.xyz;
+	if (l->grid.w > 0.0f) {   /* orient: square, facing the point */
+		float len = length(a1);
+		float3 t = fabs(fabs(to_light.z) - 1.0f) < 0.01f ? (float3)(0.0f, 1.0f, 0.0f) : (float3)(0.0f, 0.0f, 1.0f);
+		a1 = normalize(cross(to_light, t));
+		a2 = normalize(cross(to_light, a1)) * len;
+		a1 *= len;
+	}
+	int4 stack[WHITTED_REGIONS];
+	float wstack[WHITTED_REGIONS];
+	int sp = 0;
+	float3 sum = (float3)(0.0f);
+	stack[sp] = (int4)(0, 0, s1 - 1, s2 - 1);
+	wstack[sp++] = 1.0f;
+	while (sp > 0) {
+		sp--;
+		int4 r = stack[sp];
+		float w = wstack[sp];
+		int level = (int)round(-log2(w) / 2.0f);
+		float3 c0 = whitted_grid_sample(sc, l, s1, s2, r.x, r.y, a1, a2, x, colour, eps);
+		float3 c1 = whitted_grid_sample(sc, l, s1, s2, r.z, r.y, a1, a2, x, colour, eps);
+		float3 c2 = whitted_grid_sample(sc, l, s1, s2, r.x, r.w, a1, a2, x, colour, eps);
+		float3 c3 = whitted_grid_sample(sc, l, s1, s2, r.z, r.w, a1, a2, x, colour, eps);
+		float3 d01 = fabs(c0 - c1), d13 = fabs(c1 - c3), d32 = fabs(c3 - c2), d20 = fabs(c2 - c0);
+		bool split = (r.z - r.x > 1 || r.w - r.y > 1) &&
+		             (level < (int)l->grid.z || d01.x + d01.y + d01.z > 0.1f || d13.x + d13.y + d13.z > 0.1f ||
+		              d32.x + d32.y + d32.z > 0.1f || d20.x + d20.y + d20.z > 0.1f);
+		if (!split || sp + 4 > WHITTED_REGIONS) {
+			sum += w * 0.25f * (c0 + c1 + c2 + c3);
+			continue;
+		}
+		int mu0 = (r.x + r.z) / 2, mu1 = (r.x + r.z + 1) / 2, mv0 = (r.y + r.w) / 2, mv1 = (r.y + r.w + 1) / 2;
+		stack[sp] = (int4)(r.x, r.y, mu0, mv0);
+		wstack[sp++] = 0.25f * w;
+		stack[sp] = (int4)(mu1, r.y, r.z, mv0);
+		wstack[sp++] = 0.25f * w;
+		stack[sp] = (int4)(r.x, mv1, mu0, r.w);
+		wstack[sp++] = 0.25f * w;
+		stack[sp] = (int4)(mu1, mv1, r.z, r.w);
+		wstack[sp++] = 0.25f * w;
+	}
+	return sum;
+}
+
+/* POV-Ray's diffuse term: pigment * light * |N.L|^brilliance * diffuse * opacity. */
+inline float3 whitted_diffuse(global const dev_finish *f, float3 n, float3 l, float3 light, float opacity)
+{
+	float c = fabs(dot(n, l));
+	float k = f->terms.x != 1.0f ? pow(c, f->terms.x) : c;
+	return k * f->emission.w * opacity * f->pigment.xyz * light;
+}
+
+/* phong: the light direction against the mirror direction of the eye ray,
+ * to the power phong_size; metallic tints it by the pigment. */
+inline float3 whitted_phong(global const dev_finish *f, float3 n, float3 d, float3 l, float3 light)
+{
+	float3 r = d - 2.0f * dot(d, n) * n;
+	float c = dot(r, l);
+	if (c <= 0.0f || !(f->highlight.y < 60.0f || c > 0.0008f))
+		return (float3)(0.0f);
+	float k = f->highlight.x * pow(c, f->highlight.y);
+	float3 tint = f->terms.y > 0.0f ? whitted_metallic_tint(f->terms.y, dot(n, l), f->pigment.xyz) : (float3)(1.0f);
+	return k * light * tint;
+}
+
+/* specular: the half vector against the normal, to the power 1/roughness. */
+inline float3 whitted_specular(global const dev_finish *f, float3 n, float3 d, float3 l, float3 light)
+{
+	float3 h = 0.5f * (l - d);
+	float len = length(h);
+	if (len <= 0.0f)
+		return (float3)(0.0f);
+	float c = dot(h, n) / len;
+	if (c <= 0.0f)
+		return (float3)(0.0f);
+	float k = f->highlight.z * pow(c, f->highlight.w);
+	float3 tint = f->terms.y > 0.0f ? whitted_metallic_tint(f->terms.y, dot(n, l), f->pigment.xyz) : (float3)(1.0f);
+	return k * light * tint;
+}
+
+/* The direction to a light, the distance its shadow ray goes, and its colour
+ * after fade and spotlight (ComputeOneLightRay). */
+inline float3 whitted_light_ray(global const dev_light *l, float3 x, float3 *dir, float *dist)
+{
+	float3 to = l->position.xyz - x;
+	if (l->kind == LIGHT_KIND_PARALLEL) {
+		*dir = -l->spot.xyz;
+		*dist = dot(to, *dir);
+		return l->color.xyz;
+	}
+	*dist = length(to);
+	*dir = *dist > 0.0f ? to / *dist : (float3)(0.0f, 1.0f, 0.0f);
+	float k = light_fade(l, *dist);
+	if (l->kind == LIGHT_KIND_SPOT)
+		k *= light_spot(l, -*dir);
+	return k * l->color.xyz;
+}
+
+/* The sum of every light_source's diffuse and highlights at a point (ComputeDiffuseLight). */
+inline float3 whitted_lights(const whitted_scene *sc, global const dev_finish *f, const whitted_point *pt,
+                             float opacity)
+{
+	float3 sum = (float3)(0.0f);
+	bool both_sides = sc->objects[pt->object] & OBJECT_DOUBLE_ILLUMINATE;
+	float3 from = pt->x + pt->eps * pt->n;
+	for (int i = 0; i < sc->p->n_lights; i++) {
+		global const dev_light *l = &sc->lights[i];
+		float3 dir;
+		float dist;
+		float3 light = whitted_light_ray(l, pt->x, &dir, &dist);
+		if (fabs(light.x) < POV_EPSILON && fabs(light.y) < POV_EPSILON && fabs(light.z) < POV_EPSILON)
+			continue;
+		if (!both_sides && dot(pt->n, dir) < POV_EPSILON)
+			continue;
+		if (!l->shadowless) {
+			if (l->grid.x > 0.0f)
+				light = whitted_area_shadow(sc, l, from, dir, light, pt->eps);
+			else
+				light = whitted_shadow(sc, from, dir, dist, light, pt->eps);
+		}
+		if (fabs(light.x) <= POV_EPSILON && fabs(light.y) <= POV_EPSILON && fabs(light.z) <= POV_EPSILON)
+			continue;
+		sum += whitted_diffuse(f, pt->n, dir, light, opacity);
+		if (!l->shadowless) {   /* POV-Ray's shadowless lights are fill lights: no highlights */
+			if (f->highlight.x > 0.0f)
+				sum += whitted_phong(f, pt->n, pt->d, dir, light);
+			if (f->highlight.z > 0.0f)
+				sum += whitted_specular(f, pt->n, pt->d, dir, light);
+		}
+	}
+	return sum;
+}
+
+/* How much the surface reflects at this angle, and the reflected ray's weight
+ * (ComputeReflectivity, then reflection's metallic). ior_ratio: the ior on the
+ * far side over the near side's. */
+inline float3 whitted_reflectivity(global const dev_finish *f, float cos_i, float ior_ratio, float *weight)
+{
+	float3 lo = f->reflection.xyz, hi = f->reflection_max.xyz, r;
+	if (f->terms.w > 0.0f) {   /* fresnel */
+		float sqx = ior_ratio * ior_ratio + cos_i * cos_i - 1.0f;
+		if (sqx > 0.0f) {
+			float g = sqrt(sqx);
+			float a = (g - cos_i) / (g + cos_i), b = (cos_i * (g + cos_i) - 1.0f) / (cos_i * (g - cos_i) + 1.0f);
+			float k = clamp(0.5f * a * a * (1.0f + b * b), 0.0f, 1.0f);
+			r = k * hi + (1.0f - k) * lo;
+		} else {
+			r = hi;
+		}
+		*weight *= whitted_max3(r);
+	} else {
+		*weight *= fmax(whitted_max3(hi), whitted_max3(lo));
+		float falloff = f->reflection.w;
+		float frac = fabs(falloff - 1.0f) > POV_EPSILON ? pow(1.0f - cos_i, falloff) : 1.0f - cos_i;
+		r = fabs(frac) < POV_EPSILON ? lo : fabs(frac - 1.0f) < POV_EPSILON ? hi : frac * hi + (1.0f - frac) * lo;
+	}
+	if (f->terms.z != 0.0f)
+		r *= whitted_metallic_tint(f->terms.z, cos_i, f->pigment.xyz);
+	return r;
+}
+
+inline whitted_ray whitted_child(float3 o, float3 d, float3 mult, float exponent, float weight, int level, int kind)
+{
+	whitted_ray r = { o, d, mult, exponent, weight, level, kind };
+	return r;
+}
+
+/* Traces one ray: its surface's own colour, and the rays it spawns as children. */
+inline whitted_frame whitted_shade(const whitted_scene *sc, whitted_ray ray, first_hit *first)
+{
+	whitted_frame fr;
+	fr.ray = ray;
+	fr.colour = (float3)(0.0f);
+	fr.n_child = fr.next = 0;
+	global const dev_params *p = sc->p;
+	if (ray.level >= p->max_depth || ray.weight < p->classic.w)
+		return fr;
+	int skip = ray.kind & WRAY_REFLECTED ? OBJECT_NO_REFLECTION : OBJECT_NO_IMAGE;
+	intersect_surface surf;
+	int kind = ray.level == 0 ? RAY_CAMERA : RAY_BOUNCE;
+	traverse_hit hit = whitted_closest(sc, ray.o, ray.d, 0.0f, INFINITY, skip, kind, &surf);
+	if (hit.prim < 0) {
+		fr.colour = p->background.xyz;
+		return fr;
+	}
+	int level = ray.level + (ray.kind & WRAY_CONTINUED ? 0 : 1);
+	global const dev_finish *f = &sc->finishes[surf.material];
+	whitted_point pt;
+	pt.d = ray.d;
+	pt.x = ray.o + hit.t * ray.d;
+	pt.n = dot(surf.ns, ray.d) > 0.0f ? -surf.ns : surf.ns;
+	pt.eps = 1e-4f * fmax(1.0f, fmax(fabs(pt.x.x), fmax(fabs(pt.x.y), fabs(pt.x.z))));
+	pt.object = surf.object;
+	bool entering = dot(surf.ng, ray.d) < 0.0f;
+	float3 ng = entering ? surf.ng : -surf.ng;
+	if (first->object < 0) {
+		first->albedo = f->pigment.xyz;
+		first->normal = pt.n;
+		first->depth = hit.t;
+		first->object = surf.object;
+	}
+
+	float3 pig = f->pigment.xyz;
+	float filter = f->pigment.w, transmit = f->ambient.w, ior = f->interior.x;
+	float cos_i = -dot(ray.d, pt.n);
+	float rweight = ray.weight;
+	float3 reflec = whitted_reflectivity(f, cos_i, entering ? ior : 1.0f / ior, &rweight);
+	float opacity = 1.0f - filter - transmit;
+	fr.colour = pig * (f->ambient.xyz + f->emission.xyz) * opacity + whitted_lights(sc, f, &pt, opacity);
+
+	float3 filcol = pig * filter + transmit;
+	if (f->interior.w > 0.0f)   /* conserve_energy: what is reflected is not transmitted */
+		filcol *= fmin((float3)(1.0f), (float3)(1.0f) - reflec);
+	float trans = fmin(1.0f, fabs(whitted_grey(filcol)));
+	bool tir = false;
+	int image = ray.kind & WRAY_IMAGE;
+	if (trans > p->classic.w) {
+		float tweight = ray.weight * whitted_max3(fabs(filcol));
+		float3 att = entering ? (float3)(1.0f) : whitted_fade(f, hit.t);
+		float ratio = entering ? 1.0f / ior : ior;
+		float3 below = pt.x - pt.eps * ng;
+		if (fabs(ratio - 1.0f) < POV_EPSILON) {
+			fr.child[fr.n_child++] = whitted_child(below, ray.d, att * filcol, 1.0f, tweight, level,
+			                                       image | WRAY_CONTINUED | (ray.kind & WRAY_REFLECTED));
+		} else {
+			float t = 1.0f + ratio * ratio * (cos_i * cos_i - 1.0f);
+			if (t < 0.0f) {   /* total internal reflection, unfiltered */
+				tir = true;
+				float3 r = ray.d + 2.0f * cos_i * pt.n;
+				fr.child[fr.n_child++] = whitted_child(pt.x + pt.eps * ng, normalize(r), att, 1.0f, tweight,
+				                                       level, WRAY_REFLECTED);
+			} else {
+				float3 dir = ratio * ray.d + (ratio * cos_i - sqrt(t)) * pt.n;
+				fr.child[fr.n_child++] = whitted_child(below, normalize(dir), att * filcol, 1.0f, tweight, level,
+				                                       image | (ray.kind & WRAY_REFLECTED));
+			}
+		}
+	}
+	if (!tir && (reflec.x != 0.0f || reflec.y != 0.0f || reflec.z != 0.0f)) {
+		float3 r = ray.d + 2.0f * cos_i * pt.n;
+		fr.child[fr.n_child++] = whitted_child(pt.x + pt.eps * ng, normalize(r), reflec, f->reflection_max.w,
+		                                       rweight, level, WRAY_REFLECTED);
+	}
+	return fr;
+}
+
+/* The colour of a camera ray: POV-Ray's recursion, as a walk over a stack of
+ * frames; a finished frame adds its colour to its parent's. */
+inline float3 whitted_radiance(const whitted_scene *sc, whitted_ray camera, first_hit *first)
+{
+	whitted_frame stack[WHITTED_FRAMES];
+	int sp = 0;
+	stack[sp++] = whitted_shade(sc, camera, first);
+	float3 result = (float3)(0.0f);
+	while (sp > 0) {
+		whitted_frame *top = &stack[sp - 1];
+		if (top->next < top->n_child && sp < WHITTED_FRAMES) {
+			whitted_ray r = top->child[top->next++];
+			sc->counts[COUNT_RAYS + RAY_BOUNCE]++;
+			stack[sp++] = whitted_shade(sc, r, first);
+			continue;
+		}
+		float3 c = top->colour;
+		whitted_ray r = top->ray;
+		if (--sp == 0)
+			result = c;
+		else
+			stack[sp - 1].colour += r.mult * whitted_pow3(c, r.exponent);
+	}
+	return result;
+}
+
+kernel void render_whitted(global const bvh_node *nodes, global const dev_prim *prims,
+                           global const float4 *normals, global const dev_material *materials,
+                           global const dev_light *lights, global const dev_emitter *emitters,
+                           global const dev_params *p, global float4 *film, global uint *counters,
+                           global float4 *aov, global const dev_finish *finishes, global const int *objects)
+{
+	int pixel = get_global_id(0);
+	if (pixel >= p->width * p->height)
+		return;
+	int px = pixel % p->width, py = pixel / p->width;
+	uint counts[COUNT_N] = { 0 };
+	whitted_scene sc = { nodes, prims, normals, finishes, objects, lights, p, counts };
+	float3 d = camera_ray_dir(p, px, py, 0.5f, 0.5f);
+	whitted_ray camera = whitted_child(p->cam_location.xyz, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE);
+	first_hit first = { (float3)(0.0f), (float3)(0.0f), 0.0f, -1 };
+	counts[COUNT_RAYS + RAY_CAMERA]++;
+	float3 l = whitted_radiance(&sc, camera, &first);
+	if (!(isfinite(l.x) && isfinite(l.y) && isfinite(l.z)))
+		l = (float3)(0.0f);
+	/* every pass adds the same deterministic colour, so the film's average is it */
+	film[pixel] += (float4)(l, (float)(counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA]));
+	if (p->aov) {
+		if (first.object >= 0) {
+			aov[AOV_FLOAT4S * pixel] += (float4)(first.albedo, 1.0f);
+			aov[AOV_FLOAT4S * pixel + 1] += (float4)(first.normal, 0.0f);
+			aov[AOV_FLOAT4S * pixel + 2].x += first.depth;
+		}
+		if (p->sample_base == 0)
+			aov[AOV_FLOAT4S * pixel + 2].y = (float)first.object;
+	}
+	for (int i = 0; i < COUNT_N; i++)
+		atomic_add(&counters[i], counts[i]);
+}
