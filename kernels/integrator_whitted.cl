@@ -122,7 +122,8 @@ inline float3 whitted_shadow(const whitted_scene *sc, float3 x, float3 l, float 
 	for (int i = 0; i < WHITTED_CROSSINGS; i++) {
 		intersect_surface surf;
 		sc->counts[COUNT_RAYS + RAY_SHADOW]++;
-		traverse_hit h = whitted_closest(sc, o, l, 0.0f, dist - travelled - eps, OBJECT_NO_SHADOW, RAY_SHADOW,
+		/* POV-Ray's shadow rays start on the surface and ignore what is nearer than a tolerance */
+		traverse_hit h = whitted_closest(sc, o, l, eps, dist - travelled - eps, OBJECT_NO_SHADOW, RAY_SHADOW,
 		                                 &surf);
 		if (h.prim < 0)
 			return colour;
@@ -133,8 +134,8 @@ inline float3 whitted_shadow(const whitted_scene *sc, float3 x, float3 l, float 
 		colour *= f->pigment.xyz * filter + transmit;
 		if (dot(surf.ng, l) > 0.0f)   /* leaving the object: its interior faded the light */
 			colour *= whitted_fade(f, h.t);
-		o += (h.t + eps) * l;
-		travelled += h.t + eps;
+		o += h.t * l;
+		travelled += h.t;
 	}
 	return (float3)(0.0f);
 }
@@ -278,7 +279,7 @@ inline float3 whitted_lights(const whitted_scene *sc, global const dev_finish *f
 {
 	float3 sum = (float3)(0.0f);
 	bool both_sides = sc->objects[pt->object] & OBJECT_DOUBLE_ILLUMINATE;
-	float3 from = pt->x + pt->eps * pt->n;
+	float3 from = pt->x;
 	for (int i = 0; i < sc->p->n_lights; i++) {
 		global const dev_light *l = &sc->lights[i];
 		float3 dir;

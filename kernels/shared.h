@@ -78,7 +78,7 @@ typedef struct {
 	float4 emission;       /* rgb; w: diffuse */
 	float4 highlight;      /* x: phong, y: phong_size, z: specular, w: 1 / roughness */
 	float4 reflection;     /* rgb: reflection at normal incidence (min); w: falloff */
-	float4 reflection_max; /* rgb: at grazing incidence (max); w: exponent */
+	float4 reflection_max; /* rgb: at grazing incidence (max); w: 1 / exponent */
 	float4 terms;          /* x: brilliance, y: metallic (highlights), z: reflection's metallic,
 	                        * w: 1 for fresnel reflection */
 	float4 interior;       /* x: ior, y: fade_distance, z: fade_power, w: 1 for conserve_energy */

@@ -142,8 +142,9 @@ dev_finish lower_finish(const scene_material *m, const float ambient_light[3])
 		.emission = { m->emission[0], m->emission[1], m->emission[2], m->diffuse },
 		.highlight = { m->phong, m->phong_size, m->specular, m->roughness > 0 ? 1 / m->roughness : 0 },
 		.reflection = { m->reflection[0], m->reflection[1], m->reflection[2], m->reflection_falloff },
+		/* POV-Ray raises the reflected colour to 1 / exponent */
 		.reflection_max = { m->reflection_max[0], m->reflection_max[1], m->reflection_max[2],
-		                    m->reflection_exponent },
+		                    m->reflection_exponent != 0 ? 1 / m->reflection_exponent : 1 },
 		.terms = { m->brilliance, m->metallic, m->reflection_metallic, m->reflection_fresnel },
 		.interior = { m->ior > 0 ? m->ior : 1, m->fade_distance, m->fade_power, m->conserve_energy },
 		.fade_color = { m->fade_color[0], m->fade_color[1], m->fade_color[2], 0 },

@@ -1,4 +1,5 @@
 /* main.c: eclat's command line: parse, evaluate, lower, render, write. */
+#include <ctype.h>
 #include <errno.h>
 #include <getopt.h>
 #include <signal.h>
@@ -14,6 +15,7 @@
 #include "film.h"
 #include "image.h"
 #include "lower.h"
+#include "mesh_io.h"
 #include "parse.h"
 #include "render.h"
 
@@ -29,7 +31,7 @@
 #define MAX_LIST 64   /* -I and -D options each */
 
 struct options {
-	const char *scene, *output, *kernel_dir;
+	const char *scene, *output, *kernel_dir, *export_mesh2;
 	int width, height, samples, seed, max_depth, device, quiet, integrator;
 	int list_devices, check, dump_ast, dump_scene;
 	double time_limit, checkpoint;
@@ -41,7 +43,7 @@ struct options {
 };
 
 enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_DIR,
-       OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_STATS, OPT_SKIP_UNSUPPORTED };
+       OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_STATS, OPT_SKIP_UNSUPPORTED, OPT_EXPORT_MESH2 };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -59,6 +61,7 @@ static const struct option long_options[] = {
 	{ "include-path", required_argument, NULL, 'I' },
 	{ "declare", required_argument, NULL, 'D' },
 	{ "skip-unsupported", no_argument, NULL, OPT_SKIP_UNSUPPORTED },
+	{ "export-mesh2", required_argument, NULL, OPT_EXPORT_MESH2 },
 	{ "device", required_argument, NULL, OPT_DEVICE },
 	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
 	{ "kernel-dir", required_argument, NULL, OPT_KERNEL_DIR },
@@ -102,6 +105,8 @@ static void usage(FILE *out)
 		"  -D, --declare NAME=VALUE  declare NAME before the scene is read, as #declare\n"
 		"                        does; VALUE is a number, a \"string\" or an expression\n"
 		"      --skip-unsupported  leave out objects eclat cannot render, with a warning\n"
+		"      --export-mesh2 FILE  write the mesh file FILE (any format assimp reads) as a\n"
+		"                        POV-Ray mesh2 include, to -o or standard output, and exit\n"
 		"      --check           check the scene for errors and warnings, render nothing\n"
 		"      --dump-ast        print the syntax tree and exit\n"
 		"      --dump-scene      print the evaluated scene in world space and exit\n"
@@ -257,6 +262,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case 'I': list_arg("-I", o->include_dirs, &o->n_include_dirs, optarg); break;
 		case 'D': list_arg("-D", o->declares, &o->n_declares, optarg); break;
 		case OPT_SKIP_UNSUPPORTED: o->skip_unsupported = 1; break;
+		case OPT_EXPORT_MESH2: o->export_mesh2 = optarg; break;
 		case OPT_LIST_DEVICES: o->list_devices = 1; break;
 		case OPT_KERNEL_DIR: o->kernel_dir = optarg; break;
 		case OPT_CHECK: o->check = 1; break;
@@ -270,7 +276,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 			exit(1);
 		}
 	}
-	if (o->list_devices)
+	if (o->list_devices || (o->export_mesh2 && optind == argc))
 		return;
 	if (optind != argc - 1) {
 		fprintf(stderr, optind == argc ? "eclat: no scene file given\n" : "eclat: give one scene file, not %d\n",
@@ -490,12 +496,57 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	return rc;
 }
 
+/* The declared name of an exported mesh: its file's stem, capitalised, with what
+ * an identifier cannot hold turned into '_' ("bunny.ply" gives Bunny). */
+static void mesh2_name(const char *path, char *name, size_t n)
+{
+	const char *base = strrchr(path, '/');
+	base = base ? base + 1 : path;
+	size_t k = 0;
+	if (!isalpha((unsigned char)*base))
+		name[k++] = 'M';
+	for (; *base && *base != '.' && k + 1 < n; base++)
+		name[k++] = isalnum((unsigned char)*base) ? *base : '_';
+	name[k] = '\0';
+	name[0] = (char)toupper((unsigned char)name[0]);
+}
+
+/* --export-mesh2 FILE: the mesh as a mesh2 include, on -o or standard output. */
+static int export_mesh2(const struct options *o)
+{
+	scene_mesh m;
+	char err[512], name[64];
+	if (mesh_io_load(o->export_mesh2, &m, err, sizeof err)) {
+		fprintf(stderr, "eclat: %s: %s\n", o->export_mesh2, err);
+		return 1;
+	}
+	FILE *out = o->output ? fopen(o->output, "w") : stdout;
+	int rc = 1;
+	if (!out) {
+		fprintf(stderr, "eclat: %s: %s\n", o->output, strerror(errno));
+	} else {
+		mesh2_name(o->export_mesh2, name, sizeof name);
+		rc = mesh_io_write_mesh2(&m, name, o->export_mesh2, out) ? 1 : 0;
+		if ((out != stdout && fclose(out)) || (out == stdout && fflush(out)))
+			rc = 1;
+		if (rc)
+			fprintf(stderr, "eclat: could not write %s\n", o->output ? o->output : "the mesh2");
+	}
+	free(m.v);
+	free(m.nrm);
+	free(m.face);
+	free(m.face_nrm);
+	return rc;
+}
+
 int main(int argc, char **argv)
 {
 	struct options o;
 	parse_options(argc, argv, &o);
 	if (o.list_devices)
 		return device_list(stdout) < 0 ? 1 : 0;
+	if (o.export_mesh2)
+		return export_mesh2(&o);
 
 	char *output = o.output ? strdup(o.output) : default_output(o.scene);
 	if (!output)

@@ -101,3 +101,28 @@ int mesh_io_load(const char *path, scene_mesh *m, char *err, size_t errlen)
 	aiReleaseImport(sc);
 	return 0;
 }
+
+/* Up to 8 numbers on a line, so the file stays readable and diffable. */
+static void write_vectors(FILE *out, const char *block, const double (*v)[3], int n)
+{
+	fprintf(out, "  %s { %d", block, n);
+	for (int i = 0; i < n; i++)
+		fprintf(out, ",%s<%.9g, %.9g, %.9g>", i % 4 ? " " : "\n    ", v[i][0], v[i][1], v[i][2]);
+	fprintf(out, "\n  }\n");
+}
+
+int mesh_io_write_mesh2(const scene_mesh *m, const char *name, const char *source, FILE *out)
+{
+	fprintf(out, "// %s: %d vertices and %d triangles from %s, written by eclat --export-mesh2.\n"
+	        "// Vertices are printed with 9 digits, so povray and eclat read the same floats.\n",
+	        name, m->n_v, m->n_faces, source);
+	fprintf(out, "#declare %s = mesh2 {\n", name);
+	write_vectors(out, "vertex_vectors", (const double (*)[3])m->v, m->n_v);
+	if (m->nrm && m->face_nrm)   /* the normals share the vertices' indices */
+		write_vectors(out, "normal_vectors", (const double (*)[3])m->nrm, m->n_nrm);
+	fprintf(out, "  face_indices { %d", m->n_faces);
+	for (int f = 0; f < m->n_faces; f++)
+		fprintf(out, ",%s<%d, %d, %d>", f % 6 ? " " : "\n    ", m->face[f][0], m->face[f][1], m->face[f][2]);
+	fprintf(out, "\n  }\n}\n");
+	return ferror(out) ? -1 : 0;
+}

@@ -4,6 +4,7 @@
 #define ECLAT_MESH_IO_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "scene.h"
 
@@ -12,5 +13,10 @@
  * for every vertex. Points and lines are dropped. Returns 0, or -1 with assimp's
  * reason (or ours) in err. m's arrays are the caller's (scene_add_mesh takes them). */
 int mesh_io_load(const char *path, scene_mesh *m, char *err, size_t errlen);
+
+/* Writes m as POV-Ray's "#declare NAME = mesh2 { ... }" (vertex_vectors, the
+ * normal_vectors when it has them, face_indices), which povray and eclat both
+ * read; source names the file it came from in a comment. Returns -1 on a write error. */
+int mesh_io_write_mesh2(const scene_mesh *m, const char *name, const char *source, FILE *out);
 
 #endif
