@@ -168,6 +168,7 @@ scene_light scene_default_light(void)
 		.point_at = { 0, 0, 1 },
 		.radius = 30,
 		.falloff = 45,
+		.adaptive = 100,   /* POV-Ray: without adaptive, every light of the grid is tested */
 		.looks_like = -1,
 		.loc = SRC_NOWHERE,
 	};

@@ -124,7 +124,7 @@ typedef struct {
 	/* area_light <axis1>, <axis2>, size1, size2: a rectangle of size1 x size2 lights */
 	bool area;
 	double axis1[3], axis2[3];
-	int size1, size2, adaptive;
+	int size1, size2, adaptive;   /* adaptive: 100 when not given, as in POV-Ray */
 	bool jitter, circular, orient;
 	bool shadowless;
 	float fade_distance, fade_power; /* 0, 0: no falloff, as in POV-Ray */
