@@ -183,17 +183,16 @@ inline float3 whitted_area_shadow(const whitted_scene *sc, global const dev_ligh
 		a2 = normalize(cross(to_light, a1)) * len;
 		a1 *= len;
 	}
-	int4 stack[WHITTED_REGIONS];
-	float wstack[WHITTED_REGIONS];
+	int4 stack[WHITTED_REGIONS];   /* regions of the grid: first and last light on each side */
+	int depth[WHITTED_REGIONS];    /* how often the grid was cut to make them */
 	int sp = 0;
 	float3 sum = (float3)(0.0f);
 	stack[sp] = (int4)(0, 0, s1 - 1, s2 - 1);
-	wstack[sp++] = 1.0f;
+	depth[sp++] = 0;
 	while (sp > 0) {
 		sp--;
 		int4 r = stack[sp];
-		float w = wstack[sp];
-		int level = (int)round(-log2(w) / 2.0f);
+		int level = depth[sp];
 		float3 c0 = whitted_grid_sample(sc, l, s1, s2, r.x, r.y, a1, a2, x, colour, eps);
 		float3 c1 = whitted_grid_sample(sc, l, s1, s2, r.z, r.y, a1, a2, x, colour, eps);
 		float3 c2 = whitted_grid_sample(sc, l, s1, s2, r.x, r.w, a1, a2, x, colour, eps);
@@ -203,18 +202,17 @@ inline float3 whitted_area_shadow(const whitted_scene *sc, global const dev_ligh
 		             (level < (int)l->grid.z || d01.x + d01.y + d01.z > 0.1f || d13.x + d13.y + d13.z > 0.1f ||
 		              d32.x + d32.y + d32.z > 0.1f || d20.x + d20.y + d20.z > 0.1f);
 		if (!split || sp + 4 > WHITTED_REGIONS) {
-			sum += w * 0.25f * (c0 + c1 + c2 + c3);
+			/* a region is the mean of its quarters, so one cut level deep weighs 1/4^level */
+			sum += ldexp(0.25f, -2 * level) * (c0 + c1 + c2 + c3);
 			continue;
 		}
 		int mu0 = (r.x + r.z) / 2, mu1 = (r.x + r.z + 1) / 2, mv0 = (r.y + r.w) / 2, mv1 = (r.y + r.w + 1) / 2;
-		stack[sp] = (int4)(r.x, r.y, mu0, mv0);
-		wstack[sp++] = 0.25f * w;
-		stack[sp] = (int4)(mu1, r.y, r.z, mv0);
-		wstack[sp++] = 0.25f * w;
-		stack[sp] = (int4)(r.x, mv1, mu0, r.w);
-		wstack[sp++] = 0.25f * w;
-		stack[sp] = (int4)(mu1, mv1, r.z, r.w);
-		wstack[sp++] = 0.25f * w;
+		int4 quarters[4] = { (int4)(r.x, r.y, mu0, mv0), (int4)(mu1, r.y, r.z, mv0), (int4)(r.x, mv1, mu0, r.w),
+		                     (int4)(mu1, mv1, r.z, r.w) };
+		for (int q = 0; q < 4; q++) {
+			stack[sp] = quarters[q];
+			depth[sp++] = level + 1;
+		}
 	}
 	return sum;
 }
