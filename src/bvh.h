@@ -28,11 +28,14 @@ typedef struct {
 	double sah_cost;    /* SAH cost with C_node = 1, C_prim = 1, relative to the root area */
 } bvh_tree;
 
-/* Binned SAH build (16 bins per axis, leaves of at most BVH_MAX_LEAF primitives).
+/* Binned SAH build (16 bins per axis, exact SAH for small nodes, leaves of at most BVH_MAX_LEAF primitives).
  * n may be 0 (one empty leaf). Boxes may be flat (zero extent on an axis).
  * Returns 0, or -1 when memory runs out (t is then left empty). */
 #define BVH_MAX_LEAF 4
 int bvh_build(const bvh_box *boxes, int n, bvh_tree *t);
+/* The same on at most threads threads (0: one per online processor). The tree
+ * does not depend on threads. */
+int bvh_build_threads(const bvh_box *boxes, int n, int threads, bvh_tree *t);
 
 /* The reference paper's builder, for comparison (--bvh median): a node's box is
  * cut in two at the middle of its longest side, the primitives going to the side

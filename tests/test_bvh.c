@@ -899,6 +899,50 @@ static void shape_tests(rng *r)
 	free(tris);
 }
 
+/* The build splits its work between threads (bvh.c): the tree must be the
+ * same bit for bit with any number of threads and whatever their timing, so
+ * the same soup is built on 1 to 4 threads, several times each. 100,000
+ * triangles make dozens of tasks and bin the top nodes on two threads. */
+static void determinism_test(rng *r)
+{
+	enum { N = 100000 };
+	tri *tris = malloc(N * sizeof *tris);
+	signed char *edge_axis = malloc(N);
+	bvh_box *boxes = NULL;
+	bvh_tree ref = { 0 }, t;
+	if (!tris || !edge_axis) {
+		fail("determinism: out of memory");
+		goto done;
+	}
+	make_soup(r, tris, N, edge_axis);
+	boxes = make_boxes(tris, N);
+	if (!boxes || bvh_build_threads(boxes, N, 1, &ref) != 0) {
+		fail("determinism: build failed");
+		goto done;
+	}
+	int builds = 0;
+	for (int threads = 1; threads <= 4; threads++)
+		for (int k = 0; k < 3; k++, builds++) {
+			if (bvh_build_threads(boxes, N, threads, &t) != 0) {
+				fail("determinism: build on %d threads failed", threads);
+				continue;
+			}
+			if (t.n_nodes != ref.n_nodes || t.depth != ref.depth ||
+			    memcmp(t.nodes, ref.nodes, (size_t)t.n_nodes * sizeof *t.nodes) != 0 ||
+			    memcmp(t.prim_index, ref.prim_index, (size_t)N * sizeof *t.prim_index) != 0)
+				fail("determinism: the tree built on %d threads differs from the one-thread tree",
+				     threads);
+			bvh_free(&t);
+		}
+	printf("  %d builds of %d triangles on 1 to 4 threads: %d nodes each%s\n", builds, N, ref.n_nodes,
+	       n_errors ? "" : ", all identical");
+done:
+	bvh_free(&ref);
+	free(boxes);
+	free(tris);
+	free(edge_axis);
+}
+
 /* n == 0, and the arguments bvh_build must refuse (leaving t zeroed). */
 static void empty_test(void)
 {
@@ -1115,6 +1159,8 @@ int main(int argc, char **argv)
 	shape_tests(&r);
 	printf("soup:\n");
 	soup_test("soup", &r, N_SOUP, N_RAYS, 5);
+	printf("threads:\n");
+	determinism_test(&r);
 	if (argc > 1)
 		mesh_test(argv[1], &r);
 	printf("%s: %d error%s\n", n_errors ? "FAIL" : "PASS", n_errors, n_errors == 1 ? "" : "s");
