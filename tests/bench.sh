@@ -53,7 +53,7 @@ echo "== summary"
 echo "$paths $sah $median $sah_camera $median_camera $bunny_ms $igea_ms $paths_binary $wide_camera" | awk '{
 	printf "  path tracer: %.2f M paths/s; Blender Cycles (CPU) does 0.75 M samples/s here (%.2fx),\n", $1, $1 / 0.75
 	printf "  Embree'\''s example path tracer 1.7 M paths/s (%.2fx)\n", $1 / 1.7
-	printf "  BVH layouts: wide %.2f M paths/s, binary %.2f (wide/binary %.2fx); tests per camera ray,\n", $1, $8, $8 > 0 ? $1 / $8 : 0
+	printf "  BVH layouts: wide %.2f M paths/s, binary %.2f (wide/binary %.2fx); tests per camera ray,\n", $1, $8, ($8 > 0 ? $1 / $8 : 0)
 	printf "  counting each child box: wide %.1f, binary %.1f\n", $9, $4
 	printf "  BVH tests per camera ray (binary layout): SAH %.1f (target 24 or fewer), median split %.1f (the paper: about 108);\n", $4, $5
 	printf "  per path (all rays of a pixel sample): SAH %.1f, median split %.1f\n", $2, $3

@@ -438,8 +438,14 @@ static void test_watertight(device_ctx *dev, cl_program prog, int n_rays, int n_
 		struct device_scene ds = { .dev = dev, .prog = prog };
 		if (open_scene(&ds, &sc) == 0) {
 			float *rays = malloc((size_t)n_rays * 8 * sizeof *rays), *hits = malloc((size_t)n_rays * 4 * sizeof *hits);
+			/* flattened, each face's corners as the device has them (object: the face) */
+			const dev_prim **face_prim = calloc(m.n_faces, sizeof *face_prim);
+			for (int i = 0; i < ds.lr.n_prims; i++)
+				if (ds.lr.prims[i].type == PRIM_TRIANGLE && ds.lr.prims[i].object < m.n_faces)
+					face_prim[ds.lr.prims[i].object] = &ds.lr.prims[i];
 			for (int i = 0; i < n_rays; i++) {
-				const int *f = m.face[(int)(uniform() * m.n_faces) % m.n_faces];
+				int fi = (int)(uniform() * m.n_faces) % m.n_faces;
+				const int *f = m.face[fi];
 				double p[3], w[3], o[3], len = 0;
 				int e = i % 6;   /* three corners, three points along the edges */
 				double at = uniform();
@@ -460,7 +466,20 @@ static void test_watertight(device_ctx *dev, cl_program prog, int n_rays, int n_
 				for (int k = 0; k < 3; k++)
 					rays[8 * i + 4 + k] = (float)((w[k] - o[k]) / sqrt(len));
 				rays[8 * i + 3] = INFINITY;
+				if (far && flatten && e < 3 && face_prim[fi]) {
+					/* exactly through the float corner: o = corner + delta and d = -delta,
+					 * with delta on a grid of 1/4, which the corner's ulp (1/4096 near
+					 * 3,000) divides, so both are exact (d need not be unit length here) */
+					const float4 *c = e == 0 ? &face_prim[fi]->a : e == 1 ? &face_prim[fi]->b : &face_prim[fi]->c;
+					const float cv[3] = { c->x, c->y, c->z };
+					for (int k = 0; k < 3; k++) {
+						float delta = 0.25f * roundf(4.0f * (float)(o[k] - w[k]));
+						rays[8 * i + k] = cv[k] + delta;
+						rays[8 * i + 4 + k] = -delta;
+					}
+				}
 			}
+			free(face_prim);
 			int missed = cast(&ds, rays, n_rays, hits) ? n_rays : 0;
 			for (int i = 0; i < n_rays && !missed; i++)
 				missed += hits[4 * i + 1] < 0;
