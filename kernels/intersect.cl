@@ -5,6 +5,13 @@
 /* intersect.cl: ray/primitive intersection. Both return the distance of the
  * nearest hit in (tmin, tmax), or tmax when there is none. */
 
+/* No fused multiply-adds here: OpenCL lets the compiler contract a * b - c * d
+ * into fma(a, b, -c * d) (FP_CONTRACT is on by default), which rounds the two
+ * products differently, so two triangles sharing an edge would no longer
+ * compute its edge function with exactly opposite signs, and whether a product
+ * is fused may change with how the code around it is inlined. */
+#pragma OPENCL FP_CONTRACT OFF
+
 /* The component k (0, 1, 2) of v. */
 inline float intersect_axis(float3 v, int k)
 {

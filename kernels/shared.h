@@ -27,6 +27,29 @@ typedef struct {
  * deeper tree rather than let a ray silently miss. */
 #define BVH_STACK_SIZE 64
 
+/* One node of the 4-wide BVH, 64 bytes, converted from the binary tree
+ * (src/bvh_wide.c; eclat(1), --bvh-layout). Up to four children, each given
+ * by its box, quantized to 8 bits per side on a grid of steps 2^e from the
+ * node's lower corner: child k's box on x is origin_x + q * 2^e_x for q = byte k
+ * of qlo_x and of qhi_x. The host rounds each bound outwards and checks it
+ * with the float arithmetic the device uses (q * 2^e is exact), so a
+ * dequantized box always contains the child.
+ * meta: bytes 0-2, the biased exponents e + 127 of x, y, z (the bits of the
+ *   float 2^e when shifted left by 23); byte 3, the number of children (0-4).
+ * child[k] >= 0: an interior child, the index of its wide node; < 0: a leaf,
+ *   bits 0-25 its first primitive, bits 26-30 its primitive count (1-31).
+ * With --bvh-layout wide the kernels' node buffer holds these; it keeps the
+ * type bvh_node in every signature and only traverse.cl reads it. */
+typedef struct {
+	float origin_x, origin_y, origin_z;
+	uint meta;
+	uint qlo_x, qhi_x, qlo_y, qhi_y, qlo_z, qhi_z;
+	int child[4];
+	int pad[2];
+} bvh_wnode;
+#define BVH_WIDE_LEAF_MAX 31
+#define BVH_WIDE_FIRST_BITS 26
+
 enum {
 	PRIM_TRIANGLE = 0, PRIM_SPHERE = 1, PRIM_PLANE = 2, PRIM_ELLIPSOID = 3,
 	PRIM_SMOOTH_TRIANGLE = 4, PRIM_INSTANCE = 5,

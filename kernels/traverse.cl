@@ -1,7 +1,15 @@
-/* traverse.cl: closest-hit and any-hit traversal of the binary BVH (bvh_node,
- * shared.h): a stack of node indices, the nearer child first, far nodes pruned
- * against the closest hit so far. The host guarantees the tree is no deeper than
- * BVH_STACK_SIZE, so the stack cannot overflow. */
+/* traverse.cl: closest-hit and any-hit traversal of the BVH, in either layout
+ * (eclat(1), --bvh-layout; the host compiles with -DBVH_WIDE=1 for the wide one):
+ * binary: bvh_node (shared.h), a stack of node indices, the nearer child first;
+ * wide: bvh_wnode, the hit children sorted by entry distance, the nearest taken
+ * and the others stacked with their distances.
+ * Both prune far nodes against the closest hit so far. The host guarantees that
+ * no traversal needs more than BVH_STACK_SIZE entries, so the stack cannot
+ * overflow. The node buffer is declared bvh_node everywhere; only this file
+ * reads it as the wide layout. */
+#ifndef BVH_WIDE
+#define BVH_WIDE 0
+#endif
 
 /* Boxes are tested with a relative slack, so rays through box edges and corners
  * are not lost to rounding (tests/test_bvh.c shows they are without it). */
@@ -26,14 +34,18 @@ inline traverse_ray traverse_setup(float3 o, float3 d)
  * and fmax drop, so such a ray counts as inside that slab; the usual
  * fmin(t1, t2) form would turn it into +inf and miss a box the ray touches.
  * Returns the entry distance, or INFINITY when the box is missed. */
-inline float traverse_box(global const bvh_node *n, const traverse_ray *r, float tmax)
+inline float traverse_slab(float3 lo, float3 hi, const traverse_ray *r, float tmax)
 {
-	float3 lo = (float3)(n->min_x, n->min_y, n->min_z), hi = (float3)(n->max_x, n->max_y, n->max_z);
 	float3 tn = (select(lo, hi, r->neg) - r->o) * r->inv_d;
 	float3 tf = (select(hi, lo, r->neg) - r->o) * r->inv_d;
 	float enter = fmax(fmax(fmax(0.0f, tn.x), tn.y), tn.z);
 	float leave = fmin(fmin(fmin(tmax, tf.x), tf.y), tf.z);
 	return enter <= leave * BVH_BOX_PAD ? enter : INFINITY;
+}
+
+inline float traverse_box(global const bvh_node *n, const traverse_ray *r, float tmax)
+{
+	return traverse_slab((float3)(n->min_x, n->min_y, n->min_z), (float3)(n->max_x, n->max_y, n->max_z), r, tmax);
 }
 
 typedef struct {
@@ -47,6 +59,7 @@ typedef struct {
  * level). LEAF_PRIM tests primitive i against the ray (o, d), lowering hit.t and
  * setting hit.prim and hit.inst. With any, the first hit ends the walk. counts
  * adds up the node and primitive tests for the ray's kind (the heat map's measure). */
+#if !BVH_WIDE
 #define TRAVERSE_FUNCTION(NAME, LEAF_PRIM)                                                      \
 inline traverse_hit NAME(global const bvh_node *nodes, global const dev_prim *prims, int root,  \
                          float3 o, float3 d, float tmin, float tmax, bool any, uint *counts,     \
@@ -93,6 +106,110 @@ inline traverse_hit NAME(global const bvh_node *nodes, global const dev_prim *pr
 		}                                                                                       \
 	}                                                                                           \
 }
+
+#else
+
+/* Child k's box in a wide node: byte k of each quantized bound, times the
+ * axis's step 2^e (exact), from the node's origin. */
+inline float3 traverse_qbound(uint qx, uint qy, uint qz, int k, float3 origin, float3 step)
+{
+	uint s = 8 * (uint)k;
+	return origin + (float3)((float)((qx >> s) & 255u), (float)((qy >> s) & 255u), (float)((qz >> s) & 255u)) * step;
+}
+
+/* The entry distance of child k of a wide node, INFINITY when it is missed or
+ * absent (k >= nc). */
+inline float traverse_qchild(global const bvh_wnode *n, int k, int nc, float3 origin, float3 step,
+                             const traverse_ray *r, float tmax)
+{
+	if (k >= nc)
+		return INFINITY;
+	float3 lo = traverse_qbound(n->qlo_x, n->qlo_y, n->qlo_z, k, origin, step);
+	float3 hi = traverse_qbound(n->qhi_x, n->qhi_y, n->qhi_z, k, origin, step);
+	return traverse_slab(lo, hi, r, tmax);
+}
+
+/* Orders two (distance, child) pairs, nearer first. */
+#define TRAVERSE_ORDER(TA, CA, TB, CB)                                                          \
+	if (TB < TA) {                                                                              \
+		float tt_ = TA; TA = TB; TB = tt_;                                                      \
+		int tc_ = CA; CA = CB; CB = tc_;                                                        \
+	}
+
+/* The wide layout's loop, with the same contract as the binary one. A reference
+ * ref >= 0 is a wide node, < 0 a leaf (shared.h). The four children's entry
+ * distances are sorted by a network of five exchanges (no private arrays, which
+ * PoCL keeps in memory): the nearest is taken at once, the others hit are
+ * stacked farthest first, the next nearest on top. */
+#define TRAVERSE_FUNCTION(NAME, LEAF_PRIM)                                                      \
+inline traverse_hit NAME(global const bvh_node *nodes_, global const dev_prim *prims, int root, \
+                         float3 o, float3 d, float tmin, float tmax, bool any, uint *counts,     \
+                         int kind)                                                              \
+{                                                                                               \
+	global const bvh_wnode *nodes = (global const bvh_wnode *)nodes_;                           \
+	traverse_hit hit = { tmax, -1, -1 };                                                        \
+	traverse_ray r = traverse_setup(o, d);                                                      \
+	int stack[BVH_STACK_SIZE], sp = 0, ref = root;                                              \
+	float tstack[BVH_STACK_SIZE];                                                               \
+	for (;;) {                                                                                  \
+		if (ref < 0) {                                                                          \
+			int first = ref & ((1 << BVH_WIDE_FIRST_BITS) - 1);                                 \
+			int end = first + ((ref >> BVH_WIDE_FIRST_BITS) & BVH_WIDE_LEAF_MAX);               \
+			for (int i = first; i < end; i++) {                                                 \
+				counts[COUNT_PRIMS + kind]++;                                                   \
+				LEAF_PRIM                                                                       \
+				if (any && hit.prim >= 0)                                                       \
+					return hit;                                                                 \
+			}                                                                                   \
+		} else {                                                                                \
+			global const bvh_wnode *n = &nodes[ref];                                            \
+			uint meta = n->meta;                                                                \
+			int nc = (int)(meta >> 24);                                                         \
+			float3 origin = (float3)(n->origin_x, n->origin_y, n->origin_z);                    \
+			float3 step = (float3)(as_float((meta & 255u) << 23), as_float(((meta >> 8) & 255u) << 23), \
+			                       as_float(((meta >> 16) & 255u) << 23));                      \
+			counts[COUNT_NODES + kind] += nc;                                                   \
+			float t0 = traverse_qchild(n, 0, nc, origin, step, &r, hit.t);                      \
+			float t1 = traverse_qchild(n, 1, nc, origin, step, &r, hit.t);                      \
+			float t2 = traverse_qchild(n, 2, nc, origin, step, &r, hit.t);                      \
+			float t3 = traverse_qchild(n, 3, nc, origin, step, &r, hit.t);                      \
+			int c0 = n->child[0], c1 = n->child[1], c2 = n->child[2], c3 = n->child[3];         \
+			TRAVERSE_ORDER(t0, c0, t1, c1);                                                     \
+			TRAVERSE_ORDER(t2, c2, t3, c3);                                                     \
+			TRAVERSE_ORDER(t0, c0, t2, c2);                                                     \
+			TRAVERSE_ORDER(t1, c1, t3, c3);                                                     \
+			TRAVERSE_ORDER(t1, c1, t2, c2);                                                     \
+			if (t0 != INFINITY) {                                                               \
+				if (t3 != INFINITY) {                                                           \
+					stack[sp] = c3;                                                             \
+					tstack[sp++] = t3;                                                          \
+				}                                                                               \
+				if (t2 != INFINITY) {                                                           \
+					stack[sp] = c2;                                                             \
+					tstack[sp++] = t2;                                                          \
+				}                                                                               \
+				if (t1 != INFINITY) {                                                           \
+					stack[sp] = c1;                                                             \
+					tstack[sp++] = t1;                                                          \
+				}                                                                               \
+				ref = c0;                                                                       \
+				continue;                                                                       \
+			}                                                                                   \
+		}                                                                                       \
+		/* pop the next child still nearer than the closest hit */                              \
+		for (;;) {                                                                              \
+			if (sp == 0)                                                                        \
+				return hit;                                                                     \
+			sp--;                                                                               \
+			if (tstack[sp] <= hit.t * BVH_BOX_PAD) {                                            \
+				ref = stack[sp];                                                                \
+				break;                                                                          \
+			}                                                                                   \
+		}                                                                                       \
+	}                                                                                           \
+}
+
+#endif
 
 /* A mesh's BVH, in the mesh's space: its primitives are triangles. */
 TRAVERSE_FUNCTION(traverse_mesh, {

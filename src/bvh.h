@@ -28,17 +28,36 @@ typedef struct {
 	double sah_cost;    /* SAH cost with C_node = 1, C_prim = 1, relative to the root area */
 } bvh_tree;
 
-/* Binned SAH build (16 bins per axis, leaves of at most BVH_MAX_LEAF primitives).
+/* Binned SAH build (16 bins per axis, exact SAH for small nodes, leaves of at most BVH_MAX_LEAF primitives).
  * n may be 0 (one empty leaf). Boxes may be flat (zero extent on an axis).
  * Returns 0, or -1 when memory runs out (t is then left empty). */
 #define BVH_MAX_LEAF 4
 int bvh_build(const bvh_box *boxes, int n, bvh_tree *t);
+/* The same on at most threads threads (0: one per online processor). The tree
+ * does not depend on threads. */
+int bvh_build_threads(const bvh_box *boxes, int n, int threads, bvh_tree *t);
 
 /* The reference paper's builder, for comparison (--bvh median): a node's box is
  * cut in two at the middle of its longest side, the primitives going to the side
  * of their centroid, down to max_depth (root = 1) or until a node holds at most
  * two primitives or cannot be cut. Leaves may hold many primitives. */
 int bvh_build_median(const bvh_box *boxes, int n, int max_depth, bvh_tree *t);
+
+/* The 4-wide layout (bvh_wnode, kernels/shared.h), converted from binary
+ * trees in one node array (src/bvh_wide.c). roots: binary node indices of the
+ * trees' roots, each converted with everything below it; a root of -1 gives
+ * an empty node (no children), for an empty tree. Returns 0, or -1 when memory
+ * runs out, a box is not finite or a primitive index needs more than
+ * BVH_WIDE_FIRST_BITS bits (out is then left empty). */
+typedef struct {
+	bvh_wnode *nodes;
+	int n_nodes;
+	int *roots;         /* the wide node of each root given */
+	int max_stack;      /* the most stack entries a traversal of any of the trees can need */
+} bvh_wide;
+
+int bvh_widen(const bvh_node *nodes, const int *roots, int n_roots, bvh_wide *out);
+void bvh_wide_free(bvh_wide *w);
 
 /* The SAH cost of a tree, as in bvh_tree.sah_cost. */
 double bvh_sah_cost(const bvh_node *nodes, int n_nodes);

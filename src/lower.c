@@ -14,6 +14,8 @@
 _Static_assert(sizeof(float4) == 16, "float4 is 16 bytes");
 _Static_assert(sizeof(bvh_node) == 32, "bvh_node is 32 bytes");
 _Static_assert(offsetof(bvh_node, max_x) == 16, "bvh_node max at 16");
+_Static_assert(sizeof(bvh_wnode) == 64, "bvh_wnode is 64 bytes");
+_Static_assert(offsetof(bvh_wnode, qlo_x) == 16 && offsetof(bvh_wnode, child) == 40, "bvh_wnode layout");
 _Static_assert(sizeof(dev_prim) == 64, "dev_prim is 64 bytes");
 _Static_assert(offsetof(dev_prim, type) == 48, "dev_prim ints at 48");
 _Static_assert(sizeof(dev_material) == 112, "dev_material is 112 bytes");
@@ -697,10 +699,65 @@ static int check_depths(const lower_result *out)
 	return 0;
 }
 
+static int cmp_int(const void *a, const void *b)
+{
+	int x = *(const int *)a, y = *(const int *)b;
+	return (x > y) - (x < y);
+}
+
+/* The wide layout: every tree converted once (a mesh placed many times
+ * included), the instances pointed at their meshes' wide roots. The binary
+ * nodes stay for --stats and the tests. */
+static int widen_trees(lower_result *out)
+{
+	int *roots = xmalloc((out->n_prims + 1) * sizeof *roots), n_roots = 0;
+	for (int i = 0; i < out->n_prims; i++)
+		if (out->prims[i].type == PRIM_INSTANCE)
+			roots[1 + n_roots++] = out->prims[i].link;
+	qsort(roots + 1, n_roots, sizeof *roots, cmp_int);
+	int unique = 0;
+	for (int i = 0; i < n_roots; i++)
+		if (unique == 0 || roots[1 + i] != roots[unique])
+			roots[1 + unique++] = roots[1 + i];
+	n_roots = 1 + unique;
+	roots[0] = out->n_prims > 0 ? 0 : -1;
+	bvh_wide w;
+	int rc = bvh_widen(out->nodes, roots, n_roots, &w);
+	if (rc == 0 && w.max_stack > BVH_STACK_SIZE) {
+		diag_error(SRC_NOWHERE, "the wide BVH needs a traversal stack of %d, more than the kernels' %d",
+		           w.max_stack, BVH_STACK_SIZE);
+		rc = -1;
+	} else if (rc != 0) {
+		fprintf(stderr, "eclat: the BVH cannot be converted to the wide layout "
+		                "(out of memory, or more than %d primitives)\n", 1 << BVH_WIDE_FIRST_BITS);
+	}
+	for (int i = 0; rc == 0 && i < out->n_prims; i++)
+		if (out->prims[i].type == PRIM_INSTANCE) {
+			int *r = bsearch(&out->prims[i].link, roots + 1, n_roots - 1, sizeof *roots, cmp_int);
+			out->prims[i].link = w.roots[r - roots];
+		}
+	free(roots);
+	if (rc != 0) {
+		bvh_wide_free(&w);
+		return -1;
+	}
+	out->wnodes = w.nodes;
+	out->n_wnodes = w.n_nodes;
+	out->dev_nodes = w.nodes;
+	out->dev_node_bytes = (size_t)w.n_nodes * sizeof *w.nodes;
+	free(w.roots);
+	return 0;
+}
+
+const char *lower_kernel_options(const lower_result *lr)
+{
+	return lr->layout == LOWER_LAYOUT_WIDE ? "-cl-std=CL1.2 -DBVH_WIDE=1" : "-cl-std=CL1.2";
+}
+
 int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 {
 	memset(out, 0, sizeof *out);
-	static const lower_options defaults = { LOWER_BVH_SAH, 24 };
+	static const lower_options defaults = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_DEFAULT };
 	struct lowering lw = { .opt = opt ? opt : &defaults, .s = s };
 	lw.meshes = calloc(s->n_meshes + 1, sizeof *lw.meshes);
 	if (!lw.meshes)
@@ -730,6 +787,11 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 		rc = -1;
 	if (rc == 0)
 		rc = check_depths(out);
+	out->layout = lw.opt->layout;
+	out->dev_nodes = out->nodes;
+	out->dev_node_bytes = (size_t)out->n_nodes * sizeof *out->nodes;
+	if (rc == 0 && out->layout == LOWER_LAYOUT_WIDE)
+		rc = widen_trees(out);
 	if (rc == 0)
 		lower_emitters(out);
 	for (int m = 0; m < s->n_meshes; m++) {
@@ -745,6 +807,7 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 void lower_free(lower_result *r)
 {
 	free(r->nodes);
+	free(r->wnodes);
 	free(r->normals);
 	free(r->stats);
 	free(r->prims);

@@ -11,10 +11,15 @@
 #include "scene.h"
 
 enum { LOWER_BVH_SAH, LOWER_BVH_MEDIAN };
+/* The node layout the kernels read (--bvh-layout): the builders' binary tree
+ * as it is, or converted to 4-wide nodes (bvh_wnode). */
+enum { LOWER_LAYOUT_BINARY, LOWER_LAYOUT_WIDE };
+#define LOWER_LAYOUT_DEFAULT LOWER_LAYOUT_WIDE
 
 typedef struct {
 	int builder;        /* LOWER_BVH_SAH (default) or LOWER_BVH_MEDIAN */
 	int median_depth;   /* the median builder's maximum depth */
+	int layout;         /* LOWER_LAYOUT_BINARY or LOWER_LAYOUT_WIDE */
 } lower_options;
 
 /* What --stats prints about one BVH. */
@@ -29,7 +34,13 @@ typedef struct {
 typedef struct {
 	bvh_node *nodes;          /* the top level's, then each mesh's */
 	int n_nodes;
-	dev_prim *prims;          /* the top level's in BVH order, the planes, then each mesh's */
+	int layout;               /* the kernels' node layout, from lower_options */
+	bvh_wnode *wnodes;        /* the wide layout's nodes, the top level's root first; else NULL */
+	int n_wnodes;
+	const void *dev_nodes;    /* what the kernels' node buffer holds: nodes or wnodes */
+	size_t dev_node_bytes;
+	dev_prim *prims;          /* the top level's in BVH order, the planes, then each mesh's;
+	                           * an instance's link is its mesh's root in dev_nodes */
 	int n_prims;              /* in the top level's BVH */
 	int n_planes;             /* after them */
 	int n_all_prims;
@@ -52,6 +63,9 @@ typedef struct {
 /* Returns 0, or -1 after printing errors against the objects' source lines. */
 int lower_scene(const scene *s, const lower_options *opt, lower_result *out);
 void lower_free(lower_result *r);
+
+/* The OpenCL build options for lr's kernels (the node layout is a -D). */
+const char *lower_kernel_options(const lower_result *lr);
 
 /* The physically based material of a POV-Ray texture and interior. */
 dev_material lower_material(const scene_material *m);

@@ -35,7 +35,7 @@ struct options {
 	int width, height, samples, seed, max_depth, device, quiet, integrator;
 	int list_devices, check, dump_ast, dump_scene;
 	double time_limit, checkpoint;
-	int bvh, median_depth, stats, skip_unsupported;
+	int bvh, median_depth, bvh_layout, stats, skip_unsupported;
 	const char *include_dirs[MAX_LIST], *declares[MAX_LIST];
 	int n_include_dirs, n_declares;
 	const char *aov_name[MAX_AOVS], *aov_file[MAX_AOVS];
@@ -43,7 +43,7 @@ struct options {
 };
 
 enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_DIR,
-       OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_STATS, OPT_SKIP_UNSUPPORTED, OPT_EXPORT_MESH2 };
+       OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_BVH_LAYOUT, OPT_STATS, OPT_SKIP_UNSUPPORTED, OPT_EXPORT_MESH2 };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -57,6 +57,7 @@ static const struct option long_options[] = {
 	{ "checkpoint", required_argument, NULL, OPT_CHECKPOINT },
 	{ "aov", required_argument, NULL, OPT_AOV },
 	{ "bvh", required_argument, NULL, OPT_BVH },
+	{ "bvh-layout", required_argument, NULL, OPT_BVH_LAYOUT },
 	{ "stats", no_argument, NULL, OPT_STATS },
 	{ "include-path", required_argument, NULL, 'I' },
 	{ "declare", required_argument, NULL, 'D' },
@@ -97,6 +98,8 @@ static void usage(FILE *out)
 		"      --bvh NAME        sah (default): binned SAH; median[:DEPTH]: the reference\n"
 		"                        paper's split at the middle of the longest side, to a\n"
 		"                        depth of 9 or DEPTH, for comparison\n"
+		"      --bvh-layout NAME wide (default): 4-wide nodes with quantized boxes;\n"
+		"                        binary: the builders' tree as it is, for comparison\n"
 		"      --stats           print the BVHs' statistics and the tests per ray\n"
 		"      --device N        OpenCL device to use (default: first GPU, else first CPU)\n"
 		"      --list-devices    list the OpenCL devices and exit\n"
@@ -159,6 +162,17 @@ static void bvh_arg(struct options *o, const char *s)
 		return;
 	}
 	fprintf(stderr, "eclat: --bvh is sah, median or median:DEPTH, not '%s'\n", s);
+	exit(1);
+}
+
+/* --bvh-layout binary | wide */
+static int layout_arg(const char *s)
+{
+	if (strcmp(s, "binary") == 0)
+		return LOWER_LAYOUT_BINARY;
+	if (strcmp(s, "wide") == 0)
+		return LOWER_LAYOUT_WIDE;
+	fprintf(stderr, "eclat: --bvh-layout is binary or wide, not '%s'\n", s);
 	exit(1);
 }
 
@@ -239,7 +253,7 @@ static void translate_pov_switches(int argc, char **argv)
 static void parse_options(int argc, char **argv, struct options *o)
 {
 	*o = (struct options){ .width = DEFAULT_WIDTH, .height = DEFAULT_HEIGHT,
-	                       .median_depth = DEFAULT_MEDIAN_DEPTH,
+	                       .median_depth = DEFAULT_MEDIAN_DEPTH, .bvh_layout = LOWER_LAYOUT_DEFAULT,
 	                       .samples = DEFAULT_SAMPLES, .max_depth = -1, .device = -1 };
 	o->kernel_dir = getenv("ECLAT_KERNEL_DIR");
 	translate_pov_switches(argc, argv);
@@ -258,6 +272,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case OPT_CHECKPOINT: o->checkpoint = seconds_arg("--checkpoint", optarg); break;
 		case OPT_AOV: aov_arg(o, optarg); break;
 		case OPT_BVH: bvh_arg(o, optarg); break;
+		case OPT_BVH_LAYOUT: o->bvh_layout = layout_arg(optarg); break;
 		case OPT_STATS: o->stats = 1; break;
 		case 'I': list_arg("-I", o->include_dirs, &o->n_include_dirs, optarg); break;
 		case 'D': list_arg("-D", o->declares, &o->n_declares, optarg); break;
@@ -430,6 +445,12 @@ static void print_bvh_stats(const scene *s, const lower_result *lr)
 		        "%.2f MB\n", b->prims, b->nodes, b->leaves, b->depth, b->sah_cost, b->build_ms,
 		        b->bytes / 1048576.0);
 	}
+	if (lr->layout == LOWER_LAYOUT_WIDE)
+		fprintf(stderr, "bvh: layout wide: %d nodes of 4 children, %.2f MB (binary: %d nodes, %.2f MB)\n",
+		        lr->n_wnodes, lr->dev_node_bytes / 1048576.0, lr->n_nodes,
+		        lr->n_nodes * sizeof(bvh_node) / 1048576.0);
+	else
+		fprintf(stderr, "bvh: layout binary: %d nodes, %.2f MB\n", lr->n_nodes, lr->dev_node_bytes / 1048576.0);
 }
 
 static void print_ray_stats(const render_stats *st)
@@ -452,7 +473,7 @@ static void print_ray_stats(const render_stats *st)
 static int render_scene(const struct options *o, const scene *s, const char *output)
 {
 	lower_result lr;
-	lower_options lo = { o->bvh, o->median_depth };
+	lower_options lo = { o->bvh, o->median_depth, o->bvh_layout };
 	int failed = lower_scene(s, &lo, &lr);
 	if (!failed && o->stats)
 		print_bvh_stats(s, &lr);
@@ -479,7 +500,7 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	int rc = 1;
 	catch_signals();
 	if (device_open(&dev, o->device) == 0 &&
-	    (prog = device_build(&dev, o->kernel_dir, "-cl-std=CL1.2")) != NULL &&
+	    (prog = device_build(&dev, o->kernel_dir, lower_kernel_options(&lr))) != NULL &&
 	    render_run(&dev, prog, &lr, &rs, &f, &st) == 0) {
 		if (!o->quiet)
 			summary(&rs, &st, &dev);

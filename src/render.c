@@ -12,7 +12,7 @@
 /* The kernel's buffers in argument order (an X-macro, so creating, binding and
  * releasing them cannot drift apart): name, host pointer, bytes, flags. */
 #define RENDER_BUFFERS(X, LR, PARAMS, NPIX) \
-	X(nodes, (LR)->nodes, (LR)->n_nodes * sizeof(bvh_node), CL_MEM_READ_ONLY) \
+	X(nodes, (LR)->dev_nodes, (LR)->dev_node_bytes, CL_MEM_READ_ONLY) \
 	X(prims, (LR)->prims, (LR)->n_all_prims * sizeof(dev_prim), CL_MEM_READ_ONLY) \
 	X(normals, (LR)->normals, (LR)->n_normals * sizeof(float4), CL_MEM_READ_ONLY) \
 	X(materials, (LR)->materials, (LR)->n_materials * sizeof(dev_material), CL_MEM_READ_ONLY) \

@@ -29,12 +29,16 @@ build_ms() { # build_ms MESH: milliseconds to build its BVH
 	"$ECLAT" --check --stats "$out/build.scn" 2>&1 | sed -n 's/^bvh: mesh .* built in \([0-9.]*\) ms.*/\1/p'
 }
 
-run "path tracer, SAH BVH, $SAMPLES samples" -s "$SAMPLES"
-paths=$(sed -n 's/.*: \([0-9.]*\) M paths\/s.*/\1/p' "$out/log" | tail -n 1)
+paths_of() { sed -n 's/.*: \([0-9.]*\) M paths\/s.*/\1/p' "$out/log" | tail -n 1; }
+run "path tracer, SAH BVH, binary layout, $SAMPLES samples" -s "$SAMPLES" --bvh-layout binary
+paths_binary=$(paths_of)
 sah=$(sed -n 's/^rays: all: .*, \([0-9.]*\) tests per path.*/\1/p' "$out/log")
 sah_camera=$(camera_tests)
+run "path tracer, SAH BVH, wide layout (the default), $SAMPLES samples" -s "$SAMPLES" --bvh-layout wide
+paths=$(paths_of)
+wide_camera=$(camera_tests)
 run "the paper's random walk, SAH BVH, $SAMPLES samples" -s "$SAMPLES" --integrator naive
-run "path tracer, the paper's median-split BVH, 1 sample" -s 1 --bvh median
+run "path tracer, the paper's median-split BVH, 1 sample" -s 1 --bvh median --bvh-layout binary
 median=$(sed -n 's/^rays: all: .*, \([0-9.]*\) tests per path.*/\1/p' "$out/log")
 median_camera=$(camera_tests)
 bunny_ms=$(build_ms "$MESH_DIR/bunny.ply")
@@ -46,9 +50,11 @@ echo "== 10,000 dragons (a billion triangles), 480x270, 4 samples"
 tr '\r' '\n' < "$out/log" | grep -E '^(eclat|bvh):' | sed 's/^/  /'
 
 echo "== summary"
-echo "$paths $sah $median $sah_camera $median_camera $bunny_ms $igea_ms" | awk '{
+echo "$paths $sah $median $sah_camera $median_camera $bunny_ms $igea_ms $paths_binary $wide_camera" | awk '{
 	printf "  path tracer: %.2f M paths/s; Blender Cycles (CPU) does 0.75 M samples/s here (%.2fx),\n", $1, $1 / 0.75
 	printf "  Embree'\''s example path tracer 1.7 M paths/s (%.2fx)\n", $1 / 1.7
-	printf "  BVH tests per camera ray: SAH %.1f (target 24 or fewer), median split %.1f (the paper: about 108);\n", $4, $5
+	printf "  BVH layouts: wide %.2f M paths/s, binary %.2f (wide/binary %.2fx); tests per camera ray,\n", $1, $8, ($8 > 0 ? $1 / $8 : 0)
+	printf "  counting each child box: wide %.1f, binary %.1f\n", $9, $4
+	printf "  BVH tests per camera ray (binary layout): SAH %.1f (target 24 or fewer), median split %.1f (the paper: about 108);\n", $4, $5
 	printf "  per path (all rays of a pixel sample): SAH %.1f, median split %.1f\n", $2, $3
 	printf "  SAH build: bunny (69,451 triangles) %.1f ms (target 20), igea (268,686) %.1f ms (target 80)\n", $6, $7 }'

@@ -2,6 +2,8 @@
  *
  *   test_bvh              random triangle soups (with degenerate triangles)
  *   test_bvh mesh.obj     also a Wavefront OBJ mesh (v and f lines)
+ *   test_bvh --property MESH_DIR   a million random rays each on bunny.obj,
+ *                         dragon.obj and a soup (tests/bvh_property.test)
  *
  * The core check: for every ray, the closest hit found by traversing the BVH
  * equals the closest hit found by testing every triangle, using the same
@@ -276,6 +278,86 @@ static hit traverse(const bvh_tree *t, const tri *tris, const ray *r, int *stack
 	return h;
 }
 
+/* The wide layout's traversal (kernels/traverse.cl mirrors it): child boxes
+ * dequantized exactly as the kernel does, hit children sorted by entry
+ * distance, the nearest visited first, the others stacked. */
+static void qbound(const bvh_wnode *n, int k, int hi, float b[3])
+{
+	const float origin[3] = { n->origin_x, n->origin_y, n->origin_z };
+	const uint q[3] = { hi ? n->qhi_x : n->qlo_x, hi ? n->qhi_y : n->qlo_y, hi ? n->qhi_z : n->qlo_z };
+	for (int a = 0; a < 3; a++) {
+		uint bits = ((n->meta >> (8 * a)) & 255u) << 23;
+		float step;
+		memcpy(&step, &bits, sizeof step);
+		b[a] = origin[a] + (float)((q[a] >> (8 * k)) & 255u) * step;
+	}
+}
+
+static hit traverse_wide(const bvh_wide *w, const bvh_tree *t, const tri *tris, const ray *r)
+{
+	hit h = { INFINITY, -1, 0, 0 };
+	int stack[BVH_STACK_SIZE], sp = 0, ref = w->roots[0];
+	float tstack[BVH_STACK_SIZE];
+	if (t->n_prims == 0)
+		return h;
+	for (;;) {
+		if (ref < 0) {
+			int first = ref & ((1 << BVH_WIDE_FIRST_BITS) - 1);
+			int end = first + ((ref >> BVH_WIDE_FIRST_BITS) & BVH_WIDE_LEAF_MAX);
+			for (int i = first; i < end; i++) {
+				int p = t->prim_index[i];
+				float tt;
+				h.tests++;
+				if (intersect(r, &tris[p], h.t, &tt)) {
+					h.t = tt;
+					h.prim = p;
+				}
+			}
+		} else {
+			const bvh_wnode *n = &w->nodes[ref];
+			int nc = (int)(n->meta >> 24), nh = 0, hc[4];
+			float ht[4];
+			h.visits++;
+			for (int k = 0; k < nc; k++) {
+				float lo[3], hi[3], te;
+				qbound(n, k, 0, lo);
+				qbound(n, k, 1, hi);
+				bvh_node b = { lo[0], lo[1], lo[2], 0, hi[0], hi[1], hi[2], 0 };
+				if (!slab(&b, r, h.t, &te))
+					continue;
+				int j = nh++;
+				for (; j > 0 && ht[j - 1] < te; j--) {
+					ht[j] = ht[j - 1];
+					hc[j] = hc[j - 1];
+				}
+				ht[j] = te;
+				hc[j] = n->child[k];
+			}
+			if (nh > 0) {
+				if (sp + nh - 1 > BVH_STACK_SIZE) {
+					h.prim = -2;   /* reported as a mismatch */
+					return h;
+				}
+				for (int j = 0; j < nh - 1; j++) {
+					stack[sp] = hc[j];
+					tstack[sp++] = ht[j];
+				}
+				ref = hc[nh - 1];
+				continue;
+			}
+		}
+		for (;;) {
+			if (sp == 0)
+				return h;
+			sp--;
+			if (tstack[sp] <= h.t * BOX_PAD) {
+				ref = stack[sp];
+				break;
+			}
+		}
+	}
+}
+
 static hit brute_force(const tri *tris, int n, const ray *r)
 {
 	hit h = { INFINITY, -1, 0, n };
@@ -486,6 +568,19 @@ static void check_rays(const bvh_tree *t, const tri *tris, int n, const ray *ray
 	for (int i = 0; i < n_rays; i++)
 		got[i] = traverse(t, tris, &rays[i], stack_node, stack_t);
 	st->ms_bvh = now_ms() - t0;
+	int root = 0;
+	bvh_wide w;
+	if (bvh_widen(t->nodes, &root, 1, &w) != 0) {
+		fail("bvh_widen failed");
+		goto done;
+	}
+	for (int i = 0; i < n_rays && t->n_prims > 0; i++) {
+		hit wide = traverse_wide(&w, t, tris, &rays[i]);
+		if (!same_hit(&wide, &got[i], tris, &rays[i]))
+			fail("ray %d: wide layout t %.9g prim %d, binary t %.9g prim %d", i, wide.t, wide.prim,
+			     got[i].t, got[i].prim);
+	}
+	bvh_wide_free(&w);
 	for (int i = 0; i < n_rays; i++) {
 		hit want = brute_force(tris, n, &rays[i]);
 		const ray *r = &rays[i];
@@ -899,6 +994,50 @@ static void shape_tests(rng *r)
 	free(tris);
 }
 
+/* The build splits its work between threads (bvh.c): the tree must be the
+ * same bit for bit with any number of threads and whatever their timing, so
+ * the same soup is built on 1 to 4 threads, several times each. 100,000
+ * triangles make dozens of tasks and bin the top nodes on two threads. */
+static void determinism_test(rng *r)
+{
+	enum { N = 100000 };
+	tri *tris = malloc(N * sizeof *tris);
+	signed char *edge_axis = malloc(N);
+	bvh_box *boxes = NULL;
+	bvh_tree ref = { 0 }, t;
+	if (!tris || !edge_axis) {
+		fail("determinism: out of memory");
+		goto done;
+	}
+	make_soup(r, tris, N, edge_axis);
+	boxes = make_boxes(tris, N);
+	if (!boxes || bvh_build_threads(boxes, N, 1, &ref) != 0) {
+		fail("determinism: build failed");
+		goto done;
+	}
+	int builds = 0;
+	for (int threads = 1; threads <= 4; threads++)
+		for (int k = 0; k < 3; k++, builds++) {
+			if (bvh_build_threads(boxes, N, threads, &t) != 0) {
+				fail("determinism: build on %d threads failed", threads);
+				continue;
+			}
+			if (t.n_nodes != ref.n_nodes || t.depth != ref.depth ||
+			    memcmp(t.nodes, ref.nodes, (size_t)t.n_nodes * sizeof *t.nodes) != 0 ||
+			    memcmp(t.prim_index, ref.prim_index, (size_t)N * sizeof *t.prim_index) != 0)
+				fail("determinism: the tree built on %d threads differs from the one-thread tree",
+				     threads);
+			bvh_free(&t);
+		}
+	printf("  %d builds of %d triangles on 1 to 4 threads: %d nodes each%s\n", builds, N, ref.n_nodes,
+	       n_errors ? "" : ", all identical");
+done:
+	bvh_free(&ref);
+	free(boxes);
+	free(tris);
+	free(edge_axis);
+}
+
 /* n == 0, and the arguments bvh_build must refuse (leaving t zeroed). */
 static void empty_test(void)
 {
@@ -1101,9 +1240,127 @@ done:
 	free(m.t);
 }
 
+/* ---- the property test: a million rays ----
+ *
+ * Brute force over 69,451 (bunny) or 871,306 (dragon) triangles for a million
+ * rays would take hours, so the million rays are checked against a second,
+ * independent structure instead, and brute force anchors both on a random
+ * subset: every ray must give the same closest hit (distance bit for bit,
+ * primitive up to exact ties) in
+ *   - the SAH tree, binary traversal;
+ *   - the same tree converted to the wide layout (bvh_widen), wide traversal;
+ *   - the paper's median-split tree (bvh_build_median, depth 16): a different
+ *     builder, so different partitions, boxes and leaf sizes;
+ * and the subset must also agree with testing every triangle. A wrong box or
+ * a wrong traversal step in one structure shows as a disagreement with the
+ * others; for all of them to be wrong the same way on the same ray, two
+ * unrelated trees would have to lose the same triangle. Origins: half inside
+ * the mesh's box, half on a sphere around it; directions uniform. */
+static ray property_ray(rng *r, const float lo[3], const float hi[3])
+{
+	float o[3], d[3], c[3], radius = 0.0f;
+	for (int a = 0; a < 3; a++) {
+		c[a] = 0.5f * (lo[a] + hi[a]);
+		radius += (hi[a] - lo[a]) * (hi[a] - lo[a]);
+	}
+	radius = 0.75f * sqrtf(radius);
+	if (rng_f(r) < 0.5f) {
+		for (int a = 0; a < 3; a++)
+			o[a] = rng_range(r, lo[a], hi[a]);
+	} else {
+		random_direction(r, d);
+		for (int a = 0; a < 3; a++)
+			o[a] = c[a] + radius * d[a];
+	}
+	random_direction(r, d);
+	return make_ray(o, d);
+}
+
+static void property_case(const char *name, rng *r, const tri *tris, int n, int n_rays, int n_brute)
+{
+	bvh_box *boxes = make_boxes(tris, n);
+	bvh_tree sah, med;
+	bvh_wide wide;
+	int root = 0, bad = 0, brute_bad = 0, hits = 0;
+	float lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
+	if (!boxes || bvh_build(boxes, n, &sah) != 0 || bvh_build_median(boxes, n, 16, &med) != 0 ||
+	    bvh_widen(sah.nodes, &root, 1, &wide) != 0) {
+		fail("%s: build failed", name);
+		free(boxes);
+		return;
+	}
+	for (int i = 0; i < n; i++)
+		for (int a = 0; a < 3; a++) {
+			lo[a] = fminf(lo[a], tris[i].lo[a]);
+			hi[a] = fmaxf(hi[a], tris[i].hi[a]);
+		}
+	int depth = sah.depth > med.depth ? sah.depth : med.depth;
+	int *stack_node = malloc((size_t)depth * sizeof *stack_node);
+	float *stack_t = malloc((size_t)depth * sizeof *stack_t);
+	double t0 = now_ms();
+	for (int i = 0; i < n_rays && stack_node && stack_t; i++) {
+		ray ry = property_ray(r, lo, hi);
+		hit a = traverse(&sah, tris, &ry, stack_node, stack_t);
+		hit b = traverse_wide(&wide, &sah, tris, &ry);
+		hit c = traverse(&med, tris, &ry, stack_node, stack_t);
+		hits += a.prim >= 0;
+		if (!same_hit(&a, &b, tris, &ry) || !same_hit(&a, &c, tris, &ry)) {
+			if (bad++ < 3)
+				fail("%s ray %d: SAH t %.9g prim %d, wide t %.9g prim %d, median t %.9g prim %d", name, i,
+				     a.t, a.prim, b.t, b.prim, c.t, c.prim);
+		}
+		if (i < n_brute) {
+			hit want = brute_force(tris, n, &ry);
+			if (!same_hit(&a, &want, tris, &ry) && brute_bad++ < 3)
+				fail("%s ray %d: SAH t %.9g prim %d, brute force t %.9g prim %d", name, i, a.t, a.prim,
+				     want.t, want.prim);
+		}
+	}
+	printf("  %s: %d triangles, %d rays (%d hit): SAH, wide and median trees agree on %d; "
+	       "brute force on the first %d: %d disagreements (%.0f ms)\n", name, n, n_rays, hits,
+	       n_rays - bad, n_brute, brute_bad, now_ms() - t0);
+	free(stack_node);
+	free(stack_t);
+	bvh_wide_free(&wide);
+	bvh_free(&sah);
+	bvh_free(&med);
+	free(boxes);
+}
+
+static int property_test(const char *dir, rng *r)
+{
+	static const char *names[2] = { "bunny.obj", "dragon.obj" };
+	enum { N_PROPERTY_RAYS = 1000000 };
+	printf("property: %d random rays each\n", N_PROPERTY_RAYS);
+	for (int i = 0; i < 2; i++) {
+		char path[4096];
+		mesh m = { 0 };
+		snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+		if (load_obj(path, &m) != 0 || m.n_t == 0)
+			fail("%s: no triangles loaded", path);
+		else
+			property_case(names[i], r, m.t, m.n_t, N_PROPERTY_RAYS, i == 0 ? 2000 : 200);
+		free(m.v);
+		free(m.t);
+	}
+	enum { N = 20000 };
+	tri *tris = malloc(N * sizeof *tris);
+	signed char *edge_axis = malloc(N);
+	if (tris && edge_axis) {
+		make_soup(r, tris, N, edge_axis);
+		property_case("soup with degenerate triangles", r, tris, N, N_PROPERTY_RAYS, 2000);
+	}
+	free(tris);
+	free(edge_axis);
+	printf("%s: %d error%s\n", n_errors ? "FAIL" : "PASS", n_errors, n_errors == 1 ? "" : "s");
+	return n_errors ? 1 : 0;
+}
+
 int main(int argc, char **argv)
 {
 	rng r = { SEED };
+	if (argc == 3 && strcmp(argv[1], "--property") == 0)
+		return property_test(argv[2], &r);
 	printf("test_bvh: seed 0x%016llx, BVH_MAX_LEAF %d\n", (unsigned long long)SEED, BVH_MAX_LEAF);
 	check_slab();
 	printf("tiny trees:\n");
@@ -1115,6 +1372,8 @@ int main(int argc, char **argv)
 	shape_tests(&r);
 	printf("soup:\n");
 	soup_test("soup", &r, N_SOUP, N_RAYS, 5);
+	printf("threads:\n");
+	determinism_test(&r);
 	if (argc > 1)
 		mesh_test(argv[1], &r);
 	printf("%s: %d error%s\n", n_errors ? "FAIL" : "PASS", n_errors, n_errors == 1 ? "" : "s");

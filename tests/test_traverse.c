@@ -106,7 +106,7 @@ static int cast(struct device_scene *ds, const float *rays, int n, float *hits)
 	cl_kernel k = clCreateKernel(ds->prog, "raycast", &err);
 	cl_mem b[4] = {
 		clCreateBuffer(ds->dev->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-		               lr->n_nodes * sizeof(bvh_node), lr->nodes, &err),
+		               lr->dev_node_bytes, (void *)lr->dev_nodes, &err),
 		clCreateBuffer(ds->dev->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
 		               lr->n_all_prims * sizeof(dev_prim), lr->prims, &err),
 		clCreateBuffer(ds->dev->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
@@ -159,9 +159,13 @@ static struct soup mesh_soup(const scene_mesh *m, const xform *xf)
 	return s;
 }
 
+/* The node layout under test (main runs every check in both). */
+static int layout;
+
 static int open_scene(struct device_scene *ds, const scene *s)
 {
-	if (lower_scene(s, NULL, &ds->lr)) {
+	lower_options lo = { LOWER_BVH_SAH, 24, layout };
+	if (lower_scene(s, &lo, &ds->lr)) {
 		fprintf(stderr, "lowering failed\n");
 		return -1;
 	}
@@ -413,10 +417,18 @@ static scene_mesh icosphere(int levels)
 /* Rays from outside aimed exactly at corners and edge midpoints of a closed mesh:
  * watertight intersection lets none through. Placed as a transformed instance
  * and flattened, so both paths through the kernels are held to it. */
-static void test_watertight(device_ctx *dev, cl_program prog, int n_rays, int n_brute)
+/* far: the mesh scaled by 40 and moved some 3,000 units away, where a float's
+ * rounding is coarse next to the triangles: rays aimed at a vertex shared by a
+ * fan of five or six triangles then slip between them unless every neighbour
+ * evaluates the shared edges identically. Moller-Trumbore, which measures each
+ * triangle from its own first corner, misses rays here (checked by swapping
+ * it in); the watertight test misses none. */
+static void test_watertight(device_ctx *dev, cl_program prog, int n_rays, int n_brute, int far)
 {
 	scene_mesh m = icosphere(3);
-	double rot[3] = { 20, 35, 50 }, sc3[3] = { 1.5, 0.7, 1.1 }, mv[3] = { 0.3, -0.2, 0.5 };
+	double k = far ? 40 : 1;
+	double rot[3] = { 20, 35, 50 }, sc3[3] = { 1.5 * k, 0.7 * k, 1.1 * k };
+	double mv[3] = { 0.3 + far * 3000.37, -0.2 - far * 1700.71, 0.5 + far * 2900.13 };
 	xform a = scene_xform_rotate(rot), b = scene_xform_scale(sc3), c = scene_xform_translate(mv);
 	xform xf = scene_xform_then(&a, &b);
 	xf = scene_xform_then(&xf, &c);
@@ -426,8 +438,14 @@ static void test_watertight(device_ctx *dev, cl_program prog, int n_rays, int n_
 		struct device_scene ds = { .dev = dev, .prog = prog };
 		if (open_scene(&ds, &sc) == 0) {
 			float *rays = malloc((size_t)n_rays * 8 * sizeof *rays), *hits = malloc((size_t)n_rays * 4 * sizeof *hits);
+			/* flattened, each face's corners as the device has them (object: the face) */
+			const dev_prim **face_prim = calloc(m.n_faces, sizeof *face_prim);
+			for (int i = 0; i < ds.lr.n_prims; i++)
+				if (ds.lr.prims[i].type == PRIM_TRIANGLE && ds.lr.prims[i].object < m.n_faces)
+					face_prim[ds.lr.prims[i].object] = &ds.lr.prims[i];
 			for (int i = 0; i < n_rays; i++) {
-				const int *f = m.face[(int)(uniform() * m.n_faces) % m.n_faces];
+				int fi = (int)(uniform() * m.n_faces) % m.n_faces;
+				const int *f = m.face[fi];
 				double p[3], w[3], o[3], len = 0;
 				int e = i % 6;   /* three corners, three points along the edges */
 				double at = uniform();
@@ -448,13 +466,26 @@ static void test_watertight(device_ctx *dev, cl_program prog, int n_rays, int n_
 				for (int k = 0; k < 3; k++)
 					rays[8 * i + 4 + k] = (float)((w[k] - o[k]) / sqrt(len));
 				rays[8 * i + 3] = INFINITY;
+				if (far && flatten && e < 3 && face_prim[fi]) {
+					/* exactly through the float corner: o = corner + delta and d = -delta,
+					 * with delta on a grid of 1/4, which the corner's ulp (1/4096 near
+					 * 3,000) divides, so both are exact (d need not be unit length here) */
+					const float4 *c = e == 0 ? &face_prim[fi]->a : e == 1 ? &face_prim[fi]->b : &face_prim[fi]->c;
+					const float cv[3] = { c->x, c->y, c->z };
+					for (int k = 0; k < 3; k++) {
+						float delta = 0.25f * roundf(4.0f * (float)(o[k] - w[k]));
+						rays[8 * i + k] = cv[k] + delta;
+						rays[8 * i + 4 + k] = -delta;
+					}
+				}
 			}
+			free(face_prim);
 			int missed = cast(&ds, rays, n_rays, hits) ? n_rays : 0;
 			for (int i = 0; i < n_rays && !missed; i++)
 				missed += hits[4 * i + 1] < 0;
 			char what[128];
-			snprintf(what, sizeof what, "closed mesh (%s), %d rays aimed exactly at shared corners and edges",
-			         flatten ? "flattened" : "transformed instance", n_rays);
+			snprintf(what, sizeof what, "closed mesh (%s%s), %d rays aimed exactly at shared corners and edges",
+			         flatten ? "flattened" : "transformed instance", far ? ", far from the origin" : "", n_rays);
 			check(missed == 0, "%s: %g missed (of %g)", what, missed, n_rays);
 			free(rays);
 			free(hits);
@@ -464,7 +495,7 @@ static void test_watertight(device_ctx *dev, cl_program prog, int n_rays, int n_
 	}
 	/* and against brute force, both ways */
 	struct soup s = mesh_soup(&m, &xf);
-	for (int flatten = 0; flatten < 2; flatten++) {
+	for (int flatten = 0; flatten < 2 && !far; flatten++) {
 		scene sc;
 		mesh_scene(&sc, &m, &xf, flatten);
 		struct device_scene ds = { .dev = dev, .prog = prog };
@@ -491,17 +522,23 @@ int main(int argc, char **argv)
 	device_ctx dev;
 	if (device_open(&dev, -1))
 		return 1;
-	cl_program prog = device_build(&dev, getenv("ECLAT_KERNEL_DIR"), "-cl-std=CL1.2");
-	if (!prog)
-		return 1;
 	printf("device: %s\n", dev.name);
-	/* brute force costs rays times triangles on the host: the counts keep the test
-	 * under half a minute; the device-only checks take a million rays */
-	test_soup(&dev, prog, 1000, 200000);
-	test_watertight(&dev, prog, 1000000, 40000);
-	test_mesh(&dev, prog, argv[1], "bunny.obj", 8000);
-	test_mesh(&dev, prog, argv[1], "dragon.obj", 5000);
-	clReleaseProgram(prog);
+	for (layout = LOWER_LAYOUT_BINARY; layout <= LOWER_LAYOUT_WIDE; layout++) {
+		/* the options come from a lowered scene; any scene of the layout gives them */
+		lower_result probe = { .layout = layout };
+		cl_program prog = device_build(&dev, getenv("ECLAT_KERNEL_DIR"), lower_kernel_options(&probe));
+		if (!prog)
+			return 1;
+		printf("layout: %s\n", layout == LOWER_LAYOUT_WIDE ? "wide" : "binary");
+		/* brute force costs rays times triangles on the host: the counts keep the
+		 * test under a minute; the device-only checks take a million rays */
+		test_soup(&dev, prog, 1000, 200000);
+		test_watertight(&dev, prog, 1000000, 40000, 0);
+		test_watertight(&dev, prog, 1000000, 0, 1);   /* its brute force would repeat the first's */
+		test_mesh(&dev, prog, argv[1], "bunny.obj", 8000);
+		test_mesh(&dev, prog, argv[1], "dragon.obj", 5000);
+		clReleaseProgram(prog);
+	}
 	device_close(&dev);
 	printf("%s\n", failures ? "FAIL" : "all traversal checks passed");
 	return failures ? 1 : 0;
