@@ -192,12 +192,11 @@ directive:
 	| D_DEBUG cexpr %prec LOW             { $$ = ast_op(AST_MESSAGE, L(@1), 'd', $2, NULL); }
 	| D_WARNING cexpr %prec LOW           { $$ = ast_op(AST_MESSAGE, L(@1), 'w', $2, NULL); }
 	| D_ERROR cexpr %prec LOW             { $$ = ast_op(AST_MESSAGE, L(@1), 'e', $2, NULL); }
-	| D_FOPEN T_IDENT cexpr T_IDENT       { $$ = ast_named(AST_FILE_IO, L(@1), strdup("fopen"), $3, NULL);
-	                                        free($2); free($4); }
-	| D_FCLOSE T_IDENT                    { $$ = ast_named(AST_FILE_IO, L(@1), strdup("fclose"), NULL, NULL);
-	                                        free($2); }
-	| D_READ '(' items ')'                { $$ = ast_named(AST_FILE_IO, L(@1), strdup("read"), $3, NULL); }
-	| D_WRITE '(' items ')'               { $$ = ast_named(AST_FILE_IO, L(@1), strdup("write"), $3, NULL); }
+	| D_FOPEN T_IDENT cexpr T_IDENT       { $$ = ast_named(AST_FILE_IO, L(@1), strdup("fopen"), ast_text(AST_IDENT, L(@2), $2), $3);
+	                                        ast_append($$, ast_text(AST_IDENT, L(@4), $4)); }
+	| D_FCLOSE T_IDENT                    { $$ = ast_named(AST_FILE_IO, L(@1), strdup("fclose"), ast_text(AST_IDENT, L(@2), $2), NULL); }
+	| D_READ '(' items ')'                { $$ = ast_concat(ast_named(AST_FILE_IO, L(@1), strdup("read"), NULL, NULL), $3); }
+	| D_WRITE '(' items ')'               { $$ = ast_concat(ast_named(AST_FILE_IO, L(@1), strdup("write"), NULL, NULL), $3); }
 	;
 
 /* The opening of a block, when an #if chooses between two (merge or union). */

@@ -305,7 +305,8 @@ typedef enum {
 	AST_VERSION,  /* kids: version */
 	AST_DEFAULT,  /* kids: items */
 	AST_MESSAGE,  /* op 'd' #debug, 'w' #warning, 'e' #error; kids: text */
-	AST_FILE_IO,  /* str = fopen fclose read write: parsed, not supported */
+	AST_FILE_IO,  /* str = fopen (kids: handle, name, mode), fclose (handle), read and write
+	               * (kids: handle, then the items) */
 } ast_kind;
 
 #define AST_IS_EXPRESSION(k) ((k) <= AST_IFEXPR)

@@ -756,6 +756,13 @@ bool eval_file_exists(struct eval *e, int from_file, const char *name)
 	return p != NULL;
 }
 
+char *eval_find_file(struct eval *e, int from_file, const char *name)
+{
+	char *first, *p = find_file(e, from_file, name, &first);
+	free(first);
+	return p;
+}
+
 static void keep_tree(struct eval *e, ast_node *tree)
 {
 	e->trees = eval_xrealloc(e->trees, (e->n_trees + 1) * sizeof *e->trees);
@@ -895,9 +902,7 @@ static void run_directive(struct cursor *c, const ast_node *d)
 	case AST_MESSAGE: run_message(e, d); break;
 	case AST_CASE: case AST_RANGE: case AST_ELSE:
 		break;  /* a #switch running on through the next clause */
-	case AST_FILE_IO:
-		eval_error(e, d->loc, "#%s is not supported yet", d->str);
-		break;
+	case AST_FILE_IO: eval_file_io(e, d); break;
 	default:
 		eval_error(e, d->loc, "unexpected directive");
 		break;
@@ -1046,6 +1051,7 @@ eval_options eval_options_default(void)
 
 static void eval_free(struct eval *e)
 {
+	eval_files_close(e);
 	while (e->scope)
 		scope_pop(e);
 	for (int i = 0; i < e->n_trees; i++)

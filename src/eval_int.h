@@ -120,6 +120,8 @@ struct eval {
 	int n_trees;
 	char **warned;           /* the kinds of constructs already warned about */
 	int n_warned;
+	struct eval_file *files; /* #fopen's open files (eval_fileio.c) */
+	int n_files;
 };
 
 /* Errors and warnings with the chain of includes and macro calls as notes. */
@@ -163,6 +165,12 @@ const ast_node *eval_next_optional(struct cursor *c, int *err);
 
 /* Whether a file named in the scene can be found, as #include looks for it. */
 bool eval_file_exists(struct eval *e, int from_file, const char *name);
+/* Its path (to free), or NULL when it cannot be found. */
+char *eval_find_file(struct eval *e, int from_file, const char *name);
+
+/* ---- #fopen, #read, #write, #fclose (eval_fileio.c) ---- */
+void eval_file_io(struct eval *e, const ast_node *d);
+void eval_files_close(struct eval *e);
 
 /* A macro call in a value position: the one value its body produces. */
 int eval_macro_value(struct eval *e, const ast_node *call, const value *macro, value *out);
