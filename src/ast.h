@@ -90,7 +90,6 @@ enum kw_class {
 	X(FREQUENCY, "frequency", ARG) \
 	X(GRADIENT, "gradient", ARG) \
 	X(INSIDE_VECTOR, "inside_vector", ARG) \
-	X(MESH_FILE, "file", ARG) \
 	X(IOR, "ior", ARG) \
 	X(LAMBDA, "lambda", ARG) \
 	X(LOCATION, "location", ARG) \
@@ -254,6 +253,13 @@ enum kw_class {
 	X(FUNCTION, "function", SPECIAL) \
 	X(ONCE, "once", SPECIAL) \
 	X(TEXTURE, "texture", SPECIAL)
+
+/* Contextual words: keywords only where noted and identifiers everywhere else,
+ * as POV-Ray reserves none of them and its scenes use them as names. The lexer
+ * does not know them; the evaluator recognises them where they stand.
+ * tests/man.test reads these lines (one AST_WORD_ a line).
+ *   file: right inside a mesh, mesh { file "NAME" } (eval_object.c) */
+#define AST_WORD_MESH_FILE "file"
 
 enum ast_keyword {
 	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */
