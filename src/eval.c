@@ -729,7 +729,8 @@ static char *try_path(const char *list, const char *name)
 #define POV_INCLUDE_DIR "/usr/share/povray-3.7/include"
 
 /* Where a file named in the scene is: next to the file that names it, then in
- * the -I folders, $ECLAT_INCLUDE_PATH, POV-Ray's include folder. NULL if none;
+ * the -I folders, $ECLAT_INCLUDE_PATH, eclat's installed include folder,
+ * POV-Ray's include folder. NULL if none;
  * *first is then the name relative to the file that names it. */
 static char *find_file(struct eval *e, int from_file, const char *name, char **first)
 {
@@ -743,6 +744,8 @@ static char *find_file(struct eval *e, int from_file, const char *name, char **f
 		p = try_dir(e->opt->include_dirs[i], strlen(e->opt->include_dirs[i]), name);
 	if (!p)
 		p = try_path(getenv("ECLAT_INCLUDE_PATH"), name);
+	if (!p && eval_installed_include_dir())
+		p = try_dir(eval_installed_include_dir(), strlen(eval_installed_include_dir()), name);
 	if (!p)
 		p = try_dir(POV_INCLUDE_DIR, strlen(POV_INCLUDE_DIR), name);
 	return p;

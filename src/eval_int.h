@@ -168,6 +168,10 @@ bool eval_file_exists(struct eval *e, int from_file, const char *name);
 /* Its path (to free), or NULL when it cannot be found. */
 char *eval_find_file(struct eval *e, int from_file, const char *name);
 
+/* The include folder of the installed eclat (eval_path.c): PKGDATADIR/include,
+ * found from where the binary runs; NULL when there is none. */
+const char *eval_installed_include_dir(void);
+
 /* ---- #fopen, #read, #write, #fclose (eval_fileio.c) ---- */
 void eval_file_io(struct eval *e, const ast_node *d);
 void eval_files_close(struct eval *e);
