@@ -134,6 +134,9 @@ item:
 
 block:
 	T_BLOCK_KW '{' items '}'      { $$ = ast_block($3, $1, NULL, L(@1)); }
+	| T_BLOCK_KW '{' items T_BLOCK_KW '}'
+	                              { $$ = ast_block(ast_append($3, ast_keyword(AST_FLAG, L(@4), $4, NULL)), $1, NULL, L(@1));
+	                                /* bounded_by { clipped_by }: the object's clip as its bound */ }
 	| T_ARG_KW '{' items '}'      { $$ = ast_block($3, $1, NULL, L(@1)); }
 	| T_IDENT '{' items '}'       { $$ = ast_block($3, KW_UNKNOWN, $1, L(@1));
 	                                /* the evaluator says "'cylinder' is not supported yet" */ }
@@ -231,6 +234,8 @@ value:
 	| layers %prec LOW            { $$ = $1; }
 	| function                    { $$ = $1; }
 	| array                       { $$ = $1; }
+	| D_INCLUDE cexpr %prec LOW   { $$ = ast_op(AST_INCLUDE, L(@1), 0, $2, NULL);
+	                                /* #declare M = #include "mesh.inc": the file's one value */ }
 	| D_IF '(' expr ')' items if_tail
 	                              { $$ = ast_concat(ast_op(AST_IFEXPR, L(@1), 'i', $3, NAMED("then", $5)), $6);
 	                                /* #declare S = #if (C) sphere {...} #else box {...} #end */ }

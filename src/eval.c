@@ -802,6 +802,21 @@ static void run_include(struct cursor *c, const ast_node *inc)
 	push_context(e, f, NULL, inc->loc);
 }
 
+/* #declare V = #include "File": the one value the file gives, as POV-Ray reads
+ * it (its mesh camera demos keep a mesh in a file this way). */
+static int include_value(struct eval *e, const ast_node *inc, value *out)
+{
+	struct cursor c;
+	int errors = diag_error_count();
+	eval_cursor_init(&c, e, NULL);
+	run_include(&c, inc);
+	if (c.n == 0 || diag_error_count() > errors) {
+		eval_cursor_free(&c);
+		return -1;
+	}
+	return one_value(e, &c, inc->loc, "this #include", out);
+}
+
 /* ---- the other directives ---- */
 
 static int array_target(struct eval *e, const ast_node *d, value v);
@@ -811,7 +826,8 @@ static void run_declare(struct eval *e, const ast_node *d)
 {
 	const ast_node *rhs = d->kids[0];
 	value v;
-	int rc = AST_IS_EXPRESSION(rhs->kind) ? eval_expr(e, rhs, &v) : eval_block_value(e, rhs, &v);
+	int rc = AST_IS_EXPRESSION(rhs->kind) ? eval_expr(e, rhs, &v) :
+	         rhs->kind == AST_INCLUDE ? include_value(e, rhs, &v) : eval_block_value(e, rhs, &v);
 	if (rc)
 		return;
 	if (d->n_kids > 1) {

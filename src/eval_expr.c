@@ -855,6 +855,20 @@ static int extent(struct eval *e, const ast_node *n, value *out)
 	value v;
 	if (n->n_kids != 1 || eval_expr(e, n->kids[0], &v))
 		return -1;
+	if (v.kind == V_OBJECT && v.obj->n_objs == 0 && v.obj->unsupported) {
+		/* --skip-unsupported leaves the object out: it has no box to give */
+		if (!e->opt->skip_unsupported) {
+			eval_error(e, n->kids[0]->loc, "%s() of a '%s', which is not supported yet", ast_keyword_name(n->kw),
+			           v.obj->unsupported);
+			eval_value_free(&v);
+			return -1;
+		}
+		eval_warn_once(e, n->loc, "extent of unsupported", "%s() of a '%s', which eclat leaves out, is <0, 0, 0>",
+		               ast_keyword_name(n->kw), v.obj->unsupported);
+		eval_value_free(&v);
+		*out = eval_vector3((double[3]){ 0, 0, 0 });
+		return 0;
+	}
 	if (v.kind != V_OBJECT || v.obj->n_objs == 0) {
 		eval_error(e, n->kids[0]->loc, "%s() needs an object", ast_keyword_name(n->kw));
 		eval_value_free(&v);
