@@ -16,11 +16,40 @@ static int expr(struct eval *e, const ast_node *n, value *out);
 
 /* ---- identifiers ---- */
 
+/* The standard include file that declares name, if one does: a POV-Ray user's
+ * "undeclared identifier 'White'" most often means a missing #include. Read
+ * only on this error path. */
+static const char *standard_include_of(struct eval *e, const ast_node *n)
+{
+	static const char *const files[] = { "colors.inc", "textures.inc", "metals.inc", "golds.inc", "glass.inc",
+	                                     "finish.inc", "woods.inc", "stones.inc", "skies.inc", "shapes.inc" };
+	size_t len = strlen(n->str);
+	for (size_t i = 0; i < sizeof files / sizeof *files; i++) {
+		char *path = eval_find_file(e, n->loc.file, files[i]);
+		size_t size;
+		char *text = path ? diag_read_file(path, &size) : NULL;
+		free(path);
+		bool found = false;
+		for (char *p = text; p && !found && (p = strstr(p, "#declare")) != NULL; p += 8) {
+			char *q = p + 8;
+			q += strspn(q, " \t");
+			found = strncmp(q, n->str, len) == 0 && (q[len] == ' ' || q[len] == '\t' || q[len] == '=');
+		}
+		free(text);
+		if (found)
+			return files[i];
+	}
+	return NULL;
+}
+
 static void undeclared(struct eval *e, const ast_node *n, const char *what)
 {
 	char near[64];
+	const char *inc = standard_include_of(e, n);
 	eval_suggest(e, n->str, near, sizeof near);
-	if (near[0])
+	if (inc)
+		eval_error(e, n->loc, "undeclared %s '%s'; %s declares it: #include \"%s\"", what, n->str, inc, inc);
+	else if (near[0])
 		eval_error(e, n->loc, "undeclared %s '%s'; did you mean '%s'?", what, n->str, near);
 	else
 		eval_error(e, n->loc, "undeclared %s '%s'", what, n->str);
