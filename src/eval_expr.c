@@ -921,7 +921,9 @@ static int builtin(struct eval *e, const ast_node *n, value *out)
 		return vector_function(e, n, out);
 	case KW_MIN_EXTENT: case KW_MAX_EXTENT:
 		return extent(e, n, out);
-	case KW_INSIDE: case KW_TRACE: case KW_VTURBULENCE:
+	case KW_TRACE:
+		return eval_trace(e, n, out);
+	case KW_INSIDE: case KW_VTURBULENCE:
 		eval_error(e, n->loc, "%s() is not supported yet", ast_keyword_name(n->kw));
 		return -1;
 	default: {

@@ -172,6 +172,9 @@ char *eval_find_file(struct eval *e, int from_file, const char *name);
  * found from where the binary runs; NULL when there is none. */
 const char *eval_installed_include_dir(void);
 
+/* trace(OBJECT, <Start>, <Direction> [, NORMAL]) (eval_trace.c) */
+int eval_trace(struct eval *e, const ast_node *call, value *out);
+
 /* ---- #fopen, #read, #write, #fclose (eval_fileio.c) ---- */
 void eval_file_io(struct eval *e, const ast_node *d);
 void eval_files_close(struct eval *e);
