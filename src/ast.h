@@ -258,8 +258,15 @@ enum kw_class {
  * as POV-Ray reserves none of them and its scenes use them as names. The lexer
  * does not know them; the evaluator recognises them where they stand.
  * tests/man.test reads these lines (one AST_WORD_ a line).
- *   file: right inside a mesh, mesh { file "NAME" } (eval_object.c) */
+ *   file: right inside a mesh, mesh { file "NAME" } (eval_object.c)
+ *   spline and its types: spline { linear_spline ... }, S(T, cubic_spline)
+ *   (eval_spline.c) */
 #define AST_WORD_MESH_FILE "file"
+#define AST_WORD_SPLINE "spline"
+#define AST_WORD_LINEAR_SPLINE "linear_spline"
+#define AST_WORD_QUADRATIC_SPLINE "quadratic_spline"
+#define AST_WORD_CUBIC_SPLINE "cubic_spline"
+#define AST_WORD_NATURAL_SPLINE "natural_spline"
 
 enum ast_keyword {
 	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */

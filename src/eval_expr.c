@@ -983,6 +983,12 @@ static int call(struct eval *e, const ast_node *n, value *out)
 		value f = *v;
 		return eval_call_function(e, n, &f, out);
 	}
+	if (v->kind == V_SPLINE) {
+		value s = eval_value_copy(v);   /* the call's arguments may change the symbol */
+		int rc = eval_spline_call(e, n, &s, out);
+		eval_value_free(&s);
+		return rc;
+	}
 	if (v->kind == V_OTHER)
 		eval_error(e, n->loc, "'%s' is a %s, which eclat cannot evaluate yet", n->str, v->str);
 	else

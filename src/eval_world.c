@@ -703,6 +703,8 @@ int eval_block_value(struct eval *e, const ast_node *b, value *out)
 	case KW_UNKNOWN:
 		if (strcmp(b->str, "layers") == 0)
 			return eval_material_value(e, b, out);
+		if (strcmp(b->str, AST_WORD_SPLINE) == 0)
+			return eval_spline_value(e, b, out);
 		if (eval_pov_word(b->str)) {   /* declared, for a use eclat will refuse */
 			*out = (value){ .kind = V_OTHER, .str = eval_xstrdup(b->str) };
 			return 0;
