@@ -134,6 +134,9 @@ item:
 
 block:
 	T_BLOCK_KW '{' items '}'      { $$ = ast_block($3, $1, NULL, L(@1)); }
+	| T_BLOCK_KW '{' items T_BLOCK_KW '}'
+	                              { $$ = ast_block(ast_append($3, ast_keyword(AST_FLAG, L(@4), $4, NULL)), $1, NULL, L(@1));
+	                                /* bounded_by { clipped_by }: the object's clip as its bound */ }
 	| T_ARG_KW '{' items '}'      { $$ = ast_block($3, $1, NULL, L(@1)); }
 	| T_IDENT '{' items '}'       { $$ = ast_block($3, KW_UNKNOWN, $1, L(@1));
 	                                /* the evaluator says "'cylinder' is not supported yet" */ }
@@ -192,12 +195,11 @@ directive:
 	| D_DEBUG cexpr %prec LOW             { $$ = ast_op(AST_MESSAGE, L(@1), 'd', $2, NULL); }
 	| D_WARNING cexpr %prec LOW           { $$ = ast_op(AST_MESSAGE, L(@1), 'w', $2, NULL); }
 	| D_ERROR cexpr %prec LOW             { $$ = ast_op(AST_MESSAGE, L(@1), 'e', $2, NULL); }
-	| D_FOPEN T_IDENT cexpr T_IDENT       { $$ = ast_named(AST_FILE_IO, L(@1), strdup("fopen"), $3, NULL);
-	                                        free($2); free($4); }
-	| D_FCLOSE T_IDENT                    { $$ = ast_named(AST_FILE_IO, L(@1), strdup("fclose"), NULL, NULL);
-	                                        free($2); }
-	| D_READ '(' items ')'                { $$ = ast_named(AST_FILE_IO, L(@1), strdup("read"), $3, NULL); }
-	| D_WRITE '(' items ')'               { $$ = ast_named(AST_FILE_IO, L(@1), strdup("write"), $3, NULL); }
+	| D_FOPEN T_IDENT cexpr T_IDENT       { $$ = ast_named(AST_FILE_IO, L(@1), strdup("fopen"), ast_text(AST_IDENT, L(@2), $2), $3);
+	                                        ast_append($$, ast_text(AST_IDENT, L(@4), $4)); }
+	| D_FCLOSE T_IDENT                    { $$ = ast_named(AST_FILE_IO, L(@1), strdup("fclose"), ast_text(AST_IDENT, L(@2), $2), NULL); }
+	| D_READ '(' items ')'                { $$ = ast_concat(ast_named(AST_FILE_IO, L(@1), strdup("read"), NULL, NULL), $3); }
+	| D_WRITE '(' items ')'               { $$ = ast_concat(ast_named(AST_FILE_IO, L(@1), strdup("write"), NULL, NULL), $3); }
 	;
 
 /* The opening of a block, when an #if chooses between two (merge or union). */
@@ -232,6 +234,8 @@ value:
 	| layers %prec LOW            { $$ = $1; }
 	| function                    { $$ = $1; }
 	| array                       { $$ = $1; }
+	| D_INCLUDE cexpr %prec LOW   { $$ = ast_op(AST_INCLUDE, L(@1), 0, $2, NULL);
+	                                /* #declare M = #include "mesh.inc": the file's one value */ }
 	| D_IF '(' expr ')' items if_tail
 	                              { $$ = ast_concat(ast_op(AST_IFEXPR, L(@1), 'i', $3, NAMED("then", $5)), $6);
 	                                /* #declare S = #if (C) sphere {...} #else box {...} #end */ }

@@ -154,7 +154,8 @@ enum {
 typedef struct {
 	float4 cam_location, cam_direction, cam_right, cam_up;
 	float4 background;  /* rgb: what rays that leave the scene see */
-	float4 lens;        /* x: aperture (0: pinhole), y: focal distance along direction */
+	float4 lens;        /* x: aperture (0: pinhole), y: focal distance along direction,
+	                     * z: 1 for the orthographic camera */
 	int width, height, max_depth, seed;
 	int n_lights, sample_base, samples_per_pass, n_prims;
 	int n_planes, n_emitters, integrator, aov;   /* aov: 1 when the aov buffer is there */

@@ -90,7 +90,6 @@ enum kw_class {
 	X(FREQUENCY, "frequency", ARG) \
 	X(GRADIENT, "gradient", ARG) \
 	X(INSIDE_VECTOR, "inside_vector", ARG) \
-	X(MESH_FILE, "file", ARG) \
 	X(IOR, "ior", ARG) \
 	X(LAMBDA, "lambda", ARG) \
 	X(LOCATION, "location", ARG) \
@@ -255,6 +254,20 @@ enum kw_class {
 	X(ONCE, "once", SPECIAL) \
 	X(TEXTURE, "texture", SPECIAL)
 
+/* Contextual words: keywords only where noted and identifiers everywhere else,
+ * as POV-Ray reserves none of them and its scenes use them as names. The lexer
+ * does not know them; the evaluator recognises them where they stand.
+ * tests/man.test reads these lines (one AST_WORD_ a line).
+ *   file: right inside a mesh, mesh { file "NAME" } (eval_object.c)
+ *   spline and its types: spline { linear_spline ... }, S(T, cubic_spline)
+ *   (eval_spline.c) */
+#define AST_WORD_MESH_FILE "file"
+#define AST_WORD_SPLINE "spline"
+#define AST_WORD_LINEAR_SPLINE "linear_spline"
+#define AST_WORD_QUADRATIC_SPLINE "quadratic_spline"
+#define AST_WORD_CUBIC_SPLINE "cubic_spline"
+#define AST_WORD_NATURAL_SPLINE "natural_spline"
+
 enum ast_keyword {
 	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */
 	KW_FILE = -1,    /* the block that holds a whole file */
@@ -305,7 +318,8 @@ typedef enum {
 	AST_VERSION,  /* kids: version */
 	AST_DEFAULT,  /* kids: items */
 	AST_MESSAGE,  /* op 'd' #debug, 'w' #warning, 'e' #error; kids: text */
-	AST_FILE_IO,  /* str = fopen fclose read write: parsed, not supported */
+	AST_FILE_IO,  /* str = fopen (kids: handle, name, mode), fclose (handle), read and write
+	               * (kids: handle, then the items) */
 } ast_kind;
 
 #define AST_IS_EXPRESSION(k) ((k) <= AST_IFEXPR)

@@ -729,7 +729,8 @@ static char *try_path(const char *list, const char *name)
 #define POV_INCLUDE_DIR "/usr/share/povray-3.7/include"
 
 /* Where a file named in the scene is: next to the file that names it, then in
- * the -I folders, $ECLAT_INCLUDE_PATH, POV-Ray's include folder. NULL if none;
+ * the -I folders, $ECLAT_INCLUDE_PATH, eclat's installed include folder,
+ * POV-Ray's include folder. NULL if none;
  * *first is then the name relative to the file that names it. */
 static char *find_file(struct eval *e, int from_file, const char *name, char **first)
 {
@@ -743,6 +744,8 @@ static char *find_file(struct eval *e, int from_file, const char *name, char **f
 		p = try_dir(e->opt->include_dirs[i], strlen(e->opt->include_dirs[i]), name);
 	if (!p)
 		p = try_path(getenv("ECLAT_INCLUDE_PATH"), name);
+	if (!p && eval_installed_include_dir())
+		p = try_dir(eval_installed_include_dir(), strlen(eval_installed_include_dir()), name);
 	if (!p)
 		p = try_dir(POV_INCLUDE_DIR, strlen(POV_INCLUDE_DIR), name);
 	return p;
@@ -754,6 +757,13 @@ bool eval_file_exists(struct eval *e, int from_file, const char *name)
 	free(first);
 	free(p);
 	return p != NULL;
+}
+
+char *eval_find_file(struct eval *e, int from_file, const char *name)
+{
+	char *first, *p = find_file(e, from_file, name, &first);
+	free(first);
+	return p;
 }
 
 static void keep_tree(struct eval *e, ast_node *tree)
@@ -792,6 +802,21 @@ static void run_include(struct cursor *c, const ast_node *inc)
 	push_context(e, f, NULL, inc->loc);
 }
 
+/* #declare V = #include "File": the one value the file gives, as POV-Ray reads
+ * it (its mesh camera demos keep a mesh in a file this way). */
+static int include_value(struct eval *e, const ast_node *inc, value *out)
+{
+	struct cursor c;
+	int errors = diag_error_count();
+	eval_cursor_init(&c, e, NULL);
+	run_include(&c, inc);
+	if (c.n == 0 || diag_error_count() > errors) {
+		eval_cursor_free(&c);
+		return -1;
+	}
+	return one_value(e, &c, inc->loc, "this #include", out);
+}
+
 /* ---- the other directives ---- */
 
 static int array_target(struct eval *e, const ast_node *d, value v);
@@ -801,7 +826,8 @@ static void run_declare(struct eval *e, const ast_node *d)
 {
 	const ast_node *rhs = d->kids[0];
 	value v;
-	int rc = AST_IS_EXPRESSION(rhs->kind) ? eval_expr(e, rhs, &v) : eval_block_value(e, rhs, &v);
+	int rc = AST_IS_EXPRESSION(rhs->kind) ? eval_expr(e, rhs, &v) :
+	         rhs->kind == AST_INCLUDE ? include_value(e, rhs, &v) : eval_block_value(e, rhs, &v);
 	if (rc)
 		return;
 	if (d->n_kids > 1) {
@@ -895,9 +921,7 @@ static void run_directive(struct cursor *c, const ast_node *d)
 	case AST_MESSAGE: run_message(e, d); break;
 	case AST_CASE: case AST_RANGE: case AST_ELSE:
 		break;  /* a #switch running on through the next clause */
-	case AST_FILE_IO:
-		eval_error(e, d->loc, "#%s is not supported yet", d->str);
-		break;
+	case AST_FILE_IO: eval_file_io(e, d); break;
 	default:
 		eval_error(e, d->loc, "unexpected directive");
 		break;
@@ -1046,6 +1070,7 @@ eval_options eval_options_default(void)
 
 static void eval_free(struct eval *e)
 {
+	eval_files_close(e);
 	while (e->scope)
 		scope_pop(e);
 	for (int i = 0; i < e->n_trees; i++)

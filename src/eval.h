@@ -12,8 +12,9 @@
 typedef struct {
 	/* -I DIR, --include-path DIR, in order. An #include "F" with a relative F is
 	 * looked for in the including file's folder, then in these, then in the
-	 * folders of $ECLAT_INCLUDE_PATH (separated by ':'), then in
-	 * /usr/share/povray-3.7/include when it exists. */
+	 * folders of $ECLAT_INCLUDE_PATH (separated by ':'), then in eclat's installed
+	 * include folder (eval_path.c), then in /usr/share/povray-3.7/include when
+	 * it exists. */
 	const char *const *include_dirs;
 	int n_include_dirs;
 	/* -D NAME=VALUE and POV-Ray's Declare=NAME=VALUE: VALUE is a float, a quoted

@@ -16,11 +16,40 @@ static int expr(struct eval *e, const ast_node *n, value *out);
 
 /* ---- identifiers ---- */
 
+/* The standard include file that declares name, if one does: a POV-Ray user's
+ * "undeclared identifier 'White'" most often means a missing #include. Read
+ * only on this error path. */
+static const char *standard_include_of(struct eval *e, const ast_node *n)
+{
+	static const char *const files[] = { "colors.inc", "textures.inc", "metals.inc", "golds.inc", "glass.inc",
+	                                     "finish.inc", "woods.inc", "stones.inc", "skies.inc", "shapes.inc" };
+	size_t len = strlen(n->str);
+	for (size_t i = 0; i < sizeof files / sizeof *files; i++) {
+		char *path = eval_find_file(e, n->loc.file, files[i]);
+		size_t size;
+		char *text = path ? diag_read_file(path, &size) : NULL;
+		free(path);
+		bool found = false;
+		for (char *p = text; p && !found && (p = strstr(p, "#declare")) != NULL; p += 8) {
+			char *q = p + 8;
+			q += strspn(q, " \t");
+			found = strncmp(q, n->str, len) == 0 && (q[len] == ' ' || q[len] == '\t' || q[len] == '=');
+		}
+		free(text);
+		if (found)
+			return files[i];
+	}
+	return NULL;
+}
+
 static void undeclared(struct eval *e, const ast_node *n, const char *what)
 {
 	char near[64];
+	const char *inc = standard_include_of(e, n);
 	eval_suggest(e, n->str, near, sizeof near);
-	if (near[0])
+	if (inc)
+		eval_error(e, n->loc, "undeclared %s '%s'; %s declares it: #include \"%s\"", what, n->str, inc, inc);
+	else if (near[0])
 		eval_error(e, n->loc, "undeclared %s '%s'; did you mean '%s'?", what, n->str, near);
 	else
 		eval_error(e, n->loc, "undeclared %s '%s'", what, n->str);
@@ -855,6 +884,20 @@ static int extent(struct eval *e, const ast_node *n, value *out)
 	value v;
 	if (n->n_kids != 1 || eval_expr(e, n->kids[0], &v))
 		return -1;
+	if (v.kind == V_OBJECT && v.obj->n_objs == 0 && v.obj->unsupported) {
+		/* --skip-unsupported leaves the object out: it has no box to give */
+		if (!e->opt->skip_unsupported) {
+			eval_error(e, n->kids[0]->loc, "%s() of a '%s', which is not supported yet", ast_keyword_name(n->kw),
+			           v.obj->unsupported);
+			eval_value_free(&v);
+			return -1;
+		}
+		eval_warn_once(e, n->loc, "extent of unsupported", "%s() of a '%s', which eclat leaves out, is <0, 0, 0>",
+		               ast_keyword_name(n->kw), v.obj->unsupported);
+		eval_value_free(&v);
+		*out = eval_vector3((double[3]){ 0, 0, 0 });
+		return 0;
+	}
 	if (v.kind != V_OBJECT || v.obj->n_objs == 0) {
 		eval_error(e, n->kids[0]->loc, "%s() needs an object", ast_keyword_name(n->kw));
 		eval_value_free(&v);
@@ -878,7 +921,9 @@ static int builtin(struct eval *e, const ast_node *n, value *out)
 		return vector_function(e, n, out);
 	case KW_MIN_EXTENT: case KW_MAX_EXTENT:
 		return extent(e, n, out);
-	case KW_INSIDE: case KW_TRACE: case KW_VTURBULENCE:
+	case KW_TRACE:
+		return eval_trace(e, n, out);
+	case KW_INSIDE: case KW_VTURBULENCE:
 		eval_error(e, n->loc, "%s() is not supported yet", ast_keyword_name(n->kw));
 		return -1;
 	default: {
@@ -937,6 +982,12 @@ static int call(struct eval *e, const ast_node *n, value *out)
 	if (v->kind == V_FUNCTION) {
 		value f = *v;
 		return eval_call_function(e, n, &f, out);
+	}
+	if (v->kind == V_SPLINE) {
+		value s = eval_value_copy(v);   /* the call's arguments may change the symbol */
+		int rc = eval_spline_call(e, n, &s, out);
+		eval_value_free(&s);
+		return rc;
 	}
 	if (v->kind == V_OTHER)
 		eval_error(e, n->loc, "'%s' is a %s, which eclat cannot evaluate yet", n->str, v->str);

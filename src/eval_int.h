@@ -12,7 +12,7 @@ typedef enum { /* ORDER: eval_kind_name */
 	V_NONE,      /* an array element not set yet */
 	V_FLOAT, V_VECTOR, V_COLOR, V_STRING,
 	V_OBJECT, V_PIGMENT, V_FINISH, V_TEXTURE, V_NORMAL, V_INTERIOR, V_MATERIAL,
-	V_COLOR_MAP, V_TRANSFORM, V_CAMERA, V_ARRAY, V_MACRO, V_FUNCTION, V_OTHER,
+	V_COLOR_MAP, V_TRANSFORM, V_CAMERA, V_ARRAY, V_MACRO, V_FUNCTION, V_SPLINE, V_OTHER,
 } val_kind;
 
 /* A light and the looks_like objects that go with it. */
@@ -120,6 +120,8 @@ struct eval {
 	int n_trees;
 	char **warned;           /* the kinds of constructs already warned about */
 	int n_warned;
+	struct eval_file *files; /* #fopen's open files (eval_fileio.c) */
+	int n_files;
 };
 
 /* Errors and warnings with the chain of includes and macro calls as notes. */
@@ -163,6 +165,23 @@ const ast_node *eval_next_optional(struct cursor *c, int *err);
 
 /* Whether a file named in the scene can be found, as #include looks for it. */
 bool eval_file_exists(struct eval *e, int from_file, const char *name);
+/* Its path (to free), or NULL when it cannot be found. */
+char *eval_find_file(struct eval *e, int from_file, const char *name);
+
+/* The include folder of the installed eclat (eval_path.c): PKGDATADIR/include,
+ * found from where the binary runs; NULL when there is none. */
+const char *eval_installed_include_dir(void);
+
+/* spline { ... } and calls of a spline (eval_spline.c) */
+int eval_spline_value(struct eval *e, const ast_node *b, value *out);
+int eval_spline_call(struct eval *e, const ast_node *call, const value *spl, value *out);
+
+/* trace(OBJECT, <Start>, <Direction> [, NORMAL]) (eval_trace.c) */
+int eval_trace(struct eval *e, const ast_node *call, value *out);
+
+/* ---- #fopen, #read, #write, #fclose (eval_fileio.c) ---- */
+void eval_file_io(struct eval *e, const ast_node *d);
+void eval_files_close(struct eval *e);
 
 /* A macro call in a value position: the one value its body produces. */
 int eval_macro_value(struct eval *e, const ast_node *call, const value *macro, value *out);

@@ -744,23 +744,41 @@ static char *beside_source(src_loc loc, const char *name)
 /* file "NAME" in a mesh, an eclat extension: the triangles of a mesh file (OBJ,
  * PLY, STL, OFF, glTF and the other formats assimp reads), NAME relative to the
  * folder of the scene file that says it. POV-Ray skips it inside
- * #ifdef (eclat_version). */
-static int mesh_file(struct eval *e, const ast_node *item, struct mesh_build *mb)
+ * #ifdef (eclat_version).
+ *
+ * 'file' is no keyword: POV-Ray reserves no such word and its scenes use it as an
+ * identifier. It is a word of its own only as an item right inside a mesh, where
+ * POV-Ray accepts no bare identifier; the parser reads it as an identifier (or
+ * as a call, for file ("NAME")) and the name as the next item. */
+static bool is_file_word(const ast_node *item)
+{
+	return (item->kind == AST_IDENT || (item->kind == AST_CALL && item->n_kids == 1)) &&
+	       strcmp(item->str, AST_WORD_MESH_FILE) == 0;
+}
+
+static int mesh_file(struct eval *e, struct cursor *c, const ast_node *item, struct mesh_build *mb)
 {
 	char *name, err[512];
-	if (eval_expect_string(e, item->kids[0], &name))
+	int bad = 0;
+	const ast_node *arg = item->kind == AST_CALL ? item->kids[0] : eval_next_expr(c, &bad);
+	if (!arg) {
+		if (!bad)
+			eval_error(e, item->loc, "'file' needs the name of a mesh file after it");
+		return -1;
+	}
+	if (eval_expect_string(e, arg, &name))
 		return -1;
 	if (mb->m.n_faces > 0) {
 		eval_error(e, item->loc, "a mesh takes its triangles from a file or from triangle blocks, not both");
 		free(name);
 		return -1;
 	}
-	char *path = beside_source(item->kids[0]->loc, name);
+	char *path = beside_source(arg->loc, name);
 	free(name);
 	scene_mesh m;
 	int rc = mesh_io_load(path, &m, err, sizeof err);
 	if (rc)
-		eval_error(e, item->kids[0]->loc, "cannot load the mesh '%s': %s", path, err);
+		eval_error(e, arg->loc, "cannot load the mesh '%s': %s", path, err);
 	free(path);
 	if (rc)
 		return -1;
@@ -787,8 +805,8 @@ static int mesh(struct eval *e, const ast_node *b, value *out)
 			rc = mesh_triangle(e, item, &mb);
 		else if (item->kind == AST_ARG && item->kw == KW_INSIDE_VECTOR)
 			rc = inside_vector(e, item, &mb.m);
-		else if (item->kind == AST_ARG && item->kw == KW_MESH_FILE)
-			rc = mesh_file(e, item, &mb);
+		else if (is_file_word(item))
+			rc = mesh_file(e, &c, item, &mb);
 		else {
 			eval_unget(&c, item);
 			break;

@@ -139,7 +139,7 @@ int eval_not_valid(struct eval *e, const ast_node *item, const char *where)
 struct camera_items {
 	scene_camera c;
 	double sky[3], look_at[3], angle;
-	bool has_look_at;
+	bool has_look_at, has_up, has_right, has_angle;
 	xform t;
 };
 
@@ -149,8 +149,8 @@ static int camera_vector(struct eval *e, const ast_node *item, struct camera_ite
 	switch (item->kw) {
 	case KW_LOCATION: dst = ci->c.location; break;
 	case KW_DIRECTION: dst = ci->c.direction; break;
-	case KW_RIGHT: dst = ci->c.right; break;
-	case KW_UP: dst = ci->c.up; break;
+	case KW_RIGHT: dst = ci->c.right; ci->has_right = true; break;
+	case KW_UP: dst = ci->c.up; ci->has_up = true; break;
 	case KW_SKY: dst = ci->sky; break;
 	case KW_LOOK_AT: dst = ci->look_at; ci->has_look_at = true; break;
 	case KW_FOCAL_POINT: dst = ci->c.focal_point; break;
@@ -167,7 +167,8 @@ static int camera_float(struct eval *e, struct cursor *c, const ast_node *item, 
 	case KW_ANGLE:
 		if (eval_expect_float(e, item->kids[0], &ci->angle))
 			return -1;
-		if (ci->angle <= 0 || ci->angle >= 180) {
+		ci->has_angle = true;
+		if ((ci->angle <= 0 && !(ci->c.orthographic && ci->angle == 0)) || ci->angle >= 180) {
 			eval_error(e, item->kids[0]->loc, "camera angle must be between 0 and 180 degrees");
 			return -1;
 		}
@@ -207,9 +208,11 @@ static int camera_item(struct eval *e, struct cursor *c, const ast_node *item, s
 		eval_value_free(&v);
 		return 0;
 	}
-	if (item->kind == AST_FLAG && item->kw == KW_PERSPECTIVE)
+	if (item->kind == AST_FLAG && (item->kw == KW_PERSPECTIVE || item->kw == KW_ORTHOGRAPHIC)) {
+		ci->c.orthographic = item->kw == KW_ORTHOGRAPHIC;
 		return 0;
-	if (item->kind == AST_FLAG && (item->kw == KW_ORTHOGRAPHIC || item->kw == KW_FISHEYE ||
+	}
+	if (item->kind == AST_FLAG && (item->kw == KW_FISHEYE ||
 	    item->kw == KW_ULTRA_WIDE_ANGLE || item->kw == KW_OMNIMAX || item->kw == KW_PANORAMIC ||
 	    item->kw == KW_SPHERICAL)) {
 		eval_error(e, item->loc, "the %s camera is not supported yet", ast_keyword_name(item->kw));
@@ -224,8 +227,34 @@ static int camera_item(struct eval *e, struct cursor *c, const ast_node *item, s
 	return eval_not_valid(e, item, "a camera");
 }
 
+/* The orthographic camera without up and right, or with an angle, sees what the
+ * perspective camera would see in the plane of look_at: right and up grow by
+ * |look_at - location| / |direction| (POV-Ray 3.7's parse.cpp; its look_at is
+ * <0,0,1> when the camera does not say). */
+static void orthographic_area(struct camera_items *ci)
+{
+	scene_camera *c = &ci->c;
+	if (!c->orthographic || ((ci->has_up || ci->has_right) && !ci->has_angle))
+		return;
+	double at[3] = { 0, 0, 1 }, k1 = 0, k2 = 0;
+	if (ci->has_look_at)
+		memcpy(at, ci->look_at, sizeof at);
+	for (int k = 0; k < 3; k++) {
+		k1 += (at[k] - c->location[k]) * (at[k] - c->location[k]);
+		k2 += c->direction[k] * c->direction[k];
+	}
+	k1 = sqrt(k1);
+	k2 = sqrt(k2);
+	if (k1 <= 1e-10 || k2 <= 1e-10)
+		return;
+	for (int k = 0; k < 3; k++) {
+		c->right[k] *= k1 / k2;
+		c->up[k] *= k1 / k2;
+	}
+}
+
 /* POV-Ray 3.7's order, whatever the order in the file: the vectors, then angle,
- * then look_at, then the transformations. */
+ * then look_at, then the orthographic camera's area, then the transformations. */
 static int camera_finish(struct eval *e, const ast_node *b, struct camera_items *ci)
 {
 	scene_camera *c = &ci->c;
@@ -241,6 +270,7 @@ static int camera_finish(struct eval *e, const ast_node *b, struct camera_items 
 		eval_error(e, b->loc, "camera location and look_at point must be different");
 		return -1;
 	}
+	orthographic_area(ci);
 	scene_xform_point(&ci->t, c->location, c->location);
 	scene_xform_vector(&ci->t, c->direction, c->direction);
 	scene_xform_vector(&ci->t, c->right, c->right);
@@ -248,7 +278,7 @@ static int camera_finish(struct eval *e, const ast_node *b, struct camera_items 
 	return 0;
 }
 
-/* camera { [CAMERA_IDENTIFIER] [perspective] [location <L>] [direction <D>] [right <R>]
+/* camera { [CAMERA_IDENTIFIER] [perspective | orthographic] [location <L>] [direction <D>] [right <R>]
  *          [up <U>] [sky <S>] [angle A] [look_at <P>] [aperture F] [focal_point <P>]
  *          [blur_samples N] [TRANSFORMATIONS...] } */
 int eval_camera(struct eval *e, const ast_node *b, scene_camera *out)
@@ -673,6 +703,8 @@ int eval_block_value(struct eval *e, const ast_node *b, value *out)
 	case KW_UNKNOWN:
 		if (strcmp(b->str, "layers") == 0)
 			return eval_material_value(e, b, out);
+		if (strcmp(b->str, AST_WORD_SPLINE) == 0)
+			return eval_spline_value(e, b, out);
 		if (eval_pov_word(b->str)) {   /* declared, for a use eclat will refuse */
 			*out = (value){ .kind = V_OTHER, .str = eval_xstrdup(b->str) };
 			return 0;

@@ -569,7 +569,7 @@ static void lower_camera(const scene *s, dev_params *p)
 	double focal = 0;
 	for (int i = 0; i < 3; i++)
 		focal += (c->focal_point[i] - c->location[i]) * c->direction[i] / dl;
-	p->lens = (float4){ (float)c->aperture, (float)(focal > 0 ? focal : dl), 0, 0 };
+	p->lens = (float4){ (float)c->aperture, (float)(focal > 0 ? focal : dl), c->orthographic ? 1.0f : 0.0f, 0 };
 }
 
 /* The local-to-world map of an ellipsoid or instance, whose rows hold the inverse. */

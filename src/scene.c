@@ -502,6 +502,8 @@ void scene_dump(const scene *s, FILE *out)
 	vec(out, "direction", c->direction);
 	vec(out, "right", c->right);
 	vec(out, "up", c->up);
+	if (c->orthographic)
+		fputs(" orthographic", out);
 	if (c->aperture > 0) {
 		fnum(out, "aperture", c->aperture);
 		vec(out, "focal_point", c->focal_point);

@@ -111,6 +111,9 @@ typedef struct {
 	double focal_point[3];  /* default <0,0,0>: the focal plane passes through it */
 	int blur_samples;
 	src_loc loc;
+	/* POV-Ray's orthographic camera: rays parallel to direction, from location +
+	 * sx * right + sy * up */
+	bool orthographic;
 } scene_camera;
 
 typedef enum { LIGHT_POINT, LIGHT_SPOT, LIGHT_PARALLEL } scene_light_kind;

@@ -52,5 +52,9 @@ Which(9)
 #version 3.5;
 #debug concat("version ", str(version, 0, 2), "\n")
 #version 3.7;
+// 'file' is no keyword of POV-Ray's, so scenes use it as a name (eclat's mesh
+// file is a word only right inside a mesh)
+#declare file = 2;
+#debug concat("file = ", str(file + 1, 0, 0), "\n")
 camera { location <0, 0, -5> look_at 0 }
 sphere { 0, 1 pigment { rgb 1 } }
