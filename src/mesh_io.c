@@ -12,8 +12,32 @@
  * shared vertices (the BVH and smooth normals want them shared), and sort by
  * primitive type so that points and lines can be dropped. */
 #define IMPORT_FLAGS (aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | \
-                      aiProcess_PreTransformVertices | aiProcess_SortByPType | \
-                      aiProcess_ValidateDataStructure)
+                      aiProcess_PreTransformVertices | aiProcess_SortByPType)
+
+/* Debian's assimp is built with its internal asserts on, and a post-processing
+ * step that meets a face the loader left broken (a truncated PLY) aborts the whole
+ * program. So the file is read first with validation only, its faces are checked
+ * here, and the steps run only on a scene that passed. */
+static int check_faces(const struct aiScene *sc, char *err, size_t errlen)
+{
+	for (unsigned i = 0; i < sc->mNumMeshes; i++) {
+		const struct aiMesh *mesh = sc->mMeshes[i];
+		for (unsigned f = 0; f < mesh->mNumFaces; f++) {
+			const struct aiFace *face = &mesh->mFaces[f];
+			if (face->mNumIndices == 0 || !face->mIndices) {
+				snprintf(err, errlen, "face %u of mesh %u has no vertices (a truncated file?)", f, i);
+				return -1;
+			}
+			for (unsigned k = 0; k < face->mNumIndices; k++)
+				if (face->mIndices[k] >= mesh->mNumVertices) {
+					snprintf(err, errlen, "face %u of mesh %u uses vertex %u of %u (a corrupt file?)", f, i,
+					         face->mIndices[k], mesh->mNumVertices);
+					return -1;
+				}
+		}
+	}
+	return 0;
+}
 
 static int count(const struct aiScene *sc, unsigned *verts, unsigned *faces, int *normals)
 {
@@ -59,7 +83,13 @@ static void copy_mesh(const struct aiMesh *mesh, scene_mesh *m, int base)
 int mesh_io_load(const char *path, scene_mesh *m, char *err, size_t errlen)
 {
 	memset(m, 0, sizeof *m);
-	const struct aiScene *sc = aiImportFile(path, IMPORT_FLAGS);
+	const struct aiScene *sc = aiImportFile(path, aiProcess_ValidateDataStructure);
+	if (sc && check_faces(sc, err, errlen)) {
+		aiReleaseImport(sc);
+		return -1;
+	}
+	if (sc)
+		sc = aiApplyPostProcessing(sc, IMPORT_FLAGS);   /* releases the scene when a step fails */
 	if (!sc) {
 		snprintf(err, errlen, "%s", aiGetErrorString());
 		return -1;
