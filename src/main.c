@@ -494,15 +494,21 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	render_stats st;
 	int rc = 1;
 	catch_signals();
+	int ran = -1;   /* 1: failed after some passes, whose samples f holds */
 	if (device_open(&dev, o->device) == 0 &&
-	    (prog = device_build(&dev, o->kernel_dir, "-cl-std=CL1.2")) != NULL &&
-	    render_run(&dev, prog, &lr, &rs, &f, &st) == 0) {
-		if (!o->quiet)
+	    (prog = device_build(&dev, o->kernel_dir, "-cl-std=CL1.2")) != NULL)
+		ran = render_run(&dev, prog, &lr, &rs, &f, &st);
+	if (ran >= 0) {
+		if (!o->quiet && ran == 0)
 			summary(&rs, &st, &dev);
 		if (o->stats)
 			print_ray_stats(&st);
-		if (write_film(&f, &out) == 0 && write_aovs(o, &f) == 0)
-			rc = stop_signal ? 128 + stop_signal : 0;
+		int wrote = write_film(&f, &out) == 0 && write_aovs(o, &f) == 0;
+		if (wrote)
+			rc = ran ? 1 : stop_signal ? 128 + stop_signal : 0;
+		if (ran && wrote)
+			fprintf(stderr, "eclat: the render failed after %ld samples per pixel; '%s' holds those\n",
+			        st.samples, output);
 	}
 	film_free(&f);
 	if (prog)
