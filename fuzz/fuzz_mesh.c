@@ -60,7 +60,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	fclose(f);
 	scene_mesh m;
 	char err[512];
-	if (mesh_io_load(path, &m, err, sizeof err) == 0)
+	if (mesh_io_load_here(path, &m, err, sizeof err) == 0)
 		free_mesh(&m);
 	unlink(path);
 	return 0;

@@ -2,9 +2,13 @@
 #include <assimp/cimport.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "mesh_io.h"
 
@@ -80,7 +84,7 @@ static void copy_mesh(const struct aiMesh *mesh, scene_mesh *m, int base)
 	}
 }
 
-int mesh_io_load(const char *path, scene_mesh *m, char *err, size_t errlen)
+int mesh_io_load_here(const char *path, scene_mesh *m, char *err, size_t errlen)
 {
 	memset(m, 0, sizeof *m);
 	const struct aiScene *sc = aiImportFile(path, aiProcess_ValidateDataStructure);
@@ -130,4 +134,127 @@ int mesh_io_load(const char *path, scene_mesh *m, char *err, size_t errlen)
 	}
 	aiReleaseImport(sc);
 	return 0;
+}
+
+/* ---- the loader in a child process ----
+ * assimp crashes on some corrupt files (a fuzzed binary PLY makes it write out of
+ * bounds), and a crash in a library would take eclat down with it. So assimp runs
+ * in a child process that sends the triangles back through a pipe; a child that
+ * dies is an error that names the file, and eclat goes on. */
+
+static int write_all(int fd, const void *p, size_t n)
+{
+	for (const char *c = p; n > 0;) {
+		ssize_t k = write(fd, c, n);
+		if (k < 0 && errno == EINTR)
+			continue;
+		if (k <= 0)
+			return -1;
+		c += k;
+		n -= (size_t)k;
+	}
+	return 0;
+}
+
+static int read_all(int fd, void *p, size_t n)
+{
+	for (char *c = p; n > 0;) {
+		ssize_t k = read(fd, c, n);
+		if (k < 0 && errno == EINTR)
+			continue;
+		if (k <= 0)
+			return -1;
+		c += k;
+		n -= (size_t)k;
+	}
+	return 0;
+}
+
+static void child(int fd, const char *path)
+{
+	scene_mesh m;
+	char err[512] = "";
+	int rc = mesh_io_load_here(path, &m, err, sizeof err);
+	int head[4] = { rc, rc ? 0 : m.n_v, rc ? 0 : m.n_faces, !rc && m.nrm != NULL };
+	int bad = write_all(fd, head, sizeof head) ||
+	          (rc && write_all(fd, err, sizeof err)) ||
+	          (!rc && write_all(fd, m.v, (size_t)m.n_v * sizeof *m.v)) ||
+	          (!rc && m.nrm && write_all(fd, m.nrm, (size_t)m.n_v * sizeof *m.nrm)) ||
+	          (!rc && write_all(fd, m.face, (size_t)m.n_faces * sizeof *m.face));
+	_exit(bad ? 1 : 0);   /* no atexit handlers: they belong to the parent */
+}
+
+static int receive(int fd, scene_mesh *m, char *err, size_t errlen)
+{
+	int head[4];
+	if (read_all(fd, head, sizeof head))
+		return -2;
+	if (head[0]) {
+		char msg[512];
+		if (read_all(fd, msg, sizeof msg))
+			return -2;
+		msg[sizeof msg - 1] = '\0';
+		snprintf(err, errlen, "%s", msg);
+		return -1;
+	}
+	m->n_v = head[1];
+	m->n_faces = head[2];
+	m->v = malloc((size_t)m->n_v * sizeof *m->v + 1);
+	m->face = malloc((size_t)m->n_faces * sizeof *m->face + 1);
+	m->nrm = head[3] ? malloc((size_t)m->n_v * sizeof *m->nrm + 1) : NULL;
+	m->face_nrm = head[3] ? malloc((size_t)m->n_faces * sizeof *m->face_nrm + 1) : NULL;
+	if (!m->v || !m->face || (head[3] && (!m->nrm || !m->face_nrm)) ||
+	    read_all(fd, m->v, (size_t)m->n_v * sizeof *m->v) ||
+	    (m->nrm && read_all(fd, m->nrm, (size_t)m->n_v * sizeof *m->nrm)) ||
+	    read_all(fd, m->face, (size_t)m->n_faces * sizeof *m->face))
+		return -2;
+	if (m->nrm) {   /* normals share the vertices' indices */
+		m->n_nrm = m->n_v;
+		memcpy(m->face_nrm, m->face, (size_t)m->n_faces * sizeof *m->face);
+	}
+	return 0;
+}
+
+int mesh_io_load(const char *path, scene_mesh *m, char *err, size_t errlen)
+{
+	memset(m, 0, sizeof *m);
+	int fd[2];
+	if (pipe(fd)) {
+		snprintf(err, errlen, "cannot start the mesh loader: %s", strerror(errno));
+		return -1;
+	}
+	fflush(NULL);   /* what is buffered is printed once, by the parent */
+	pid_t pid = fork();
+	if (pid < 0) {
+		snprintf(err, errlen, "cannot start the mesh loader: %s", strerror(errno));
+		close(fd[0]);
+		close(fd[1]);
+		return -1;
+	}
+	if (pid == 0) {
+		close(fd[0]);
+		child(fd[1], path);
+	}
+	close(fd[1]);
+	int rc = receive(fd[0], m, err, errlen);
+	close(fd[0]);
+	int status = 0;
+	while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+		;
+	/* all that was sent arrived: the child's exit status (a tool's at exit,
+	 * under valgrind) does not matter then */
+	if (rc == -2) {
+		free(m->v);
+		free(m->nrm);
+		free(m->face);
+		free(m->face_nrm);
+		memset(m, 0, sizeof *m);
+		if (WIFSIGNALED(status))
+			snprintf(err, errlen, "the file is corrupt: assimp crashed reading it (%s)",
+			         strsignal(WTERMSIG(status)));
+		else
+			snprintf(err, errlen, "the file is corrupt: assimp stopped reading it");
+		return -1;
+	}
+	return rc;
 }

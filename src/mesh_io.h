@@ -13,4 +13,9 @@
  * reason (or ours) in err. m's arrays are the caller's (scene_add_mesh takes them). */
 int mesh_io_load(const char *path, scene_mesh *m, char *err, size_t errlen);
 
+/* The same, in this process (mesh_io_load runs it in a child process, so that
+ * assimp crashing on a corrupt file is an error, not the end of eclat). For the
+ * fuzzer, which must see the loader's coverage. */
+int mesh_io_load_here(const char *path, scene_mesh *m, char *err, size_t errlen);
+
 #endif
