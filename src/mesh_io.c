@@ -172,6 +172,11 @@ static int read_all(int fd, void *p, size_t n)
 
 static void child(int fd, const char *path)
 {
+	/* a crash ends the child at once, whatever handlers the parent has (a
+	 * sanitizer's or a fuzzer's would take long to report on a library) */
+	static const int fatal[] = { SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL };
+	for (size_t i = 0; i < sizeof fatal / sizeof *fatal; i++)
+		signal(fatal[i], SIG_DFL);
 	scene_mesh m;
 	char err[512] = "";
 	int rc = mesh_io_load_here(path, &m, err, sizeof err);

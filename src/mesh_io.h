@@ -14,8 +14,7 @@
 int mesh_io_load(const char *path, scene_mesh *m, char *err, size_t errlen);
 
 /* The same, in this process (mesh_io_load runs it in a child process, so that
- * assimp crashing on a corrupt file is an error, not the end of eclat). For the
- * fuzzer, which must see the loader's coverage. */
+ * assimp crashing on a corrupt file is an error, not the end of eclat). */
 int mesh_io_load_here(const char *path, scene_mesh *m, char *err, size_t errlen);
 
 #endif
