@@ -117,7 +117,7 @@ items:
 	| items item                  { $$ = ast_append($1, CHECK_DEPTH($2)); }
 	| items ','                   { $$ = $1; /* commas between arguments are optional in POV-Ray */ }
 	| items ';'                   { $$ = $1; /* the end of a #declare, maybe given by a macro */ }
-	| items error                 { $$ = $1; if (ctx->errors >= PARSE_MAX_ERRORS) YYABORT; }
+	| items error                 { $$ = parse_give_up(ctx, $1); if (!$$) YYABORT; }
 	;
 
 item:
@@ -258,7 +258,7 @@ switch_items:
 	| switch_items item           { $$ = ast_append($1, CHECK_DEPTH($2)); }
 	| switch_items ','            { $$ = $1; }
 	| switch_items ';'            { $$ = $1; }
-	| switch_items error          { $$ = $1; if (ctx->errors >= PARSE_MAX_ERRORS) YYABORT; }
+	| switch_items error          { $$ = parse_give_up(ctx, $1); if (!$$) YYABORT; }
 	| switch_items D_CASE '(' expr ')'
 	                              { $$ = ast_append($1, ast_op(AST_CASE, L(@2), 0, $4, NULL)); }
 	| switch_items D_RANGE '(' expr ',' expr ')'

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 struct source {
 	char *name;
@@ -113,11 +114,26 @@ char *diag_read_file(const char *path, size_t *len)
 	FILE *f = fopen(path, "rb");
 	if (!f)
 		return NULL;
+	struct stat st = { 0 };
+	int regular = fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode);
+	if (!regular && S_ISDIR(st.st_mode)) {
+		fclose(f);
+		errno = EISDIR;
+		return NULL;
+	}
+	/* a device or a pipe may never end: it gets less room than a real file */
+	size_t max = regular ? DIAG_MAX_FILE : DIAG_MAX_FILE / 16;
 	size_t cap = 1 << 16, n = 0;
 	char *buf = malloc(cap + 1);
 	size_t got;
 	while (buf && (got = fread(buf + n, 1, cap - n, f)) > 0) {
 		n += got;
+		if (n >= max) {   /* /dev/zero, or a file no scene is */
+			free(buf);
+			fclose(f);
+			errno = EFBIG;
+			return NULL;
+		}
 		if (n == cap) {
 			char *b = realloc(buf, 2 * cap + 1);
 			if (!b) {
@@ -149,4 +165,5 @@ void diag_free_all(void)
 	free(sources);
 	sources = NULL;
 	n_sources = 0;
+	n_errors = 0;   /* a fresh start, for a program (a fuzzer) that reads many scenes */
 }

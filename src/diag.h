@@ -33,7 +33,10 @@ void diag_note(src_loc loc, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));
 int diag_error_count(void);
 
-/* Reads a whole file into a NUL-terminated buffer; NULL with errno set on failure. */
+/* Reads a whole file into a NUL-terminated buffer; NULL with errno set on failure
+ * (EISDIR for a folder, EFBIG past DIAG_MAX_FILE bytes, or a 16th of that from a
+ * device or a pipe, such as /dev/zero). */
+#define DIAG_MAX_FILE ((size_t)1 << 30)
 char *diag_read_file(const char *path, size_t *len);
 void diag_free_all(void);
 

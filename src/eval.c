@@ -68,6 +68,14 @@ void eval_error(struct eval *e, src_loc loc, const char *fmt, ...)
 	diag_error(loc, "%s", msg);
 	context_notes(e);
 	check_error_limit(e);
+	/* The same place again: a loop or a recursion repeating its error; the
+	 * rest would be copies of it. */
+	src_loc *last = &e->last_error;
+	if (loc.file == last->file && loc.line == last->line && loc.col == last->col && !e->stop) {
+		e->stop = true;
+		diag_note(SRC_NOWHERE, "stopped at the second error in the same place");
+	}
+	*last = loc;
 }
 
 void eval_warning(struct eval *e, src_loc loc, const char *fmt, ...)
@@ -385,10 +393,11 @@ static int condition(struct eval *e, const ast_node *n)
 
 static bool loop_limit(struct eval *e, struct frame *f)
 {
-	if (++f->count < EVAL_MAX_LOOP)
+	long max = e->opt->max_loop_iterations > 0 ? e->opt->max_loop_iterations : EVAL_DEFAULT_LOOP_ITERATIONS;
+	if (++f->count < max)
 		return false;
-	eval_error(e, f->node->loc, "#%s loop stopped after %d iterations (a loop that never ends?)",
-	           f->kind == FR_WHILE ? "while" : "for", EVAL_MAX_LOOP);
+	eval_error(e, f->node->loc, "#%s loop stopped after %ld iterations (a loop that never ends? "
+	           "--max-loop-iterations raises the limit)", f->kind == FR_WHILE ? "while" : "for", max);
 	return true;
 }
 
@@ -579,9 +588,10 @@ static struct scope *bind_args(struct eval *e, const ast_node *call, const ast_n
 static bool enter_macro(struct cursor *c, const ast_node *call, const value *macro)
 {
 	struct eval *e = c->e;
-	if (e->macro_depth >= EVAL_MAX_MACRO_DEPTH) {
-		eval_error(e, call->loc, "macro '%s' called more than %d levels deep (a recursion that never ends?)",
-		           call->str, EVAL_MAX_MACRO_DEPTH);
+	int max = e->opt->max_macro_depth > 0 ? e->opt->max_macro_depth : EVAL_DEFAULT_MACRO_DEPTH;
+	if (e->macro_depth >= max) {
+		eval_error(e, call->loc, "macro '%s' called more than %d levels deep (a recursion that never ends? "
+		           "--max-macro-depth raises the limit)", call->str, max);
 		return false;
 	}
 	const ast_node *def = macro->node;   /* the arguments may redeclare the macro */
@@ -779,8 +789,10 @@ static void run_include(struct cursor *c, const ast_node *inc)
 	char *name;
 	if (eval_expect_string(e, inc->kids[0], &name))
 		return;
-	if (e->include_depth >= EVAL_MAX_INCLUDE_DEPTH) {
-		eval_error(e, inc->loc, "#include nested more than %d deep (an include cycle?)", EVAL_MAX_INCLUDE_DEPTH);
+	int max = e->opt->max_include_depth > 0 ? e->opt->max_include_depth : EVAL_DEFAULT_INCLUDE_DEPTH;
+	if (e->include_depth >= max) {
+		eval_error(e, inc->loc, "#include nested more than %d deep (an include cycle? "
+		           "--max-include-depth raises the limit)", max);
 		free(name);
 		return;
 	}

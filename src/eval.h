@@ -29,7 +29,19 @@ typedef struct {
 	/* image_width and image_height in the scene; 0 means 640 by 480. */
 	int image_width, image_height;
 	double clock;                /* clock in the scene; default 0 */
+	/* Limits that stop a runaway scene with a clear error instead of a hang or a
+	 * crash (--max-include-depth, --max-macro-depth, --max-loop-iterations);
+	 * 0 means the EVAL_DEFAULT_ value. */
+	int max_include_depth, max_macro_depth;
+	long max_loop_iterations;
 } eval_options;
+
+#define EVAL_DEFAULT_INCLUDE_DEPTH 64
+#define EVAL_DEFAULT_MACRO_DEPTH 256
+#define EVAL_DEFAULT_LOOP_ITERATIONS 1000000L
+/* The highest --max-macro-depth: each level is a few C stack frames (see
+ * MAX_EXPR_DEPTH in eval_expr.c, which bounds them too). */
+#define EVAL_MAX_MACRO_DEPTH_LIMIT 1000
 
 eval_options eval_options_default(void);
 

@@ -11,6 +11,7 @@
 
 #define EPSILON 1e-10      /* POV-Ray's, for = and the truth of a float */
 #define MAX_EXPR_DEPTH 2000
+#define MAX_STRING (1 << 24)
 
 static int expr(struct eval *e, const ast_node *n, value *out);
 
@@ -750,6 +751,12 @@ static int concat_fn(struct eval *e, const ast_node *n, char **out)
 			return -1;
 		}
 		size_t k = strlen(a);
+		if (len + k > MAX_STRING) {   /* a doubling loop would eat the memory first */
+			eval_error(e, n->loc, "concat() would make a string of more than %d characters", MAX_STRING);
+			free(a);
+			free(s);
+			return -1;
+		}
 		s = eval_xrealloc(s, len + k + 1);
 		memcpy(s + len, a, k + 1);
 		len += k;

@@ -93,9 +93,6 @@ struct context {
 };
 
 #define EVAL_MAX_CONTEXT 300
-#define EVAL_MAX_LOOP 1000000
-#define EVAL_MAX_MACRO_DEPTH 256
-#define EVAL_MAX_INCLUDE_DEPTH 64
 #define EVAL_MAX_ERRORS 20
 
 struct rng {
@@ -112,6 +109,7 @@ struct eval {
 	int n_ctx;
 	int macro_depth, include_depth;
 	bool stop;               /* #error, or too many errors: evaluate nothing more */
+	src_loc last_error;      /* a second error there stops too (a loop repeating it) */
 	int errors_at_start;
 	scene_material default_mat;  /* #default */
 	double version;

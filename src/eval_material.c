@@ -478,6 +478,7 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 		double c[5];
 		for (int k = 0; k < 5; k++)
 			c[k] = v.mat.pigment[k];
+		eval_value_free(&v);   /* its pattern's name, when it has one */
 		list_add(p, c);
 		return 0;
 	}
@@ -776,6 +777,7 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 		double c[5];
 		for (int k = 0; k < 5; k++)
 			c[k] = v.mat.pigment[k];
+		eval_value_free(&v);   /* its pattern's name, when it has one */
 		list_add(p, c);
 		return 0;
 	}

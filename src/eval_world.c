@@ -266,11 +266,15 @@ static int camera_finish(struct eval *e, const ast_node *b, struct camera_items 
 		for (int k = 0; k < 3 && dl > 0; k++)
 			c->direction[k] *= want / dl;
 	}
-	if (ci->has_look_at && scene_camera_look_at(c, ci->look_at, ci->sky) != 0) {
+	int look = ci->has_look_at ? scene_camera_look_at(c, ci->look_at, ci->sky) : 0;
+	if (look < 0) {
 		eval_error(e, b->loc, "camera location and look_at point must be different");
 		return -1;
 	}
 	orthographic_area(ci);
+	if (look > 0)
+		eval_warning(e, b->loc, "the camera looks along its sky vector; keeping the right vector, as POV-Ray "
+		             "does (give another sky)");
 	scene_xform_point(&ci->t, c->location, c->location);
 	scene_xform_vector(&ci->t, c->direction, c->direction);
 	scene_xform_vector(&ci->t, c->right, c->right);

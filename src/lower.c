@@ -285,8 +285,8 @@ static int lower_sphere(struct lowering *lw, const scene_object *o, int mat, int
 	unit = scene_xform_then(&unit, &move);
 	to_world = scene_xform_then(&unit, &o->xf);
 	if (invert(&to_world, &to_unit)) {
-		diag_error(o->loc, "the sphere's transform is singular (a scale of 0?)");
-		return -1;
+		diag_warning(o->loc, "sphere with a singular transform (a scale of 0?) skipped");
+		return 0;
 	}
 	dev_prim p = { .type = PRIM_ELLIPSOID };
 	float4 *rows[3] = { &p.a, &p.b, &p.c };
@@ -333,9 +333,13 @@ static int lower_plane(struct lowering *lw, const scene_object *o, int mat, int 
 {
 	double n[3] = { o->p[0][0], o->p[0][1], o->p[0][2] }, len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 	xform inv;
-	if (len == 0 || invert(&o->xf, &inv)) {
-		diag_error(o->loc, len == 0 ? "a plane needs a normal that is not zero" : "the plane's transform is singular");
+	if (len == 0) {
+		diag_error(o->loc, "a plane needs a normal that is not zero");
 		return -1;
+	}
+	if (invert(&o->xf, &inv)) {
+		diag_warning(o->loc, "plane with a singular transform (a scale of 0?) skipped");
+		return 0;
 	}
 	double p0[3] = { n[0] / len * o->radius, n[1] / len * o->radius, n[2] / len * o->radius }, w[3], wn[3];
 	scene_xform_point(&o->xf, p0, w);
@@ -398,7 +402,7 @@ static int lower_mesh_once(struct lowering *lw, const scene *s, int index)
 {
 	struct lowered_mesh *lm = &lw->meshes[index];
 	if (lm->done)
-		return lm->done < 0 ? -1 : 0;
+		return lm->done == -2 ? 1 : lm->done < 0 ? -1 : 0;
 	const scene_mesh *m = &s->meshes[index];
 	int first_mat = lw->n_mats, normals_before = lw->n_normals;
 	for (int i = 0; i < m->n_mats; i++)
@@ -415,11 +419,13 @@ static int lower_mesh_once(struct lowering *lw, const scene *s, int index)
 		add_triangle_to(lw, &lm->prims, v, smooth ? (const double (*)[3])n : NULL, fm, f, m->loc);
 	}
 	lm->stats = (lower_bvh_stats){ .mesh = index, .loc = m->loc };
-	if (lm->prims.n == 0 || build_tree(lw, &lm->prims, &lm->bvh, &lm->stats)) {
-		if (lm->prims.n == 0)
-			diag_error(m->loc, "the mesh has no triangle with an area");
-		else
-			fprintf(stderr, "eclat: out of memory building a mesh's BVH\n");
+	if (lm->prims.n == 0) {   /* degenerate geometry: warn and skip, as for a triangle */
+		diag_warning(m->loc, "mesh with no triangle with an area skipped");
+		lm->done = -2;
+		return 1;
+	}
+	if (build_tree(lw, &lm->prims, &lm->bvh, &lm->stats)) {
+		fprintf(stderr, "eclat: out of memory building a mesh's BVH\n");
 		lm->done = -1;
 		return -1;
 	}
@@ -435,12 +441,13 @@ static int lower_mesh_once(struct lowering *lw, const scene *s, int index)
  * link holds the mesh's index until the node arrays are joined. */
 static int lower_instance(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id)
 {
-	if (lower_mesh_once(lw, s, o->mesh))
-		return -1;
+	int once = lower_mesh_once(lw, s, o->mesh);
+	if (once)
+		return once < 0 ? -1 : 0;
 	xform to_mesh;
 	if (invert(&o->xf, &to_mesh)) {
-		diag_error(o->loc, "the mesh's transform is singular (a scale of 0?)");
-		return -1;
+		diag_warning(o->loc, "mesh with a singular transform (a scale of 0?) skipped");
+		return 0;
 	}
 	dev_prim p = { .type = PRIM_INSTANCE, .material = mat, .object = id, .link = o->mesh };
 	float4 *rows[3] = { &p.a, &p.b, &p.c };
@@ -457,8 +464,8 @@ static int lower_smooth_triangle(struct lowering *lw, const scene_object *o, int
 	xform inv;
 	double v[3][3], n[3][3];
 	if (invert(&o->xf, &inv)) {
-		diag_error(o->loc, "the triangle's transform is singular");
-		return -1;
+		diag_warning(o->loc, "smooth_triangle with a singular transform (a scale of 0?) skipped");
+		return 0;
 	}
 	for (int i = 0; i < 3; i++) {
 		scene_xform_point(&o->xf, o->p[i], v[i]);
@@ -663,7 +670,8 @@ static int join(struct lowering *lw, const scene *s, lower_result *out)
 	out->prims = xmalloc(n_prims * sizeof *out->prims);
 	memcpy(out->nodes, top.nodes, top.n_nodes * sizeof *top.nodes);
 	memcpy(out->prims, lw->top.p, lw->top.n * sizeof *lw->top.p);
-	memcpy(out->prims + lw->top.n, lw->planes.p, lw->planes.n * sizeof *lw->planes.p);
+	if (lw->planes.n)   /* no planes: planes.p is NULL, which memcpy must not get */
+		memcpy(out->prims + lw->top.n, lw->planes.p, lw->planes.n * sizeof *lw->planes.p);
 	for (int m = 0; m < s->n_meshes; m++) {
 		struct lowered_mesh *lm = &lw->meshes[m];
 		if (lm->done <= 0)

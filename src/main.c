@@ -40,10 +40,13 @@ struct options {
 	int n_include_dirs, n_declares;
 	const char *aov_name[MAX_AOVS], *aov_file[MAX_AOVS];
 	int n_aovs;
+	int max_include_depth, max_macro_depth;   /* 0: the evaluator's defaults */
+	long max_loop_iterations;
 };
 
 enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_DIR,
-       OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_BVH_LAYOUT, OPT_STATS, OPT_SKIP_UNSUPPORTED, OPT_EXPORT_MESH2 };
+       OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_BVH_LAYOUT, OPT_STATS, OPT_SKIP_UNSUPPORTED, OPT_EXPORT_MESH2,
+       OPT_MAX_INCLUDE_DEPTH, OPT_MAX_MACRO_DEPTH, OPT_MAX_LOOP_ITERATIONS };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -63,6 +66,9 @@ static const struct option long_options[] = {
 	{ "declare", required_argument, NULL, 'D' },
 	{ "skip-unsupported", no_argument, NULL, OPT_SKIP_UNSUPPORTED },
 	{ "export-mesh2", required_argument, NULL, OPT_EXPORT_MESH2 },
+	{ "max-include-depth", required_argument, NULL, OPT_MAX_INCLUDE_DEPTH },
+	{ "max-macro-depth", required_argument, NULL, OPT_MAX_MACRO_DEPTH },
+	{ "max-loop-iterations", required_argument, NULL, OPT_MAX_LOOP_ITERATIONS },
 	{ "device", required_argument, NULL, OPT_DEVICE },
 	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
 	{ "kernel-dir", required_argument, NULL, OPT_KERNEL_DIR },
@@ -110,6 +116,9 @@ static void usage(FILE *out)
 		"      --skip-unsupported  leave out objects eclat cannot render, with a warning\n"
 		"      --export-mesh2 FILE  write the mesh file FILE (any format assimp reads) as a\n"
 		"                        POV-Ray mesh2 include, to -o or standard output, and exit\n"
+		"      --max-include-depth N  #include files nested at most N deep (default %d)\n"
+		"      --max-macro-depth N  macro calls nested at most N deep (default %d, at most %d)\n"
+		"      --max-loop-iterations N  stop a #while or #for after N turns (default %ld)\n"
 		"      --check           check the scene for errors and warnings, render nothing\n"
 		"      --dump-ast        print the syntax tree and exit\n"
 		"      --dump-scene      print the evaluated scene in world space and exit\n"
@@ -120,7 +129,8 @@ static void usage(FILE *out)
 		"POV-Ray's +WN +HN +OFILE +IFILE switches and Declare=NAME=VALUE work too. Ctrl-C finishes the pass\n"
 		"under way and writes the image rendered so far.\n"
 		"The scene language is described in eclat-scene(5), the options in eclat(1).\n",
-		DEFAULT_WIDTH, DEFAULT_HEIGHT, DEFAULT_SAMPLES, DEFAULT_MAX_DEPTH);
+		DEFAULT_WIDTH, DEFAULT_HEIGHT, DEFAULT_SAMPLES, DEFAULT_MAX_DEPTH, EVAL_DEFAULT_INCLUDE_DEPTH,
+		EVAL_DEFAULT_MACRO_DEPTH, EVAL_MAX_MACRO_DEPTH_LIMIT, EVAL_DEFAULT_LOOP_ITERATIONS);
 }
 
 /* A whole number in [lo, hi], or exit 1 naming the option. */
@@ -278,6 +288,13 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case 'D': list_arg("-D", o->declares, &o->n_declares, optarg); break;
 		case OPT_SKIP_UNSUPPORTED: o->skip_unsupported = 1; break;
 		case OPT_EXPORT_MESH2: o->export_mesh2 = optarg; break;
+		case OPT_MAX_INCLUDE_DEPTH: o->max_include_depth = int_arg("--max-include-depth", optarg, 1, 1000); break;
+		case OPT_MAX_MACRO_DEPTH:
+			o->max_macro_depth = int_arg("--max-macro-depth", optarg, 1, EVAL_MAX_MACRO_DEPTH_LIMIT);
+			break;
+		case OPT_MAX_LOOP_ITERATIONS:
+			o->max_loop_iterations = int_arg("--max-loop-iterations", optarg, 1, INT_MAX);
+			break;
 		case OPT_LIST_DEVICES: o->list_devices = 1; break;
 		case OPT_KERNEL_DIR: o->kernel_dir = optarg; break;
 		case OPT_CHECK: o->check = 1; break;
@@ -470,6 +487,15 @@ static void print_ray_stats(const render_stats *st)
 	        ? (double)tests / st->counts[COUNT_RAYS + RAY_CAMERA] : 0);
 }
 
+/* POV-Ray lights such a scene with its ambient term; a path tracer sees black. */
+static void warn_if_dark(const struct options *o, const scene *s, const lower_result *lr)
+{
+	const float *bg = s->has_sky ? s->sky : s->background;
+	if (lr->n_lights == 0 && lr->n_emitters == 0 && bg[0] <= 0 && bg[1] <= 0 && bg[2] <= 0)
+		diag_warning(SRC_NOWHERE, "'%s' has no light_source, no emission and a black background: "
+		             "the image will be black", o->scene);
+}
+
 static int render_scene(const struct options *o, const scene *s, const char *output)
 {
 	lower_result lr;
@@ -482,6 +508,7 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		lower_free(&lr);
 		return rc;
 	}
+	warn_if_dark(o, s, &lr);   /* only when there is an image to warn about */
 	struct output out = { output, o->scene };
 	int whitted = o->integrator == INTEGRATOR_WHITTED;   /* deterministic: one sample is the image */
 	render_settings rs = {
@@ -499,15 +526,21 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	render_stats st;
 	int rc = 1;
 	catch_signals();
+	int ran = -1;   /* 1: failed after some passes, whose samples f holds */
 	if (device_open(&dev, o->device) == 0 &&
-	    (prog = device_build(&dev, o->kernel_dir, lower_kernel_options(&lr))) != NULL &&
-	    render_run(&dev, prog, &lr, &rs, &f, &st) == 0) {
-		if (!o->quiet)
+	    (prog = device_build(&dev, o->kernel_dir, lower_kernel_options(&lr))) != NULL)
+		ran = render_run(&dev, prog, &lr, &rs, &f, &st);
+	if (ran >= 0) {
+		if (!o->quiet && ran == 0)
 			summary(&rs, &st, &dev);
 		if (o->stats)
 			print_ray_stats(&st);
-		if (write_film(&f, &out) == 0 && write_aovs(o, &f) == 0)
-			rc = stop_signal ? 128 + stop_signal : 0;
+		int wrote = write_film(&f, &out) == 0 && write_aovs(o, &f) == 0;
+		if (wrote)
+			rc = ran ? 1 : stop_signal ? 128 + stop_signal : 0;
+		if (ran && wrote)
+			fprintf(stderr, "eclat: the render failed after %ld samples per pixel; '%s' holds those\n",
+			        st.samples, output);
 	}
 	film_free(&f);
 	if (prog)
@@ -586,6 +619,9 @@ int main(int argc, char **argv)
 	eopt.declares = o.declares;
 	eopt.n_declares = o.n_declares;
 	eopt.skip_unsupported = o.skip_unsupported;
+	eopt.max_include_depth = o.max_include_depth;
+	eopt.max_macro_depth = o.max_macro_depth;
+	eopt.max_loop_iterations = o.max_loop_iterations;
 	eopt.image_width = o.width;
 	eopt.image_height = o.height;
 	ast_node *tree = parse_file(o.scene, SRC_NOWHERE);

@@ -2,9 +2,13 @@
 #include <assimp/cimport.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "mesh_io.h"
 
@@ -12,8 +16,32 @@
  * shared vertices (the BVH and smooth normals want them shared), and sort by
  * primitive type so that points and lines can be dropped. */
 #define IMPORT_FLAGS (aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | \
-                      aiProcess_PreTransformVertices | aiProcess_SortByPType | \
-                      aiProcess_ValidateDataStructure)
+                      aiProcess_PreTransformVertices | aiProcess_SortByPType)
+
+/* Debian's assimp is built with its internal asserts on, and a post-processing
+ * step that meets a face the loader left broken (a truncated PLY) aborts the whole
+ * program. So the file is read first with validation only, its faces are checked
+ * here, and the steps run only on a scene that passed. */
+static int check_faces(const struct aiScene *sc, char *err, size_t errlen)
+{
+	for (unsigned i = 0; i < sc->mNumMeshes; i++) {
+		const struct aiMesh *mesh = sc->mMeshes[i];
+		for (unsigned f = 0; f < mesh->mNumFaces; f++) {
+			const struct aiFace *face = &mesh->mFaces[f];
+			if (face->mNumIndices == 0 || !face->mIndices) {
+				snprintf(err, errlen, "face %u of mesh %u has no vertices (a truncated file?)", f, i);
+				return -1;
+			}
+			for (unsigned k = 0; k < face->mNumIndices; k++)
+				if (face->mIndices[k] >= mesh->mNumVertices) {
+					snprintf(err, errlen, "face %u of mesh %u uses vertex %u of %u (a corrupt file?)", f, i,
+					         face->mIndices[k], mesh->mNumVertices);
+					return -1;
+				}
+		}
+	}
+	return 0;
+}
 
 static int count(const struct aiScene *sc, unsigned *verts, unsigned *faces, int *normals)
 {
@@ -56,10 +84,16 @@ static void copy_mesh(const struct aiMesh *mesh, scene_mesh *m, int base)
 	}
 }
 
-int mesh_io_load(const char *path, scene_mesh *m, char *err, size_t errlen)
+int mesh_io_load_here(const char *path, scene_mesh *m, char *err, size_t errlen)
 {
 	memset(m, 0, sizeof *m);
-	const struct aiScene *sc = aiImportFile(path, IMPORT_FLAGS);
+	const struct aiScene *sc = aiImportFile(path, aiProcess_ValidateDataStructure);
+	if (sc && check_faces(sc, err, errlen)) {
+		aiReleaseImport(sc);
+		return -1;
+	}
+	if (sc)
+		sc = aiApplyPostProcessing(sc, IMPORT_FLAGS);   /* releases the scene when a step fails */
 	if (!sc) {
 		snprintf(err, errlen, "%s", aiGetErrorString());
 		return -1;
@@ -125,4 +159,132 @@ int mesh_io_write_mesh2(const scene_mesh *m, const char *name, const char *sourc
 		fprintf(out, ",%s<%d, %d, %d>", f % 6 ? " " : "\n    ", m->face[f][0], m->face[f][1], m->face[f][2]);
 	fprintf(out, "\n  }\n}\n");
 	return ferror(out) ? -1 : 0;
+}
+
+/* ---- the loader in a child process ----
+ * assimp crashes on some corrupt files (a fuzzed binary PLY makes it write out of
+ * bounds), and a crash in a library would take eclat down with it. So assimp runs
+ * in a child process that sends the triangles back through a pipe; a child that
+ * dies is an error that names the file, and eclat goes on. */
+
+static int write_all(int fd, const void *p, size_t n)
+{
+	for (const char *c = p; n > 0;) {
+		ssize_t k = write(fd, c, n);
+		if (k < 0 && errno == EINTR)
+			continue;
+		if (k <= 0)
+			return -1;
+		c += k;
+		n -= (size_t)k;
+	}
+	return 0;
+}
+
+static int read_all(int fd, void *p, size_t n)
+{
+	for (char *c = p; n > 0;) {
+		ssize_t k = read(fd, c, n);
+		if (k < 0 && errno == EINTR)
+			continue;
+		if (k <= 0)
+			return -1;
+		c += k;
+		n -= (size_t)k;
+	}
+	return 0;
+}
+
+static void child(int fd, const char *path)
+{
+	/* a crash ends the child at once, whatever handlers the parent has (a
+	 * sanitizer's or a fuzzer's would take long to report on a library) */
+	static const int fatal[] = { SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL };
+	for (size_t i = 0; i < sizeof fatal / sizeof *fatal; i++)
+		signal(fatal[i], SIG_DFL);
+	scene_mesh m;
+	char err[512] = "";
+	int rc = mesh_io_load_here(path, &m, err, sizeof err);
+	int head[4] = { rc, rc ? 0 : m.n_v, rc ? 0 : m.n_faces, !rc && m.nrm != NULL };
+	int bad = write_all(fd, head, sizeof head) ||
+	          (rc && write_all(fd, err, sizeof err)) ||
+	          (!rc && write_all(fd, m.v, (size_t)m.n_v * sizeof *m.v)) ||
+	          (!rc && m.nrm && write_all(fd, m.nrm, (size_t)m.n_v * sizeof *m.nrm)) ||
+	          (!rc && write_all(fd, m.face, (size_t)m.n_faces * sizeof *m.face));
+	_exit(bad ? 1 : 0);   /* no atexit handlers: they belong to the parent */
+}
+
+static int receive(int fd, scene_mesh *m, char *err, size_t errlen)
+{
+	int head[4];
+	if (read_all(fd, head, sizeof head))
+		return -2;
+	if (head[0]) {
+		char msg[512];
+		if (read_all(fd, msg, sizeof msg))
+			return -2;
+		msg[sizeof msg - 1] = '\0';
+		snprintf(err, errlen, "%s", msg);
+		return -1;
+	}
+	m->n_v = head[1];
+	m->n_faces = head[2];
+	m->v = malloc((size_t)m->n_v * sizeof *m->v + 1);
+	m->face = malloc((size_t)m->n_faces * sizeof *m->face + 1);
+	m->nrm = head[3] ? malloc((size_t)m->n_v * sizeof *m->nrm + 1) : NULL;
+	m->face_nrm = head[3] ? malloc((size_t)m->n_faces * sizeof *m->face_nrm + 1) : NULL;
+	if (!m->v || !m->face || (head[3] && (!m->nrm || !m->face_nrm)) ||
+	    read_all(fd, m->v, (size_t)m->n_v * sizeof *m->v) ||
+	    (m->nrm && read_all(fd, m->nrm, (size_t)m->n_v * sizeof *m->nrm)) ||
+	    read_all(fd, m->face, (size_t)m->n_faces * sizeof *m->face))
+		return -2;
+	if (m->nrm) {   /* normals share the vertices' indices */
+		m->n_nrm = m->n_v;
+		memcpy(m->face_nrm, m->face, (size_t)m->n_faces * sizeof *m->face);
+	}
+	return 0;
+}
+
+int mesh_io_load(const char *path, scene_mesh *m, char *err, size_t errlen)
+{
+	memset(m, 0, sizeof *m);
+	int fd[2];
+	if (pipe(fd)) {
+		snprintf(err, errlen, "cannot start the mesh loader: %s", strerror(errno));
+		return -1;
+	}
+	fflush(NULL);   /* what is buffered is printed once, by the parent */
+	pid_t pid = fork();
+	if (pid < 0) {
+		snprintf(err, errlen, "cannot start the mesh loader: %s", strerror(errno));
+		close(fd[0]);
+		close(fd[1]);
+		return -1;
+	}
+	if (pid == 0) {
+		close(fd[0]);
+		child(fd[1], path);
+	}
+	close(fd[1]);
+	int rc = receive(fd[0], m, err, errlen);
+	close(fd[0]);
+	int status = 0;
+	while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+		;
+	/* all that was sent arrived: the child's exit status (a tool's at exit,
+	 * under valgrind) does not matter then */
+	if (rc == -2) {
+		free(m->v);
+		free(m->nrm);
+		free(m->face);
+		free(m->face_nrm);
+		memset(m, 0, sizeof *m);
+		if (WIFSIGNALED(status))
+			snprintf(err, errlen, "the file is corrupt: assimp crashed reading it (%s)",
+			         strsignal(WTERMSIG(status)));
+		else
+			snprintf(err, errlen, "the file is corrupt: assimp stopped reading it");
+		return -1;
+	}
+	return rc;
 }

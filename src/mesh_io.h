@@ -19,4 +19,8 @@ int mesh_io_load(const char *path, scene_mesh *m, char *err, size_t errlen);
  * read; source names the file it came from in a comment. Returns -1 on a write error. */
 int mesh_io_write_mesh2(const scene_mesh *m, const char *name, const char *source, FILE *out);
 
+/* The same, in this process (mesh_io_load runs it in a child process, so that
+ * assimp crashing on a corrupt file is an error, not the end of eclat). */
+int mesh_io_load_here(const char *path, scene_mesh *m, char *err, size_t errlen);
+
 #endif

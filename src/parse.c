@@ -112,6 +112,16 @@ void parse_close(struct parse_ctx *ctx, int directive)
 	ctx->closed_by_last = ctx->n_open < before;
 }
 
+/* Bison does not free the symbols of a rule whose action aborts, so the list
+ * is freed here when there are too many errors to go on. */
+ast_node *parse_give_up(struct parse_ctx *ctx, ast_node *list)
+{
+	if (ctx->errors < PARSE_MAX_ERRORS)
+		return list;
+	ast_free(list);
+	return NULL;
+}
+
 ast_node *parse_check_depth(struct parse_ctx *ctx, ast_node *n)
 {
 	if (n->depth > AST_MAX_DEPTH && !ctx->too_deep) {

@@ -62,6 +62,8 @@ void parse_error(struct parse_ctx *ctx, src_loc loc, const char *fmt, ...) __att
 void parse_open(struct parse_ctx *ctx, src_loc loc, const char *what);
 void parse_close(struct parse_ctx *ctx, int directive);
 
+/* list, or NULL after freeing it when there have been too many errors. */
+ast_node *parse_give_up(struct parse_ctx *ctx, ast_node *list);
 /* Returns n, after an error when it is deeper than AST_MAX_DEPTH. */
 ast_node *parse_check_depth(struct parse_ctx *ctx, ast_node *n);
 

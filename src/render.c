@@ -133,9 +133,20 @@ static int read_film(struct pass_loop *pl, film *f)
 	return 0;
 }
 
+/* ECLAT_TEST_FAIL_PASS=N makes pass N (from 1) fail as a lost device would, so
+ * that tests can check that the samples before it are kept. */
+static int injected_failure(void)
+{
+	static int passes;
+	const char *s = getenv("ECLAT_TEST_FAIL_PASS");
+	return s && ++passes == atoi(s);
+}
+
 static int run_pass(struct pass_loop *pl, int count)
 {
 	cl_uint counts[COUNT_N] = { 0 };
+	if (injected_failure())
+		return device_fail("clEnqueueNDRangeKernel", CL_OUT_OF_RESOURCES);
 	pl->params.sample_base = (int)pl->st->samples;
 	pl->params.samples_per_pass = count;
 	cl_int err = clEnqueueWriteBuffer(pl->d->queue, pl->bufs[BUF_params], CL_TRUE, 0, sizeof pl->params,
@@ -190,8 +201,12 @@ static int run_passes(struct pass_loop *pl, film *f)
 	double last_checkpoint = pl->t0;
 	while (pl->st->samples < rs->samples) {
 		int left = rs->samples - (int)pl->st->samples;
-		if (run_pass(pl, left < per ? left : per))
-			return -1;
+		if (run_pass(pl, left < per ? left : per)) {
+			if (tty)
+				fputc('\n', stderr);
+			/* keep the passes done, when the device still gives them back */
+			return pl->st->samples > 0 && read_film(pl, f) == 0 ? 1 : -1;
+		}
 		if (tty)
 			progress(pl);
 		if ((rs->stop && *rs->stop) || (rs->time_limit > 0 && now() - pl->t0 >= rs->time_limit))
@@ -259,7 +274,7 @@ int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_se
 		rc = run_passes(&pl, f);
 		st->seconds = now() - pl.t0;
 	}
-	if (rc)
+	if (rc < 0)
 		film_free(f);
 out:
 	free(pl.sums);

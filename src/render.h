@@ -37,7 +37,9 @@ double render_rays(const render_stats *st);
 
 /* Renders up to rs->samples samples per pixel into f (film_init'ed here). Returns
  * 0 with f holding the samples done (fewer when stopped or out of time), or -1
- * after printing the OpenCL error. */
+ * after printing the OpenCL error. A failure after some passes that still lets
+ * the film be read back returns 1, with f holding the samples before it: no
+ * lost work. */
 int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_settings *rs, film *f,
                render_stats *st);
 

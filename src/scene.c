@@ -218,8 +218,9 @@ int scene_camera_look_at(scene_camera *c, const double p[3], const double sky[3]
 	scale_to(d, 1);
 	double r[3];
 	cross(sky, d, r);
-	/* sky parallel to the view: keep the old right, as POV-Ray does */
-	if (fabs(r[0]) < 1e-10 && fabs(r[1]) < 1e-10 && fabs(r[2]) < 1e-10)
+	/* sky parallel to the view: keep the old right, as POV-Ray does (and warns) */
+	int parallel = fabs(r[0]) < 1e-10 && fabs(r[1]) < 1e-10 && fabs(r[2]) < 1e-10;
+	if (parallel)
 		memcpy(r, c->right, sizeof r);
 	scale_to(r, 1);
 	cross(d, r, c->up);
@@ -228,7 +229,7 @@ int scene_camera_look_at(scene_camera *c, const double p[3], const double sky[3]
 	scale_to(c->direction, dl);
 	memcpy(c->right, r, sizeof r);
 	scale_to(c->right, handedness > 0 ? rl : -rl);
-	return 0;
+	return parallel;
 }
 
 /* %.6g, with round-off next to zero (and -0) printed as 0, so golden files do

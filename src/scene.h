@@ -171,7 +171,8 @@ scene_light scene_default_light(void);
 scene_camera scene_default_camera(void);
 /* POV-Ray 3.7's look_at: points direction at p keeping the lengths of direction,
  * right and up, orients right and up by sky, keeps the handedness of right.
- * Returns -1 when p is the camera's location. */
+ * Returns -1 when p is the camera's location, 1 when the view is along sky
+ * (right is then kept, as POV-Ray does), else 0. */
 int scene_camera_look_at(scene_camera *c, const double p[3], const double sky[3]);
 
 #endif
