@@ -4,9 +4,11 @@
  *   test_traverse MESH_DIR
  *
  * Closest hits and any-hits of random and aimed rays on the bunny, the dragon and
- * a soup with degenerate triangles; rays aimed exactly at the shared corners and
- * edges of a closed mesh, which must never slip through; and a mesh placed as a
- * transformed instance against the same triangles flattened into world space. */
+ * a soup with degenerate triangles, and of recorded rays grazing the dragon's
+ * silhouette; rays aimed exactly at the shared corners and edges of a closed mesh,
+ * which must never slip through; and a mesh placed as a transformed instance
+ * against the same triangles flattened into world space. */
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -76,6 +78,55 @@ static double face_margin(const struct soup *s, int f, const float o[3], const f
 {
 	double t;
 	return face_crossing(s, f, o, d, &t);
+}
+
+/* How far, in the scene's units, the ray crosses face f's plane from the nearest
+ * of its edge lines (negative outside the face): each barycentric coordinate
+ * times the height over its edge. */
+static double edge_distance(const struct soup *s, int f, const float o[3], const float d[3])
+{
+	const double (*v)[3] = s->v[f];
+	double t = NAN, e[3][3], n[3];
+	face_crossing(s, f, o, d, &t);
+	if (isnan(t))   /* no area, or a ray along its plane */
+		return -INFINITY;
+	for (int k = 0; k < 3; k++) {
+		e[0][k] = v[2][k] - v[1][k];   /* opposite corner 0 */
+		e[1][k] = v[2][k] - v[0][k];   /* opposite corner 1 */
+		e[2][k] = v[1][k] - v[0][k];   /* opposite corner 2 */
+	}
+	n[0] = e[2][1] * e[1][2] - e[2][2] * e[1][1];
+	n[1] = e[2][2] * e[1][0] - e[2][0] * e[1][2];
+	n[2] = e[2][0] * e[1][1] - e[2][1] * e[1][0];
+	double area2 = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+	/* the crossing point, and its barycentric coordinates by sub-areas */
+	double p[3];
+	for (int k = 0; k < 3; k++)
+		p[k] = o[k] + t * d[k];
+	double best = INFINITY;
+	for (int c = 0; c < 3; c++) {
+		const double *a = v[(c + 1) % 3], *q = v[(c + 2) % 3];
+		double x[3], y[3], m[3];
+		for (int k = 0; k < 3; k++)
+			x[k] = a[k] - p[k], y[k] = q[k] - p[k];
+		m[0] = x[1] * y[2] - x[2] * y[1], m[1] = x[2] * y[0] - x[0] * y[2], m[2] = x[0] * y[1] - x[1] * y[0];
+		double b = (m[0] * n[0] + m[1] * n[1] + m[2] * n[2]) / (area2 * area2);
+		best = fmin(best, b * area2 / sqrt(e[c][0] * e[c][0] + e[c][1] * e[c][1] + e[c][2] * e[c][2]));
+	}
+	return best;
+}
+
+/* Whether the device may place the ray on the other side of face f's edge by
+ * rounding: it works in float on coordinates as large as |o| + t, so it can move
+ * a crossing by some ulps of that (up to about 10 FLT_EPSILON (|o| + t) measured
+ * on the dragon's silhouettes at t = 25). A bound on the barycentric coordinate
+ * instead would be blind to scale: 1e-5 of a 0.03-high triangle 25 units away is
+ * already within rounding. */
+static int near_edge(const struct soup *s, int f, const float o[3], const float d[3], double t)
+{
+	double scale = fmax(fmax(fabs(o[0]), fabs(o[1])), fabs(o[2])) +
+	               t * fmax(fmax(fabs(d[0]), fabs(d[1])), fabs(d[2]));
+	return fabs(edge_distance(s, f, o, d)) < 16 * FLT_EPSILON * scale;
 }
 
 /* The reference: the nearest face the ray crosses, edges included, in double. */
@@ -278,8 +329,8 @@ static void compare(const char *what, struct device_scene *ds, const struct soup
 		if (same)
 			continue;
 		/* within rounding of an edge: the reference's face, or the device's */
-		if ((ref.face >= 0 && ref.margin < 1e-5) ||
-		    (dev_hit && fabs(face_margin(s, (int)h[1], o, d)) < 1e-5)) {
+		if ((ref.face >= 0 && near_edge(s, ref.face, o, d, ref.t)) ||
+		    (dev_hit && near_edge(s, (int)h[1], o, d, h[0]))) {
 			edge++;
 			continue;
 		}
@@ -293,6 +344,19 @@ static void compare(const char *what, struct device_scene *ds, const struct soup
 	check(bad == 0 && any_bad == 0, "%s; %g disagreements, %g any-hit errors", line, bad, any_bad);
 	free(hits);
 }
+
+/* Rays recorded on the dragon that graze its silhouette: the brute force crosses
+ * a front face 1e-5 to 3e-5 of its height inside an edge whose other face turns
+ * away, 25 units off, and both layouts miss that face (float rounding moves the
+ * crossing by about 1e-6 there), so the ray goes on to a farther face or out. A
+ * barycentric bound of 1e-5 counted them as traversal errors. A reported dragon
+ * ray missed at t = 23.92, 1.36e-5 from an edge (not reproduced: no binary/wide
+ * difference in 20 million rays) fits this pattern. */
+static const float dragon_grazes[][8] = {
+	{ 0x1.08cc4ep-2, -0x1.2d63f4p+3, 0x1.2c003ap+4, INFINITY, -0x1.ffeddcp-6, 0x1.48a60cp-1, -0x1.8845e8p-1, 0 },
+	{ 0x1.946a44p+4, -0x1.2052cp-3, -0x1.d5594p+3, INFINITY, -0x1.8c77a4p-1, 0x1.37cd24p-3, 0x1.3a7442p-1, 0 },
+	{ 0x1.388994p+4, 0x1.6017c4p+4, -0x1.4437c4p+1, INFINITY, -0x1.4c0204p-1, -0x1.7e7cf6p-1, 0x1.2bcd7ep-3, 0 },
+};
 
 static int test_mesh(device_ctx *dev, cl_program prog, const char *dir, const char *name, int n)
 {
@@ -316,6 +380,10 @@ static int test_mesh(device_ctx *dev, cl_program prog, const char *dir, const ch
 		compare(path, &ds, &s, aimed, n);
 		free(rays);
 		free(aimed);
+		if (!strcmp(name, "dragon.obj")) {
+			snprintf(path, sizeof path, "%s, recorded rays grazing its silhouette", name);
+			compare(path, &ds, &s, &dragon_grazes[0][0], sizeof dragon_grazes / sizeof dragon_grazes[0]);
+		}
 	}
 	lower_free(&ds.lr);
 	scene_free(&sc);
