@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "eval_int.h"
+#include "mesh_io.h"
 #include "parse.h"
 
 /* ---- messages ---- */
@@ -1077,7 +1078,8 @@ static int declare_option(struct eval *e, const char *decl)
 
 eval_options eval_options_default(void)
 {
-	return (eval_options){ .image_width = 640, .image_height = 480 };
+	return (eval_options){ .image_width = 640, .image_height = 480,
+	                       .mesh_time_limit = MESH_IO_DEFAULT_TIME_LIMIT };
 }
 
 static void eval_free(struct eval *e)

@@ -34,6 +34,8 @@ typedef struct {
 	 * 0 means the EVAL_DEFAULT_ value. */
 	int max_include_depth, max_macro_depth;
 	long max_loop_iterations;
+	/* Seconds assimp may take on one mesh file (--mesh-time-limit); 0: no limit. */
+	unsigned mesh_time_limit;
 } eval_options;
 
 #define EVAL_DEFAULT_INCLUDE_DEPTH 64

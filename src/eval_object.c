@@ -776,7 +776,7 @@ static int mesh_file(struct eval *e, struct cursor *c, const ast_node *item, str
 	char *path = beside_source(arg->loc, name);
 	free(name);
 	scene_mesh m;
-	int rc = mesh_io_load(path, &m, err, sizeof err);
+	int rc = mesh_io_load(path, e->opt->mesh_time_limit, &m, err, sizeof err);
 	if (rc)
 		eval_error(e, arg->loc, "cannot load the mesh '%s': %s", path, err);
 	free(path);

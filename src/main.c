@@ -42,11 +42,12 @@ struct options {
 	int n_aovs;
 	int max_include_depth, max_macro_depth;   /* 0: the evaluator's defaults */
 	long max_loop_iterations;
+	int mesh_time_limit;
 };
 
 enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_DIR,
        OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_BVH_LAYOUT, OPT_STATS, OPT_SKIP_UNSUPPORTED, OPT_EXPORT_MESH2,
-       OPT_MAX_INCLUDE_DEPTH, OPT_MAX_MACRO_DEPTH, OPT_MAX_LOOP_ITERATIONS };
+       OPT_MAX_INCLUDE_DEPTH, OPT_MAX_MACRO_DEPTH, OPT_MAX_LOOP_ITERATIONS, OPT_MESH_TIME_LIMIT };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -69,6 +70,7 @@ static const struct option long_options[] = {
 	{ "max-include-depth", required_argument, NULL, OPT_MAX_INCLUDE_DEPTH },
 	{ "max-macro-depth", required_argument, NULL, OPT_MAX_MACRO_DEPTH },
 	{ "max-loop-iterations", required_argument, NULL, OPT_MAX_LOOP_ITERATIONS },
+	{ "mesh-time-limit", required_argument, NULL, OPT_MESH_TIME_LIMIT },
 	{ "device", required_argument, NULL, OPT_DEVICE },
 	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
 	{ "kernel-dir", required_argument, NULL, OPT_KERNEL_DIR },
@@ -119,6 +121,8 @@ static void usage(FILE *out)
 		"      --max-include-depth N  #include files nested at most N deep (default %d)\n"
 		"      --max-macro-depth N  macro calls nested at most N deep (default %d, at most %d)\n"
 		"      --max-loop-iterations N  stop a #while or #for after N turns (default %ld)\n"
+		"      --mesh-time-limit S  give up on a mesh file assimp is still reading after S\n"
+		"                        seconds (default %d; 0: no limit)\n"
 		"      --check           check the scene for errors and warnings, render nothing\n"
 		"      --dump-ast        print the syntax tree and exit\n"
 		"      --dump-scene      print the evaluated scene in world space and exit\n"
@@ -130,7 +134,8 @@ static void usage(FILE *out)
 		"under way and writes the image rendered so far.\n"
 		"The scene language is described in eclat-scene(5), the options in eclat(1).\n",
 		DEFAULT_WIDTH, DEFAULT_HEIGHT, DEFAULT_SAMPLES, DEFAULT_MAX_DEPTH, EVAL_DEFAULT_INCLUDE_DEPTH,
-		EVAL_DEFAULT_MACRO_DEPTH, EVAL_MAX_MACRO_DEPTH_LIMIT, EVAL_DEFAULT_LOOP_ITERATIONS);
+		EVAL_DEFAULT_MACRO_DEPTH, EVAL_MAX_MACRO_DEPTH_LIMIT, EVAL_DEFAULT_LOOP_ITERATIONS,
+		MESH_IO_DEFAULT_TIME_LIMIT);
 }
 
 /* A whole number in [lo, hi], or exit 1 naming the option. */
@@ -264,7 +269,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 {
 	*o = (struct options){ .width = DEFAULT_WIDTH, .height = DEFAULT_HEIGHT,
 	                       .median_depth = DEFAULT_MEDIAN_DEPTH, .bvh_layout = LOWER_LAYOUT_DEFAULT,
-	                       .samples = DEFAULT_SAMPLES, .max_depth = -1, .device = -1 };
+	                       .samples = DEFAULT_SAMPLES, .max_depth = -1, .device = -1,
+	                       .mesh_time_limit = MESH_IO_DEFAULT_TIME_LIMIT };
 	o->kernel_dir = getenv("ECLAT_KERNEL_DIR");
 	translate_pov_switches(argc, argv);
 	int c;
@@ -294,6 +300,9 @@ static void parse_options(int argc, char **argv, struct options *o)
 			break;
 		case OPT_MAX_LOOP_ITERATIONS:
 			o->max_loop_iterations = int_arg("--max-loop-iterations", optarg, 1, INT_MAX);
+			break;
+		case OPT_MESH_TIME_LIMIT:
+			o->mesh_time_limit = int_arg("--mesh-time-limit", optarg, 0, 86400);
 			break;
 		case OPT_LIST_DEVICES: o->list_devices = 1; break;
 		case OPT_KERNEL_DIR: o->kernel_dir = optarg; break;
@@ -504,7 +513,7 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	if (!failed && o->stats)
 		print_bvh_stats(s, &lr);
 	if (failed || o->check) {
-		int rc = diag_error_count() > 0;
+		int rc = failed || diag_error_count() > 0;
 		lower_free(&lr);
 		return rc;
 	}
@@ -570,7 +579,7 @@ static int export_mesh2(const struct options *o)
 {
 	scene_mesh m;
 	char err[512], name[64];
-	if (mesh_io_load(o->export_mesh2, &m, err, sizeof err)) {
+	if (mesh_io_load(o->export_mesh2, (unsigned)o->mesh_time_limit, &m, err, sizeof err)) {
 		fprintf(stderr, "eclat: %s: %s\n", o->export_mesh2, err);
 		return 1;
 	}
@@ -622,6 +631,7 @@ int main(int argc, char **argv)
 	eopt.max_include_depth = o.max_include_depth;
 	eopt.max_macro_depth = o.max_macro_depth;
 	eopt.max_loop_iterations = o.max_loop_iterations;
+	eopt.mesh_time_limit = (unsigned)o.mesh_time_limit;
 	eopt.image_width = o.width;
 	eopt.image_height = o.height;
 	ast_node *tree = parse_file(o.scene, SRC_NOWHERE);

@@ -165,7 +165,8 @@ int mesh_io_write_mesh2(const scene_mesh *m, const char *name, const char *sourc
  * assimp crashes on some corrupt files (a fuzzed binary PLY makes it write out of
  * bounds), and a crash in a library would take eclat down with it. So assimp runs
  * in a child process that sends the triangles back through a pipe; a child that
- * dies is an error that names the file, and eclat goes on. */
+ * dies is an error that names the file, and eclat goes on. A truncated binary PLY
+ * header makes assimp loop for ever, so the child also has an alarm clock. */
 
 static int write_all(int fd, const void *p, size_t n)
 {
@@ -195,13 +196,15 @@ static int read_all(int fd, void *p, size_t n)
 	return 0;
 }
 
-static void child(int fd, const char *path)
+static void child(int fd, const char *path, unsigned time_limit)
 {
 	/* a crash ends the child at once, whatever handlers the parent has (a
 	 * sanitizer's or a fuzzer's would take long to report on a library) */
 	static const int fatal[] = { SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL };
 	for (size_t i = 0; i < sizeof fatal / sizeof *fatal; i++)
 		signal(fatal[i], SIG_DFL);
+	signal(SIGALRM, SIG_DFL);   /* a fuzzer's handler would report a timeout */
+	alarm(time_limit);          /* 0: none; a fork starts with no alarm of its own */
 	scene_mesh m;
 	char err[512] = "";
 	int rc = mesh_io_load_here(path, &m, err, sizeof err);
@@ -245,7 +248,7 @@ static int receive(int fd, scene_mesh *m, char *err, size_t errlen)
 	return 0;
 }
 
-int mesh_io_load(const char *path, scene_mesh *m, char *err, size_t errlen)
+int mesh_io_load(const char *path, unsigned time_limit, scene_mesh *m, char *err, size_t errlen)
 {
 	memset(m, 0, sizeof *m);
 	int fd[2];
@@ -263,7 +266,7 @@ int mesh_io_load(const char *path, scene_mesh *m, char *err, size_t errlen)
 	}
 	if (pid == 0) {
 		close(fd[0]);
-		child(fd[1], path);
+		child(fd[1], path, time_limit);
 	}
 	close(fd[1]);
 	int rc = receive(fd[0], m, err, errlen);
@@ -279,7 +282,10 @@ int mesh_io_load(const char *path, scene_mesh *m, char *err, size_t errlen)
 		free(m->face);
 		free(m->face_nrm);
 		memset(m, 0, sizeof *m);
-		if (WIFSIGNALED(status))
+		if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
+			snprintf(err, errlen, "assimp was still reading it after %u s: the file may be "
+			         "corrupt (--mesh-time-limit raises the limit)", time_limit);
+		else if (WIFSIGNALED(status))
 			snprintf(err, errlen, "the file is corrupt: assimp crashed reading it (%s)",
 			         strsignal(WTERMSIG(status)));
 		else

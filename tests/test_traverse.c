@@ -363,7 +363,7 @@ static int test_mesh(device_ctx *dev, cl_program prog, const char *dir, const ch
 	char path[4096], err[512];
 	snprintf(path, sizeof path, "%s/%s", dir, name);
 	scene_mesh m;
-	if (mesh_io_load(path, &m, err, sizeof err)) {
+	if (mesh_io_load(path, MESH_IO_DEFAULT_TIME_LIMIT, &m, err, sizeof err)) {
 		check(0, "%s loads: %s%g%g", path, 0, 0);
 		return -1;
 	}
