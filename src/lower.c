@@ -86,6 +86,26 @@ static float4 f4(const double v[3], double w)
 	return (float4){ (float)v[0], (float)v[1], (float)v[2], (float)w };
 }
 
+static int within_range(float v)
+{
+	return v >= -LOWER_FAR && v <= LOWER_FAR;   /* false for NaN */
+}
+
+static int all_in_range(const float *v, int n)
+{
+	for (int i = 0; i < n; i++)
+		if (!within_range(v[i]))
+			return 0;
+	return 1;
+}
+
+/* Colours past LOWER_FAR (rgb 1e39 is infinite in single precision) would turn
+ * every path that meets them into infinity or NaN. */
+static int material_in_range(const scene_material *m)
+{
+	return all_in_range(m->pigment, 5) && all_in_range(m->emission, 3);
+}
+
 static float clamp01(float v)
 {
 	return v < 0 ? 0 : v > 1 ? 1 : v;
@@ -406,6 +426,13 @@ static int lower_mesh_once(struct lowering *lw, const scene *s, int index)
 	const scene_mesh *m = &s->meshes[index];
 	int first_mat = lw->n_mats, normals_before = lw->n_normals;
 	for (int i = 0; i < m->n_mats; i++)
+		if (!material_in_range(&m->mats[i])) {
+			diag_warning(m->loc, "mesh skipped: a colour of one of its textures passes %g, too "
+			             "much for the device's single precision", LOWER_FAR);
+			lm->done = -2;
+			return 1;
+		}
+	for (int i = 0; i < m->n_mats; i++)
 		add_material(lw, &m->mats[i]);
 	for (int f = 0; f < m->n_faces; f++) {
 		double v[3][3], n[3][3];
@@ -423,6 +450,16 @@ static int lower_mesh_once(struct lowering *lw, const scene *s, int index)
 		diag_warning(m->loc, "mesh with no triangle with an area skipped");
 		lm->done = -2;
 		return 1;
+	}
+	for (int i = 0; i < lm->prims.n; i++) {   /* rays cross the mesh in its own space */
+		const float *f = (const float *)&lm->prims.p[i].a;
+		for (int k = 0; k < 12; k++)
+			if (k % 4 != 3 && !within_range(f[k])) {
+				diag_warning(m->loc, "mesh skipped: a vertex lies past %g units, too far for "
+				             "the device's single precision", LOWER_FAR);
+				lm->done = -2;
+				return 1;
+			}
 	}
 	if (build_tree(lw, &lm->prims, &lm->bvh, &lm->stats)) {
 		fprintf(stderr, "eclat: out of memory building a mesh's BVH\n");
@@ -476,7 +513,7 @@ static int lower_smooth_triangle(struct lowering *lw, const scene_object *o, int
 	return 0;
 }
 
-static int lower_object(struct lowering *lw, const scene *s, int id)
+static int lower_shape(struct lowering *lw, const scene *s, int id)
 {
 	const scene_object *o = &s->objects[id];
 	int mat = add_material(lw, &o->material);
@@ -502,7 +539,73 @@ static int lower_object(struct lowering *lw, const scene *s, int id)
 	return 0;
 }
 
+/* Whether the kernels can intersect p in single precision: its box and, for the
+ * kinds that hold a map to their own space, the map's entries. */
+static int in_range(const struct lowering *lw, const dev_prim *p)
+{
+	const float *f = (const float *)&p->a;   /* a, b, c: twelve floats */
+	int rows = p->type == PRIM_ELLIPSOID || p->type == PRIM_INSTANCE || p->type == PRIM_PLANE;
+	for (int i = 0; rows && i < 12; i++)
+		if (!within_range(f[i]))
+			return 0;
+	if (p->type == PRIM_PLANE)
+		return 1;
+	bvh_box b = prim_box(lw, p);
+	for (int k = 0; k < 3; k++)
+		if (!within_range(b.min[k]) || !within_range(b.max[k]))
+			return 0;
+	return 1;
+}
+
+static const char *const shape_names[] = {
+	[SHAPE_SPHERE] = "sphere", [SHAPE_TRIANGLE] = "triangle", [SHAPE_SMOOTH_TRIANGLE] = "smooth_triangle",
+	[SHAPE_BOX] = "box", [SHAPE_PLANE] = "plane", [SHAPE_MESH] = "mesh",
+};
+
+/* One scene object into primitives. One whose numbers the device's single
+ * precision cannot hold (a coordinate past LOWER_FAR, which squares past
+ * float's range in the intersection tests) is warned about and left out, as
+ * degenerate geometry is; in double precision, evaluation saw nothing wrong. */
+static int lower_object(struct lowering *lw, const scene *s, int id)
+{
+	const scene_object *o = &s->objects[id];
+	if (!material_in_range(&o->material)) {
+		diag_warning(o->loc, "%s skipped: its colour passes %g, too much for the device's single "
+		             "precision", shape_names[o->shape], LOWER_FAR);
+		return 0;
+	}
+	int top = lw->top.n, planes = lw->planes.n;
+	int rc = lower_shape(lw, s, id);
+	int ok = 1;
+	for (int i = top; ok && i < lw->top.n; i++)
+		ok = in_range(lw, &lw->top.p[i]);
+	for (int i = planes; ok && i < lw->planes.n; i++)
+		ok = in_range(lw, &lw->planes.p[i]);
+	if (!ok) {
+		diag_warning(o->loc, "%s skipped: too far from the origin, too large or too thin for the "
+		             "device's single precision (a coordinate or scale past %g)", shape_names[o->shape],
+		             LOWER_FAR);
+		lw->top.n = top;
+		lw->planes.n = planes;
+	}
+	return rc;
+}
+
 /* ---- lights ---- */
+
+/* A light whose numbers single precision cannot hold is left out, named. */
+static int light_in_range(const scene_light *l)
+{
+	const double *v[] = { l->position, l->point_at, l->axis1, l->axis2 };
+	int ok = all_in_range(l->color, 3);
+	for (int i = 0; i < 4 && ok; i++)
+		for (int k = 0; k < 3 && ok; k++)
+			ok = fabs(v[i][k]) <= LOWER_FAR;
+	if (!ok)
+		diag_warning(l->loc, "light_source skipped: a position or colour passes %g, too much for "
+		             "the device's single precision", LOWER_FAR);
+	return ok;
+}
 
 static dev_light lower_light(const scene_light *l)
 {
@@ -562,9 +665,23 @@ static void lower_emitters(lower_result *r)
 	}
 }
 
-static void lower_camera(const scene *s, dev_params *p)
+static int lower_camera(const scene *s, dev_params *p)
 {
 	const scene_camera *c = &s->camera;
+	const double *v[] = { c->location, c->direction, c->right, c->up, c->focal_point };
+	for (int i = 0; i < 5; i++)
+		for (int k = 0; k < 3; k++)
+			if (!(fabs(v[i][k]) <= LOWER_FAR)) {
+				diag_error(c->loc, "the camera's vectors pass %g, too much for the device's "
+				           "single precision: bring the scene nearer the origin", LOWER_FAR);
+				return -1;
+			}
+	const float *sky = s->has_sky ? s->sky : s->background;
+	if (!all_in_range(sky, 3)) {
+		diag_error(SRC_NOWHERE, "the %s colour passes %g, too much for the device's single "
+		           "precision", s->has_sky ? "sky_sphere" : "background", LOWER_FAR);
+		return -1;
+	}
 	p->cam_location = f4(c->location, 0);
 	p->cam_direction = f4(c->direction, 0);
 	p->cam_right = f4(c->right, 0);
@@ -577,6 +694,7 @@ static void lower_camera(const scene *s, dev_params *p)
 	for (int i = 0; i < 3; i++)
 		focal += (c->focal_point[i] - c->location[i]) * c->direction[i] / dl;
 	p->lens = (float4){ (float)c->aperture, (float)(focal > 0 ? focal : dl), c->orthographic ? 1.0f : 0.0f, 0 };
+	return 0;
 }
 
 /* The local-to-world map of an ellipsoid or instance, whose rows hold the inverse. */
@@ -779,8 +897,8 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 
 	out->lights = xmalloc(s->n_lights * sizeof *out->lights);
 	for (int i = 0; i < s->n_lights; i++)
-		out->lights[i] = lower_light(&s->lights[i]);
-	out->n_lights = s->n_lights;
+		if (light_in_range(&s->lights[i]))
+			out->lights[out->n_lights++] = lower_light(&s->lights[i]);
 	out->materials = lw.mats;
 	out->finishes = lw.finishes;
 	out->n_materials = lw.n_mats;
@@ -790,7 +908,8 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	out->n_objects = s->n_objects;
 	out->normals = lw.normals;
 	out->n_normals = lw.n_normals;
-	lower_camera(s, &out->params);
+	if (lower_camera(s, &out->params))
+		rc = -1;
 	if (rc == 0 && join(&lw, s, out))
 		rc = -1;
 	if (rc == 0)

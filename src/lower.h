@@ -16,6 +16,11 @@ enum { LOWER_BVH_SAH, LOWER_BVH_MEDIAN };
 enum { LOWER_LAYOUT_BINARY, LOWER_LAYOUT_WIDE };
 #define LOWER_LAYOUT_DEFAULT LOWER_LAYOUT_WIDE
 
+/* The farthest coordinate the kernels can intersect in single precision: its
+ * square, summed three times, stays within float's range. Objects past it are
+ * left out with a warning. */
+#define LOWER_FAR 1e18
+
 typedef struct {
 	int builder;        /* LOWER_BVH_SAH (default) or LOWER_BVH_MEDIAN */
 	int median_depth;   /* the median builder's maximum depth */
