@@ -1,5 +1,7 @@
-/* fuzz_scene.c: libFuzzer target for the front end: lexer, parser and evaluator
- * (no lowering, no rendering, no OpenCL). One input is one scene file.
+/* fuzz_scene.c: libFuzzer target for the host side of a render: lexer, parser,
+ * evaluator, and lowering with its BVH builds (no rendering, no OpenCL), where
+ * the evaluator's doubles become the device's floats. One input is one scene
+ * file.
  *
  *   make fuzz FUZZ_SECONDS=60          (builds with clang, runs both targets)
  *   FUZZ_VERBOSE=1 fuzz/fuzz_scene crash-...   (replays one input with its messages)
@@ -14,6 +16,7 @@
 
 #include "diag.h"
 #include "eval.h"
+#include "lower.h"
 #include "parse.h"
 
 static int quiet_stderr(void)
@@ -50,9 +53,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		opt.max_loop_iterations = 20000;
 		opt.max_macro_depth = 64;
 		opt.max_include_depth = 8;
+		opt.mesh_time_limit = 3;   /* under libFuzzer's -timeout */
 		scene s;
 		scene_init(&s);
-		eval_scene(tree, &s, &opt);
+		if (eval_scene(tree, &s, &opt) == 0 && diag_error_count() == 0) {
+			lower_result lr;
+			lower_scene(&s, NULL, &lr);
+			lower_free(&lr);
+		}
 		scene_free(&s);
 		ast_free(tree);
 	}
