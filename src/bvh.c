@@ -703,16 +703,23 @@ double bvh_sah_cost(const bvh_node *nodes, int n_nodes)
 	return cost;
 }
 
-static void init_records(prim_rec *rec, int *index, const bvh_box *boxes, int n)
+static void init_records(prim_rec *rec, int *index, bvh_box_fn *box_of, const void *ctx, int n)
 {
 	for (int i = 0; i < n; i++) {
+		bvh_box b;
+		box_of(ctx, i, &b);
 		for (int a = 0; a < 3; a++) {
-			rec[i].box.lo[a] = boxes[i].min[a];
-			rec[i].box.hi[a] = boxes[i].max[a];
+			rec[i].box.lo[a] = b.min[a];
+			rec[i].box.hi[a] = b.max[a];
 		}
 		rec[i].box.lo[3] = rec[i].box.hi[3] = 0.0f;
 		index[i] = i;
 	}
+}
+
+static void box_from_array(const void *ctx, int i, bvh_box *out)
+{
+	*out = ((const bvh_box *)ctx)[i];
 }
 
 static void free_builder(builder *b)
@@ -749,10 +756,26 @@ int bvh_build(const bvh_box *boxes, int n, bvh_tree *t)
 	return bvh_build_threads(boxes, n, 0, t);
 }
 
+static int build(bvh_box_fn *box_of, const void *ctx, int n, int threads, bvh_tree *t);
+
 int bvh_build_threads(const bvh_box *boxes, int n, int threads, bvh_tree *t)
 {
+	if (n > 0 && !boxes) {
+		memset(t, 0, sizeof *t);
+		return -1;
+	}
+	return build(box_from_array, boxes, n, threads, t);
+}
+
+int bvh_build_fn(bvh_box_fn *box_of, const void *ctx, int n, bvh_tree *t)
+{
+	return build(box_of, ctx, n, 0, t);
+}
+
+static int build(bvh_box_fn *box_of, const void *ctx, int n, int threads, bvh_tree *t)
+{
 	memset(t, 0, sizeof *t);
-	if (n < 0 || (n > 0 && !boxes) || n > INT_MAX / 2)
+	if (n < 0 || n > INT_MAX / 2)
 		return -1;
 	if (n == 0)
 		return build_empty(t);
@@ -767,7 +790,7 @@ int bvh_build_threads(const bvh_box *boxes, int n, int threads, bvh_tree *t)
 		bvh_free(t);
 		return -1;
 	}
-	init_records(b.rec, b.index, boxes, n);
+	init_records(b.rec, b.index, box_of, ctx, n);
 	int n_nodes = build_tree(&b, n, threads > 0 ? threads : thread_count());
 	if (n_nodes < 0) {
 		free_builder(&b);

@@ -382,30 +382,60 @@ static double ms_since(const struct timespec *t0)
 
 static bvh_box prim_box(const struct lowering *lw, const dev_prim *p);
 
+struct box_ctx {
+	const struct lowering *lw;
+	const dev_prim *p;
+};
+
+static void box_of_prim(const void *ctx, int i, bvh_box *out)
+{
+	const struct box_ctx *c = ctx;
+	*out = prim_box(c->lw, &c->p[i]);
+}
+
+/* Puts p into the tree's leaf order, p[i] = old p[index[i]], in place by
+ * following each cycle of the permutation: a new array would be fresh memory,
+ * a page fault every 64 primitives, which costs more than the moves here.
+ * index is used up (each entry becomes its own position). */
+static void permute(dev_prim *p, int *index, int n)
+{
+	for (int start = 0; start < n; start++) {
+		if (index[start] == start)
+			continue;
+		dev_prim first = p[start];
+		int j = start;
+		while (index[j] != start) {
+			int k = index[j];
+			p[j] = p[k];
+			index[j] = j;
+			j = k;
+		}
+		p[j] = first;
+		index[j] = j;
+	}
+}
+
 /* Builds the chosen BVH over list and reorders list into its leaf order. */
 static int build_tree(struct lowering *lw, struct prim_list *list, bvh_tree *t, lower_bvh_stats *st)
 {
 	struct timespec t0;
 	clock_gettime(CLOCK_MONOTONIC, &t0);
-	bvh_box *boxes = malloc((list->n ? list->n : 1) * sizeof *boxes);
-	if (!boxes)
-		return -1;
-	for (int i = 0; i < list->n; i++)
-		boxes[i] = prim_box(lw, &list->p[i]);
-	int rc = lw->opt->builder == LOWER_BVH_MEDIAN
-	       ? bvh_build_median(boxes, list->n, lw->opt->median_depth, t)
-	       : bvh_build(boxes, list->n, t);
-	free(boxes);
+	int rc;
+	if (lw->opt->builder == LOWER_BVH_MEDIAN) {
+		bvh_box *boxes = malloc((list->n ? list->n : 1) * sizeof *boxes);
+		if (!boxes)
+			return -1;
+		for (int i = 0; i < list->n; i++)
+			boxes[i] = prim_box(lw, &list->p[i]);
+		rc = bvh_build_median(boxes, list->n, lw->opt->median_depth, t);
+		free(boxes);
+	} else {
+		struct box_ctx ctx = { lw, list->p };
+		rc = bvh_build_fn(box_of_prim, &ctx, list->n, t);
+	}
 	if (rc)
 		return -1;
-	dev_prim *sorted = malloc((list->n ? list->n : 1) * sizeof *sorted);
-	if (!sorted)
-		return -1;
-	for (int i = 0; i < list->n; i++)
-		sorted[i] = list->p[t->prim_index[i]];
-	free(list->p);
-	list->p = sorted;
-	list->cap = list->n;
+	permute(list->p, t->prim_index, list->n);
 	st->build_ms = ms_since(&t0);
 	st->prims = list->n;
 	st->nodes = t->n_nodes;
