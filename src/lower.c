@@ -447,6 +447,22 @@ static int build_tree(struct lowering *lw, struct prim_list *list, bvh_tree *t, 
 	return 0;
 }
 
+/* Whether the kernels can intersect p in single precision: its box and, for the
+ * kinds that hold a map to their own space, the map's entries. */
+static int in_range(const struct lowering *lw, const dev_prim *p)
+{
+	int rows = p->type == PRIM_ELLIPSOID || p->type == PRIM_INSTANCE || p->type == PRIM_PLANE;
+	if (rows && !all_in_range((const float *)&p->a, 12))   /* a, b, c: twelve floats */
+		return 0;
+	if (p->type == PRIM_PLANE)
+		return 1;
+	bvh_box b = prim_box(lw, p);
+	for (int k = 0; k < 3; k++)
+		if (!within_range(b.min[k]) || !within_range(b.max[k]))
+			return 0;
+	return 1;
+}
+
 /* A mesh's triangles in its own space, with the face textures it has. */
 static int lower_mesh_once(struct lowering *lw, const scene *s, int index)
 {
@@ -481,16 +497,13 @@ static int lower_mesh_once(struct lowering *lw, const scene *s, int index)
 		lm->done = -2;
 		return 1;
 	}
-	for (int i = 0; i < lm->prims.n; i++) {   /* rays cross the mesh in its own space */
-		const float *f = (const float *)&lm->prims.p[i].a;
-		for (int k = 0; k < 12; k++)
-			if (k % 4 != 3 && !within_range(f[k])) {
-				diag_warning(m->loc, "mesh skipped: a vertex lies past %g units, too far for "
-				             "the device's single precision", LOWER_FAR);
-				lm->done = -2;
-				return 1;
-			}
-	}
+	for (int i = 0; i < lm->prims.n; i++)   /* rays cross the mesh in its own space */
+		if (!in_range(lw, &lm->prims.p[i])) {
+			diag_warning(m->loc, "mesh skipped: a vertex lies past %g units, too far for the "
+			             "device's single precision", LOWER_FAR);
+			lm->done = -2;
+			return 1;
+		}
 	if (build_tree(lw, &lm->prims, &lm->bvh, &lm->stats)) {
 		fprintf(stderr, "eclat: out of memory building a mesh's BVH\n");
 		lm->done = -1;
@@ -567,24 +580,6 @@ static int lower_shape(struct lowering *lw, const scene *s, int id)
 		return lower_instance(lw, s, o, mat, id);
 	}
 	return 0;
-}
-
-/* Whether the kernels can intersect p in single precision: its box and, for the
- * kinds that hold a map to their own space, the map's entries. */
-static int in_range(const struct lowering *lw, const dev_prim *p)
-{
-	const float *f = (const float *)&p->a;   /* a, b, c: twelve floats */
-	int rows = p->type == PRIM_ELLIPSOID || p->type == PRIM_INSTANCE || p->type == PRIM_PLANE;
-	for (int i = 0; rows && i < 12; i++)
-		if (!within_range(f[i]))
-			return 0;
-	if (p->type == PRIM_PLANE)
-		return 1;
-	bvh_box b = prim_box(lw, p);
-	for (int k = 0; k < 3; k++)
-		if (!within_range(b.min[k]) || !within_range(b.max[k]))
-			return 0;
-	return 1;
 }
 
 static const char *const shape_names[] = {
