@@ -812,8 +812,9 @@ static int join(struct lowering *lw, const scene *s, lower_result *out)
 	out->nodes = xmalloc(n_nodes * sizeof *out->nodes);
 	out->prims = xmalloc(n_prims * sizeof *out->prims);
 	memcpy(out->nodes, top.nodes, top.n_nodes * sizeof *top.nodes);
-	memcpy(out->prims, lw->top.p, lw->top.n * sizeof *lw->top.p);
-	if (lw->planes.n)   /* no planes: planes.p is NULL, which memcpy must not get */
+	if (lw->top.n)      /* an empty list's p is NULL, which memcpy must not get */
+		memcpy(out->prims, lw->top.p, lw->top.n * sizeof *lw->top.p);
+	if (lw->planes.n)
 		memcpy(out->prims + lw->top.n, lw->planes.p, lw->planes.n * sizeof *lw->planes.p);
 	for (int m = 0; m < s->n_meshes; m++) {
 		struct lowered_mesh *lm = &lw->meshes[m];
