@@ -20,18 +20,6 @@
  * libFuzzer's -timeout, which then catches hangs in eclat's own part. */
 #define LOADER_SECONDS 3
 
-static void free_mesh(scene_mesh *m)
-{
-	free(m->v);
-	free(m->nrm);
-	free(m->uv);
-	free(m->face);
-	free(m->face_nrm);
-	free(m->face_uv);
-	free(m->face_mat);
-	free(m->mats);
-}
-
 /* The extension on the first line, when it is 1 to 5 letters or digits. */
 static size_t extension(const uint8_t *data, size_t size, char ext[8])
 {
@@ -68,7 +56,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	scene_mesh m;
 	char err[512];
 	if (mesh_io_load(path, LOADER_SECONDS, &m, err, sizeof err) == 0)
-		free_mesh(&m);
+		scene_mesh_free(&m);
 	unlink(path);
 	return 0;
 }

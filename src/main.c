@@ -595,10 +595,7 @@ static int export_mesh2(const struct options *o)
 		if (rc)
 			fprintf(stderr, "eclat: could not write %s\n", o->output ? o->output : "the mesh2");
 	}
-	free(m.v);
-	free(m.nrm);
-	free(m.face);
-	free(m.face_nrm);
+	scene_mesh_free(&m);
 	return rc;
 }
 

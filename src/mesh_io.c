@@ -109,9 +109,7 @@ int mesh_io_load_here(const char *path, scene_mesh *m, char *err, size_t errlen)
 	m->face = malloc(nf * sizeof *m->face);
 	m->nrm = normals ? malloc(nv * sizeof *m->nrm) : NULL;
 	if (!m->v || !m->face || (normals && !m->nrm)) {
-		free(m->v);
-		free(m->face);
-		free(m->nrm);
+		scene_mesh_free(m);
 		memset(m, 0, sizeof *m);
 		snprintf(err, errlen, "out of memory for %u triangles", nf);
 		aiReleaseImport(sc);
@@ -277,10 +275,7 @@ int mesh_io_load(const char *path, unsigned time_limit, scene_mesh *m, char *err
 	/* all that was sent arrived: the child's exit status (a tool's at exit,
 	 * under valgrind) does not matter then */
 	if (rc == -2) {
-		free(m->v);
-		free(m->nrm);
-		free(m->face);
-		free(m->face_nrm);
+		scene_mesh_free(m);
 		memset(m, 0, sizeof *m);
 		if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
 			snprintf(err, errlen, "assimp was still reading it after %u s: the file may be "

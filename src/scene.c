@@ -123,7 +123,7 @@ int scene_add_mesh(scene *s, scene_mesh *m)
 	return s->n_meshes++;
 }
 
-static void mesh_free(scene_mesh *m)
+void scene_mesh_free(scene_mesh *m)
 {
 	free(m->v);
 	free(m->nrm);
@@ -138,7 +138,7 @@ static void mesh_free(scene_mesh *m)
 void scene_free(scene *s)
 {
 	for (int i = 0; i < s->n_meshes; i++)
-		mesh_free(&s->meshes[i]);
+		scene_mesh_free(&s->meshes[i]);
 	free(s->meshes);
 	free(s->objects);
 	free(s->lights);

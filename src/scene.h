@@ -159,6 +159,9 @@ void scene_add_light(scene *s, const scene_light *l);
 /* Takes ownership of m's arrays; returns its index. */
 int scene_add_mesh(scene *s, scene_mesh *m);
 void scene_free(scene *s);
+/* Frees a mesh's arrays (those of a mesh not added to a scene: scene_free frees
+ * the scene's own). */
+void scene_mesh_free(scene_mesh *m);
 /* Grows [lo, hi] by the object's box in world space (planes reach 1e10, as in
  * POV-Ray); start with lo = +huge and hi = -huge. */
 void scene_object_bounds(const scene *s, const scene_object *o, double lo[3], double hi[3]);
