@@ -447,12 +447,16 @@ static int build_tree(struct lowering *lw, struct prim_list *list, bvh_tree *t, 
 	return 0;
 }
 
-/* Whether the kernels can intersect p in single precision: its box and, for the
+/* Whether the kernels can intersect p in single precision: a triangle's
+ * corners (a NaN corner would not show in its box), or its box and, for the
  * kinds that hold a map to their own space, the map's entries. */
 static int in_range(const struct lowering *lw, const dev_prim *p)
 {
+	const float *f = (const float *)&p->a;   /* a, b, c: twelve floats */
+	if (p->type == PRIM_TRIANGLE || p->type == PRIM_SMOOTH_TRIANGLE)
+		return all_in_range(f, 3) && all_in_range(f + 4, 3) && all_in_range(f + 8, 3);
 	int rows = p->type == PRIM_ELLIPSOID || p->type == PRIM_INSTANCE || p->type == PRIM_PLANE;
-	if (rows && !all_in_range((const float *)&p->a, 12))   /* a, b, c: twelve floats */
+	if (rows && !all_in_range(f, 12))
 		return 0;
 	if (p->type == PRIM_PLANE)
 		return 1;
@@ -499,8 +503,8 @@ static int lower_mesh_once(struct lowering *lw, const scene *s, int index)
 	}
 	for (int i = 0; i < lm->prims.n; i++)   /* rays cross the mesh in its own space */
 		if (!in_range(lw, &lm->prims.p[i])) {
-			diag_warning(m->loc, "mesh skipped: a vertex lies past %g units, too far for the "
-			             "device's single precision", LOWER_FAR);
+			diag_warning(m->loc, "mesh skipped: a vertex is not a number or lies past %g units, "
+			             "too far for the device's single precision", LOWER_FAR);
 			lm->done = -2;
 			return 1;
 		}
