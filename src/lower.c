@@ -780,9 +780,13 @@ static bvh_box prim_box(const struct lowering *lw, const dev_prim *p)
 	float v[3][3] = { { p->a.x, p->a.y, p->a.z },
 	                  { p->b.x, p->b.y, p->b.z },
 	                  { p->c.x, p->c.y, p->c.z } };
+	/* Comparisons, not fminf: that is a library call without -ffast-math, and
+	 * twelve of them per triangle took 1.2 of the bunny's 28 ms of build.
+	 * in_range has turned away triangles with a NaN corner. */
 	for (int k = 0; k < 3; k++) {
-		b.min[k] = fminf(v[0][k], fminf(v[1][k], v[2][k]));
-		b.max[k] = fmaxf(v[0][k], fmaxf(v[1][k], v[2][k]));
+		float lo = v[0][k] < v[1][k] ? v[0][k] : v[1][k], hi = v[0][k] > v[1][k] ? v[0][k] : v[1][k];
+		b.min[k] = v[2][k] < lo ? v[2][k] : lo;
+		b.max[k] = v[2][k] > hi ? v[2][k] : hi;
 	}
 	return b;
 }
