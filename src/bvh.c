@@ -18,13 +18,13 @@
  * and its centroid bounds come from its parent's bins and partition pass, so
  * no separate bounds pass is needed per node.
  *
- * Threads: the nodes above TASK_MIN(n) primitives are built first, on the
- * calling thread; each node below that becomes a task whose subtree is built
- * by whichever thread takes it, into a region of the node array reserved for
- * it in task order (a subtree over c primitives has at most 2c - 2 nodes below
- * its root). The regions are then closed up in task order. Which thread builds
- * what, and when, therefore changes nothing: the tree is the same bit for bit
- * with any number of threads (tests/test_bvh.c checks it). */
+ * Threads: the threads share a list of work (see pool). Nodes over more than
+ * TASK_MIN(n) primitives are split one at a time, each by whichever thread
+ * takes it; smaller ones are built whole. Each node's subtree goes into a
+ * region of the node array fixed by the tree alone, and compact_tree then
+ * closes up the gaps in one pass. Which thread builds what, and when,
+ * therefore changes nothing: the tree is the same bit for bit with any number
+ * of threads (tests/test_bvh.c checks it). */
 #include "bvh.h"
 
 #include <float.h>
@@ -39,10 +39,10 @@
 #define SMALL 12            /* nodes of at most this many primitives use the exact sweep */
 #define STACK_INIT 64
 #define MAX_THREADS 16
-#define PAR_BIN_MIN 8192    /* nodes binned on two threads in the top part */
-/* Subtrees of at most this many primitives are tasks. A function of n alone, so
- * the tree does not depend on the number of threads; n / 32 gives the two
- * threads dozens of tasks to balance, and the floor keeps small builds in one. */
+#define PAR_BIN_MIN 8192    /* the root is binned on two threads from this size */
+/* Subtrees of at most this many primitives are built whole by one thread. The
+ * tree does not depend on it, only the scheduling: n / 32 gives the threads
+ * dozens of pieces to balance, and the floor keeps small builds in one. */
 #define TASK_MIN(n) ((n) / 32 > 2048 ? (n) / 32 : 2048)
 
 /* An axis-aligned box; lane 3 is padding. Aligned for whole-vector loads. */
@@ -94,9 +94,7 @@ typedef struct {
 } children;
 
 /* One thread's builder over a part of the shared arrays. New nodes are
- * taken from next, within the caller's reserved region; a node of at most
- * stop primitives is not split but handed to on_stop (the tasks, in the top
- * part of the build). */
+ * taken from next, within the region reserved for the subtree it builds. */
 typedef struct builder builder;
 struct builder {
 	prim_rec *rec;
@@ -106,10 +104,7 @@ struct builder {
 	work *stack;
 	int sp, cap;
 	int depth;
-	int stop;
-	int threads;        /* for the binning of large nodes in the top part */
-	int (*on_stop)(builder *b, work w);
-	void *ctx;
+	int threads;        /* > 1: bin large nodes on that many threads */
 };
 
 /* Written as x < y ? x : y, which compiles to minss/minps without branches
@@ -517,8 +512,6 @@ static int build_subtree(builder *b, work w)
 		children ch;
 		if (w.depth > b->depth)
 			b->depth = w.depth;
-		if (count <= b->stop)
-			return b->on_stop(b, w);
 		if (!choose_split(b, first, count, &bounds, &w.cbounds, &ch))
 			return 0;
 		int child = b->next;
@@ -546,81 +539,207 @@ static int run_builder(builder *b, work w)
 	return 0;
 }
 
-/* A subtree left to a thread: its root, the region reserved for the nodes
- * below it, and what the build made there. */
+/* Work for the pool: a node, and the region of the node array reserved for
+ * the nodes below it. A node over c primitives has at most 2c - 2 nodes below
+ * it: its two children at the region's start, then the left child's region
+ * (2l - 2 nodes), then the right child's. Every node's place is therefore
+ * fixed by the tree alone, whichever thread builds it and when. */
 typedef struct {
-	work root;
-	int region, used, depth, failed;
-} task;
+	work w;
+	int region;
+} item;
 
+/* What was done with an item, for compact_tree: a large node split once (left:
+ * how many primitives went left), or a subtree built whole (used: how many
+ * nodes it took at the start of its region). */
+typedef struct {
+	int node, left, used;
+} record;
+
+/* The threads share one list of items. A thread takes the largest; a node over
+ * more than task_min primitives is split once and its children go back on the
+ * list, a smaller one is built whole, without locking, into its region. So
+ * the second thread starts as soon as the root is split, and both take part
+ * in the top of the tree, which used to be built on one. */
 typedef struct {
 	builder shared;     /* rec, index and nodes */
-	task *tasks;
-	int n_tasks, cap_tasks;
-	int *by_size;       /* task numbers, largest first: the order they are taken in */
-	atomic_int taken;
-} task_list;
+	int task_min, threads;
+	pthread_mutex_t lock;
+	pthread_cond_t more;        /* signalled when items arrive or the work ends */
+	item *items;
+	int n_items, cap_items;
+	int busy;                   /* threads working on an item */
+	record *records;
+	int n_records, cap_records;
+	int depth, failed;
+} pool;
 
-/* on_stop of the top part: the node becomes the next task. */
-static int add_task(builder *b, work w)
+/* Returns 0, or -1 when an array cannot grow. Under the lock. */
+static int grow(void **a, int *cap, int n, size_t size)
 {
-	task_list *l = b->ctx;
-	if (l->n_tasks == l->cap_tasks) {
-		int cap = l->cap_tasks ? 2 * l->cap_tasks : 64;
-		task *t = realloc(l->tasks, (size_t)cap * sizeof *t);
-		if (!t)
-			return -1;
-		l->tasks = t;
-		l->cap_tasks = cap;
+	if (n < *cap)
+		return 0;
+	int c = *cap ? 2 * *cap : 64;
+	void *p = realloc(*a, (size_t)c * size);
+	if (!p)
+		return -1;
+	*a = p;
+	*cap = c;
+	return 0;
+}
+
+static int add_item(pool *p, item it)
+{
+	if (grow((void **)&p->items, &p->cap_items, p->n_items, sizeof *p->items) != 0)
+		return -1;
+	p->items[p->n_items++] = it;
+	return 0;
+}
+
+/* The largest item first, so that no thread is left with a big one at the end. */
+static item take_item(pool *p)
+{
+	int best = 0;
+	for (int i = 1; i < p->n_items; i++)
+		if (p->shared.nodes[p->items[i].w.node].count > p->shared.nodes[p->items[best].w.node].count)
+			best = i;
+	item it = p->items[best];
+	p->items[best] = p->items[--p->n_items];
+	return it;
+}
+
+/* Splits a large node once into the start of its region. Returns the children
+ * as items (2), or 0 when it stays a leaf. */
+static int split_item(builder *b, item it, item out[2], int *left)
+{
+	bvh_node *node = &b->nodes[it.w.node];
+	int first = node->left_first, count = node->count;
+	box4 bounds = node_box(node);
+	children ch;
+	if (!choose_split(b, first, count, &bounds, &it.w.cbounds, &ch))
+		return 0;
+	int child = it.region;
+	for (int k = 0; k < 2; k++) {
+		set_node_box(&b->nodes[child + k], &ch.box[k]);
+		b->nodes[child + k].left_first = k == 0 ? first : first + ch.left;
+		b->nodes[child + k].count = k == 0 ? ch.left : count - ch.left;
 	}
-	l->tasks[l->n_tasks++] = (task){ w, 0, 0, 0, 0 };
-	return 0;
+	node->left_first = child;
+	node->count = 0;
+	out[0] = (item){ { child, it.w.depth + 1, ch.cbounds[0] }, child + 2 };
+	out[1] = (item){ { child + 1, it.w.depth + 1, ch.cbounds[1] }, child + 2 * ch.left };
+	*left = ch.left;
+	return 2;
 }
 
-static int never_stop(builder *b, work w)
+static void *run_pool(void *arg)
 {
-	(void)b, (void)w;
-	return 0;
-}
-
-static void *run_tasks(void *arg)
-{
-	task_list *l = arg;
-	builder b = l->shared;
-	b.stop = 0;
+	pool *p = arg;
+	builder b = p->shared;
 	b.threads = 1;
-	b.on_stop = never_stop;
+	b.depth = 0;
 	b.cap = STACK_INIT;
 	b.stack = malloc(STACK_INIT * sizeof *b.stack);
-	for (int i; (i = atomic_fetch_add(&l->taken, 1)) < l->n_tasks;) {
-		task *t = &l->tasks[l->by_size[i]];
-		b.next = t->region;
-		b.sp = 0;
-		b.depth = 0;
-		t->failed = !b.stack || run_builder(&b, t->root) != 0;
-		t->used = b.next - t->region;
-		t->depth = b.depth;
+	pthread_mutex_lock(&p->lock);
+	if (!b.stack)
+		p->failed = 1;
+	for (;;) {
+		while (p->n_items == 0 && p->busy > 0 && !p->failed)
+			pthread_cond_wait(&p->more, &p->lock);
+		if (p->n_items == 0 || p->failed)
+			break;
+		/* Alone with the only item (the root): bin it on all threads. */
+		b.threads = p->n_items == 1 && p->busy == 0 ? p->threads : 1;
+		item it = take_item(p), out[2];
+		p->busy++;
+		pthread_mutex_unlock(&p->lock);
+
+		record r = { it.w.node, 0, -1 };
+		int n_out = 0, failed = 0;
+		if (b.nodes[it.w.node].count > p->task_min) {
+			if (it.w.depth > b.depth)
+				b.depth = it.w.depth;
+			n_out = split_item(&b, it, out, &r.left);
+			if (n_out == 0)
+				r.used = 0;
+		} else {
+			b.next = it.region;
+			b.sp = 0;
+			failed = run_builder(&b, it.w) != 0;
+			r.used = b.next - it.region;
+		}
+
+		pthread_mutex_lock(&p->lock);
+		p->busy--;
+		if (failed || grow((void **)&p->records, &p->cap_records, p->n_records, sizeof *p->records) != 0)
+			p->failed = 1;
+		else
+			p->records[p->n_records++] = r;
+		for (int k = 0; k < n_out && !p->failed; k++)
+			if (add_item(p, out[k]) != 0)
+				p->failed = 1;
+		pthread_cond_broadcast(&p->more);
 	}
+	if (b.depth > p->depth)
+		p->depth = b.depth;
+	pthread_mutex_unlock(&p->lock);
 	free(b.stack);
 	return NULL;
 }
 
-/* Moves each task's nodes down to follow the previous ones, in task order,
- * and corrects the child indices that pointed into the region. Returns the
- * node count. */
-static int close_regions(bvh_node *nodes, const task_list *l, int next)
+static int by_node(const void *a, const void *b)
 {
-	for (int i = 0; i < l->n_tasks; i++) {
-		const task *t = &l->tasks[i];
-		int shift = t->region - next;
-		memmove(&nodes[next], &nodes[t->region], (size_t)t->used * sizeof *nodes);
-		for (int k = next; k < next + t->used; k++)
-			if (nodes[k].count == 0)
-				nodes[k].left_first -= shift;
-		if (nodes[t->root.node].count == 0)
-			nodes[t->root.node].left_first -= shift;
-		next += t->used;
+	const record *x = a, *y = b;
+	return (x->node > y->node) - (x->node < y->node);
+}
+
+static const record *find_record(const pool *p, int node)
+{
+	record key = { node, 0, 0 };
+	return bsearch(&key, p->records, p->n_records, sizeof key, by_node);
+}
+
+/* Closes up the regions' unused ends. The nodes move down to the places a
+ * one-thread depth-first build would have given them (each split node's two
+ * children, then the left child's subtree, then the right's), which is the
+ * order of the regions themselves, so a node never moves up and a move never
+ * overwrites a node not yet moved. Returns the node count, or -1. */
+static int compact_tree(bvh_node *nodes, pool *p, int n)
+{
+	typedef struct {
+		int at, old, count, region;     /* new and old place, primitives, region */
+	} visit;
+	qsort(p->records, p->n_records, sizeof *p->records, by_node);
+	visit *stack = malloc(((size_t)p->n_records + 1) * sizeof *stack);
+	if (!stack)
+		return -1;
+	int sp = 0, next = 1;
+	stack[sp++] = (visit){ 0, 0, n, 1 };
+	while (sp > 0) {
+		visit v = stack[--sp];
+		const record *r = find_record(p, v.old);
+		if (!r) {                       /* cannot happen: every item leaves a record */
+			free(stack);
+			return -1;
+		}
+		if (r->used >= 0) {             /* built whole: its nodes in one block */
+			int shift = v.region - next;
+			memmove(&nodes[next], &nodes[v.region], (size_t)r->used * sizeof *nodes);
+			for (int k = next; k < next + r->used; k++)
+				if (nodes[k].count == 0)
+					nodes[k].left_first -= shift;
+			if (nodes[v.at].count == 0)
+				nodes[v.at].left_first = next;
+			next += r->used;
+			continue;
+		}
+		memmove(&nodes[next], &nodes[v.region], 2 * sizeof *nodes);
+		nodes[v.at].left_first = next;
+		stack[sp++] = (visit){ next + 1, v.region + 1, v.count - r->left, v.region + 2 * r->left };
+		stack[sp++] = (visit){ next, v.region, r->left, v.region + 2 };
+		next += 2;
 	}
+	free(stack);
 	return next;
 }
 
@@ -630,8 +749,8 @@ static int thread_count(void)
 	return n < 1 ? 1 : n > MAX_THREADS ? MAX_THREADS : (int)n;
 }
 
-/* The build proper, once all memory is there: the top part, then the tasks on
- * up to threads threads. Returns the node count, or -1. */
+/* The build proper, once all memory is there, on up to threads threads.
+ * Returns the node count, or -1. */
 static int build_tree(builder *b, int n, int threads)
 {
 	box4 bounds, cbounds;
@@ -639,51 +758,31 @@ static int build_tree(builder *b, int n, int threads)
 	set_node_box(&b->nodes[0], &bounds);
 	b->nodes[0].left_first = 0;
 	b->nodes[0].count = n;
-	b->next = 1;
-	task_list l = { .shared = *b };
-	b->ctx = &l;
-	b->stop = TASK_MIN(n);
-	b->threads = threads;
-	b->on_stop = add_task;
-	if (run_builder(b, (work){ 0, 1, cbounds }) != 0) {
-		free(l.tasks);
+	pool p = { .shared = *b, .task_min = TASK_MIN(n), .threads = threads };
+	if (pthread_mutex_init(&p.lock, NULL) != 0)
+		return -1;
+	if (pthread_cond_init(&p.more, NULL) != 0) {
+		pthread_mutex_destroy(&p.lock);
 		return -1;
 	}
-	int region = b->next;
-	for (int i = 0; i < l.n_tasks; i++) {
-		l.tasks[i].region = region;
-		region += 2 * b->nodes[l.tasks[i].root.node].count - 2;
+	int n_nodes = -1;
+	if (add_item(&p, (item){ { 0, 1, cbounds }, 1 }) == 0) {
+		pthread_t th[MAX_THREADS];
+		int started = 0;
+		for (; started < threads - 1 && n > p.task_min; started++)
+			if (pthread_create(&th[started], NULL, run_pool, &p) != 0)
+				break;
+		run_pool(&p);
+		for (int i = 0; i < started; i++)
+			pthread_join(th[i], NULL);
+		b->depth = p.depth;
+		if (!p.failed)
+			n_nodes = compact_tree(b->nodes, &p, n);
 	}
-	/* Largest first, so that no thread is left with a big task at the end. */
-	l.by_size = malloc(((size_t)l.n_tasks + 1) * sizeof *l.by_size);
-	if (!l.by_size) {
-		free(l.tasks);
-		return -1;
-	}
-	for (int i = 0; i < l.n_tasks; i++) {
-		int k = i, c = b->nodes[l.tasks[i].root.node].count;
-		for (; k > 0 && b->nodes[l.tasks[l.by_size[k - 1]].root.node].count < c; k--)
-			l.by_size[k] = l.by_size[k - 1];
-		l.by_size[k] = i;
-	}
-	atomic_init(&l.taken, 0);
-	pthread_t th[MAX_THREADS];
-	int started = 0;
-	for (; started < threads - 1 && started < l.n_tasks - 1; started++)
-		if (pthread_create(&th[started], NULL, run_tasks, &l) != 0)
-			break;
-	run_tasks(&l);
-	for (int i = 0; i < started; i++)
-		pthread_join(th[i], NULL);
-	int rc = 0;
-	for (int i = 0; i < l.n_tasks; i++) {
-		rc |= l.tasks[i].failed;
-		if (l.tasks[i].depth > b->depth)
-			b->depth = l.tasks[i].depth;
-	}
-	int n_nodes = rc ? -1 : close_regions(b->nodes, &l, b->next);
-	free(l.by_size);
-	free(l.tasks);
+	pthread_cond_destroy(&p.more);
+	pthread_mutex_destroy(&p.lock);
+	free(p.items);
+	free(p.records);
 	return n_nodes;
 }
 
