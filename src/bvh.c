@@ -307,40 +307,34 @@ static void fill_bins_par(const prim_rec *r, int count, const binning *g, bin bi
 
 /* Best plane on one axis, by a right-to-left sweep for the right sides and a
  * left-to-right sweep for the left sides. Only planes with primitives on both
- * sides count, so a chosen split always makes progress. Empty bins are
- * skipped: the plane after an empty bin splits like the plane before it, and
- * small nodes, the majority, leave most bins empty. Equal costs go to the
- * more even split: when every area is 0 (primitives on one line) all costs
- * tie, and taking the first plane would peel off one bin at a time and make
- * the tree needlessly deep. */
+ * sides count, so a chosen split always makes progress. Empty bins are not
+ * skipped, which would be a branch the processor cannot guess (small nodes
+ * leave half their bins empty): an empty box grows nothing, so the plane
+ * after an empty bin costs what the plane before it did, and a tie does not
+ * replace the best. Equal costs go to the more even split: when every area is
+ * 0 (primitives on one line) all costs tie, and taking the first plane would
+ * peel off one bin at a time and make the tree needlessly deep. */
 static void best_on_axis(const bin bins[BINS], int axis, split *best)
 {
 	float right_cost[BINS];     /* right_cost[k]: area * count of bins k+1 .. BINS-1 */
 	int right_count[BINS];
 	box4 acc = box_empty();
 	int n = 0;
-	float cost = 0.0f;
 	for (int k = BINS - 1; k > 0; k--) {
-		if (bins[k].count > 0) {
-			box_grow(&acc, &bins[k].box);
-			n += bins[k].count;
-			cost = box_area(&acc) * (float)n;
-		}
-		right_cost[k - 1] = cost;
+		box_grow(&acc, &bins[k].box);
+		n += bins[k].count;
+		right_cost[k - 1] = box_area(&acc) * (float)n;
 		right_count[k - 1] = n;
 	}
 	acc = box_empty();
 	n = 0;
 	for (int k = 0; k < BINS - 1; k++) {
-		if (bins[k].count == 0)
-			continue;
 		box_grow(&acc, &bins[k].box);
 		n += bins[k].count;
-		if (right_count[k] == 0)
-			break;
 		float c = box_area(&acc) * (float)n + right_cost[k];
 		int imbalance = abs(n - right_count[k]);
-		if (c < best->cost || (c == best->cost && imbalance < best->imbalance)) {
+		if (n > 0 && right_count[k] > 0 &&
+		    (c < best->cost || (c == best->cost && imbalance < best->imbalance))) {
 			best->axis = axis;
 			best->bin = k;
 			best->cost = c;
@@ -835,13 +829,12 @@ static int thread_count(void)
 	return n < 1 ? 1 : n > MAX_THREADS ? MAX_THREADS : (int)n;
 }
 
-/* The build proper, once all memory is there, on up to threads threads.
- * Returns the node count, or -1. */
-static int build_tree(builder *b, int n, int threads)
+/* The build proper, once the records are there, on up to threads threads;
+ * bounds and cbounds are all primitives' box and centroids' box. Returns the
+ * node count, or -1. */
+static int build_tree(builder *b, int n, int threads, const box4 *bounds, const box4 *cbounds)
 {
-	box4 bounds, cbounds;
-	range_bounds(b->rec, n, &bounds, &cbounds);
-	set_node_box(&b->nodes[0], &bounds);
+	set_node_box(&b->nodes[0], bounds);
 	b->nodes[0].left_first = 0;
 	b->nodes[0].count = n;
 	pool p = { .shared = *b, .task_min = TASK_MIN(n), .threads = threads };
@@ -852,7 +845,7 @@ static int build_tree(builder *b, int n, int threads)
 		return -1;
 	}
 	int n_nodes = -1;
-	if (add_item(&p, (item){ { 0, 1, cbounds }, 1 }) == 0) {
+	if (add_item(&p, (item){ { 0, 1, *cbounds }, 1 }) == 0) {
 		pthread_t th[MAX_THREADS];
 		int started = 0;
 		for (; started < threads - 1 && n > p.task_min; started++)
@@ -888,17 +881,26 @@ double bvh_sah_cost(const bvh_node *nodes, int n_nodes)
 	return cost;
 }
 
-static void init_records(prim_rec *rec, int *index, bvh_box_fn *box_of, const void *ctx, int n)
+/* Every primitive's record, and the box of all boxes and of all centroids,
+ * which the root needs, in the same pass. */
+static void init_records(builder *b, bvh_box_fn *box_of, const void *ctx, int n, box4 *bounds, box4 *cbounds)
 {
+	*bounds = box_empty();
+	*cbounds = box_empty();
 	for (int i = 0; i < n; i++) {
-		bvh_box b;
-		box_of(ctx, i, &b);
+		bvh_box box;
+		box_of(ctx, i, &box);
+		prim_rec *r = &b->rec[i];
 		for (int a = 0; a < 3; a++) {
-			rec[i].box.lo[a] = b.min[a];
-			rec[i].box.hi[a] = b.max[a];
+			r->box.lo[a] = box.min[a];
+			r->box.hi[a] = box.max[a];
 		}
-		rec[i].box.lo[3] = rec[i].box.hi[3] = 0.0f;
-		index[i] = i;
+		r->box.lo[3] = r->box.hi[3] = 0.0f;
+		b->index[i] = i;
+		float c[4];
+		centroid(r, c);
+		box_grow(bounds, &r->box);
+		box_grow_point(cbounds, c);
 	}
 }
 
@@ -995,8 +997,9 @@ static int build(bvh_box_fn *box_of, const void *ctx, int n, int threads, bvh_tr
 		bvh_free(t);
 		return -1;
 	}
-	init_records(b.rec, b.index, box_of, ctx, n);
-	int n_nodes = build_tree(&b, n, threads > 0 ? threads : thread_count());
+	box4 bounds, cbounds;
+	init_records(&b, box_of, ctx, n, &bounds, &cbounds);
+	int n_nodes = build_tree(&b, n, threads > 0 ? threads : thread_count(), &bounds, &cbounds);
 	if (n_nodes < 0) {
 		free_builder(&b);
 		bvh_free(t);
