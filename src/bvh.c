@@ -31,6 +31,7 @@
 #include <limits.h>
 #include <pthread.h>
 #include <stdatomic.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
@@ -1017,6 +1018,50 @@ static int build(bvh_box_fn *box_of, const void *ctx, int n, int threads, bvh_tr
 	b.nodes = NULL;
 	free_builder(&b);
 	return 0;
+}
+
+/* One part of bvh_gather; element sizes of 64 bytes (dev_prim) get a copy of
+ * constant size, which the compiler inlines. */
+typedef struct {
+	char *out;
+	const char *in;
+	size_t size;
+	const int *index;
+	int lo, hi;
+} gather_job;
+
+static void *gather_part(void *arg)
+{
+	const gather_job *j = arg;
+	if (j->size == 64)
+		for (int i = j->lo; i < j->hi; i++)
+			memcpy(j->out + (size_t)i * 64, j->in + (size_t)j->index[i] * 64, 64);
+	else
+		for (int i = j->lo; i < j->hi; i++)
+			memcpy(j->out + (size_t)i * j->size, j->in + (size_t)j->index[i] * j->size, j->size);
+	return NULL;
+}
+
+/* The reads are independent, unlike those of an in-place permutation, which
+ * follows one long cycle from miss to miss: on igea's 268,686 primitives of
+ * 64 bytes, 4 ms on two threads against 7.7 ms for the cycles. */
+void *bvh_gather(const void *elems, size_t size, const int *index, int n)
+{
+	if (n < 0 || size == 0 || (size_t)n > SIZE_MAX / size)
+		return NULL;
+	char *out = alloc_big(n ? (size_t)n * size : 1);
+	if (!out)
+		return NULL;
+	gather_job j[2] = { { out, elems, size, index, 0, n / 2 }, { out, elems, size, index, n / 2, n } };
+	pthread_t th;
+	if (n < PAR_BIN_MIN || thread_count() < 2 || pthread_create(&th, NULL, gather_part, &j[1]) != 0) {
+		j[0].hi = n;
+		gather_part(&j[0]);
+		return out;
+	}
+	gather_part(&j[0]);
+	pthread_join(th, NULL);
+	return out;
 }
 
 void bvh_free(bvh_tree *t)

@@ -13,6 +13,8 @@
 #ifndef ECLAT_BVH_H
 #define ECLAT_BVH_H
 
+#include <stddef.h>
+
 #include "../kernels/shared.h"
 
 typedef struct {
@@ -64,6 +66,11 @@ typedef struct {
 
 int bvh_widen(const bvh_node *nodes, const int *roots, int n_roots, bvh_wide *out);
 void bvh_wide_free(bvh_wide *w);
+
+/* A new array of n elements of size bytes, out[i] = elems[index[i]] (a tree's
+ * prim_index puts primitives in leaf order), copied on up to two threads.
+ * Returns it (free() it), or NULL when memory runs out. */
+void *bvh_gather(const void *elems, size_t size, const int *index, int n);
 
 /* The SAH cost of a tree, as in bvh_tree.sah_cost. */
 double bvh_sah_cost(const bvh_node *nodes, int n_nodes);

@@ -435,7 +435,18 @@ static int build_tree(struct lowering *lw, struct prim_list *list, bvh_tree *t, 
 	}
 	if (rc)
 		return -1;
-	permute(list->p, t->prim_index, list->n);
+	/* A copy in leaf order, or with no memory for one, the slower permutation
+	 * in place. The copy (64 bytes a primitive) hardly raises the peak: the
+	 * builder has just given back its records and the unused part of its
+	 * node array, about as much. */
+	dev_prim *ordered = bvh_gather(list->p, sizeof *list->p, t->prim_index, list->n);
+	if (ordered) {
+		free(list->p);
+		list->p = ordered;
+		list->cap = list->n;
+	} else {
+		permute(list->p, t->prim_index, list->n);
+	}
 	st->build_ms = ms_since(&t0);
 	st->prims = list->n;
 	st->nodes = t->n_nodes;
