@@ -176,6 +176,14 @@ static void set_node_box(bvh_node *n, const box4 *b)
 	n->max_z = b->hi[2];
 }
 
+/* One node's term of the SAH cost (bvh_sah_cost). */
+static double node_cost(const bvh_node *node, double root_area)
+{
+	box4 b = node_box(node);
+	double ratio = root_area > 0.0 ? (double)box_area(&b) / root_area : 1.0;
+	return node->count > 0 ? ratio * node->count : ratio;
+}
+
 /* The bin of coordinate x. max_f(f, 0) also sends a NaN to bin 0, so no NaN
  * reaches the float-to-int conversion (undefined behaviour in C). */
 static int bin_of(float x, float origin, float scale)
@@ -784,9 +792,14 @@ static const record *find_record(const pool *p, int node)
  * one-thread depth-first build would have given them (each split node's two
  * children, then the left child's subtree, then the right's), which is the
  * order of the regions themselves, so a node never moves up and a move never
- * overwrites a node not yet moved. Returns the node count, or -1. */
-static int compact_tree(bvh_node *nodes, pool *p, int n)
+ * overwrites a node not yet moved. Returns the node count, with the SAH cost
+ * in *sah_cost, or -1. */
+static int compact_tree(bvh_node *nodes, pool *p, int n, double *sah_cost)
 {
+	/* The SAH cost on the way, node by node in their final order, which is
+	 * the sum bvh_sah_cost makes, without another pass over the nodes. */
+	box4 root = node_box(&nodes[0]);
+	double root_area = box_area(&root), cost = node_cost(&nodes[0], root_area);
 	typedef struct {
 		int at, old, count, region;     /* new and old place, primitives, region */
 	} visit;
@@ -806,9 +819,11 @@ static int compact_tree(bvh_node *nodes, pool *p, int n)
 		if (r->used >= 0) {             /* built whole: its nodes in one block */
 			int shift = v.region - next;
 			memmove(&nodes[next], &nodes[v.region], (size_t)r->used * sizeof *nodes);
-			for (int k = next; k < next + r->used; k++)
+			for (int k = next; k < next + r->used; k++) {
 				if (nodes[k].count == 0)
 					nodes[k].left_first -= shift;
+				cost += node_cost(&nodes[k], root_area);
+			}
 			if (nodes[v.at].count == 0)
 				nodes[v.at].left_first = next;
 			next += r->used;
@@ -816,11 +831,14 @@ static int compact_tree(bvh_node *nodes, pool *p, int n)
 		}
 		memmove(&nodes[next], &nodes[v.region], 2 * sizeof *nodes);
 		nodes[v.at].left_first = next;
+		cost += node_cost(&nodes[next], root_area);
+		cost += node_cost(&nodes[next + 1], root_area);
 		stack[sp++] = (visit){ next + 1, v.region + 1, v.count - r->left, v.region + 2 * r->left };
 		stack[sp++] = (visit){ next, v.region, r->left, v.region + 2 };
 		next += 2;
 	}
 	free(stack);
+	*sah_cost = cost;
 	return next;
 }
 
@@ -832,8 +850,8 @@ static int thread_count(void)
 
 /* The build proper, once the records are there, on up to threads threads;
  * bounds and cbounds are all primitives' box and centroids' box. Returns the
- * node count, or -1. */
-static int build_tree(builder *b, int n, int threads, const box4 *bounds, const box4 *cbounds)
+ * node count, with the tree's SAH cost in *sah_cost, or -1. */
+static int build_tree(builder *b, int n, int threads, const box4 *bounds, const box4 *cbounds, double *sah_cost)
 {
 	set_node_box(&b->nodes[0], bounds);
 	b->nodes[0].left_first = 0;
@@ -857,7 +875,7 @@ static int build_tree(builder *b, int n, int threads, const box4 *bounds, const 
 			pthread_join(th[i], NULL);
 		b->depth = p.depth;
 		if (!p.failed)
-			n_nodes = compact_tree(b->nodes, &p, n);
+			n_nodes = compact_tree(b->nodes, &p, n, sah_cost);
 	}
 	pthread_cond_destroy(&p.more);
 	pthread_mutex_destroy(&p.lock);
@@ -874,11 +892,8 @@ double bvh_sah_cost(const bvh_node *nodes, int n_nodes)
 	box4 root = node_box(&nodes[0]);
 	double root_area = box_area(&root);
 	double cost = 0.0;
-	for (int i = 0; i < n_nodes; i++) {
-		box4 b = node_box(&nodes[i]);
-		double ratio = root_area > 0.0 ? (double)box_area(&b) / root_area : 1.0;
-		cost += nodes[i].count > 0 ? ratio * nodes[i].count : ratio;
-	}
+	for (int i = 0; i < n_nodes; i++)
+		cost += node_cost(&nodes[i], root_area);
 	return cost;
 }
 
@@ -1000,7 +1015,8 @@ static int build(bvh_box_fn *box_of, const void *ctx, int n, int threads, bvh_tr
 	}
 	box4 bounds, cbounds;
 	init_records(&b, box_of, ctx, n, &bounds, &cbounds);
-	int n_nodes = build_tree(&b, n, threads > 0 ? threads : thread_count(), &bounds, &cbounds);
+	double sah_cost = 0.0;
+	int n_nodes = build_tree(&b, n, threads > 0 ? threads : thread_count(), &bounds, &cbounds, &sah_cost);
 	if (n_nodes < 0) {
 		free_builder(&b);
 		bvh_free(t);
@@ -1009,7 +1025,7 @@ static int build(bvh_box_fn *box_of, const void *ctx, int n, int threads, bvh_tr
 	t->n_nodes = n_nodes;
 	t->n_prims = n;
 	t->depth = b.depth;
-	t->sah_cost = bvh_sah_cost(b.nodes, n_nodes);
+	t->sah_cost = sah_cost;
 	/* Give back the unused tail of the 2n - 1 nodes; keep the block if the
 	 * shrink fails, it is still valid. */
 	t->nodes = realloc(b.nodes, (size_t)n_nodes * sizeof *b.nodes);
