@@ -2,8 +2,8 @@
  *
  * Top-down build with explicit, growable work stacks (no recursion, so
  * meshes of millions of primitives cannot overflow the C stack). At each node
- * the primitives' centroids are binned into 16 bins on each of the three axes
- * and the cheapest of the 3 * 15 candidate planes is taken: on the Stanford
+ * the primitives' centroids are binned into 16 bins (8 under 64 primitives) on
+ * each of the three axes and the cheapest candidate plane is taken: on the Stanford
  * meshes, trying all three axes gives trees 3-4% cheaper (SAH) than binning
  * only the axis of largest centroid extent. Nodes of at most SMALL primitives
  * (most nodes: the tree's last levels) instead sort their centroids on each
@@ -38,6 +38,7 @@
 #include <unistd.h>
 
 #define BINS 16
+#define SMALL_BINNED 64    /* binned nodes smaller than this use BINS / 2 bins */
 #define TWO_SETS_MIN 64    /* nodes binned into two sets of bins taken in turn */
 #define SMALL 12            /* nodes of at most this many primitives use the exact sweep */
 #define STACK_INIT 64
@@ -78,6 +79,8 @@ typedef struct {
 typedef struct {
 	float origin[4];
 	float scale[4];     /* bins per unit length; 0 marks an axis that cannot be split */
+	int nb;             /* bins in use */
+	float last;         /* nb - 1 */
 } binning;
 
 /* The chosen plane: primitives in bins 0 .. bin go left. */
@@ -186,10 +189,10 @@ static double node_cost(const bvh_node *node, double root_area)
 
 /* The bin of coordinate x. max_f(f, 0) also sends a NaN to bin 0, so no NaN
  * reaches the float-to-int conversion (undefined behaviour in C). */
-static int bin_of(float x, float origin, float scale)
+static int bin_of(float x, float origin, float scale, float last)
 {
 	float f = (x - origin) * scale;
-	return (int)min_f(max_f(f, 0.0f), (float)(BINS - 1));
+	return (int)min_f(max_f(f, 0.0f), last);
 }
 
 /* The centroid, halved before adding so that boxes near FLT_MAX do not overflow. */
@@ -214,12 +217,17 @@ static void range_bounds(const prim_rec *r, int count, box4 *bounds, box4 *cboun
 
 /* An axis whose centroid extent is zero, too small for a finite scale, or
  * overflowing, gets scale 0: all its centroids would share one bin anyway. */
-static binning make_binning(const box4 *cbounds)
+static binning make_binning(const box4 *cbounds, int count)
 {
-	binning g = { { 0.0f }, { 0.0f } };
+	/* Nodes under 64 primitives (four in five binned nodes) use 8 bins: the
+	 * planes between 16 would mostly cut empty bins, and clearing and sweeping
+	 * them was a tenth of the build. Trees cost 0.08% more (SAH, bunny and
+	 * igea), builds take 10% less. */
+	binning g = { { 0.0f }, { 0.0f }, count < SMALL_BINNED ? BINS / 2 : BINS, 0.0f };
+	g.last = (float)(g.nb - 1);
 	for (int a = 0; a < 3; a++) {
 		float extent = cbounds->hi[a] - cbounds->lo[a];
-		float scale = extent > 0.0f ? (float)BINS / extent : 0.0f;
+		float scale = extent > 0.0f ? (float)g.nb / extent : 0.0f;
 		g.origin[a] = cbounds->lo[a];
 		g.scale[a] = (scale > 0.0f && scale <= FLT_MAX) ? scale : 0.0f;
 	}
@@ -234,7 +242,7 @@ static inline void bin_prim(const prim_rec *r, const binning *g, bin bins[3][BIN
 	float c[4];
 	centroid(r, c);
 	for (int a = 0; a < 4; a++)
-		k[a] = bin_of(c[a], g->origin[a], g->scale[a]);
+		k[a] = bin_of(c[a], g->origin[a], g->scale[a], g->last);
 	for (int a = 0; a < 3; a++) {
 		box_grow(&bins[a][k[a]].box, &r->box);
 		bins[a][k[a]].count++;
@@ -250,7 +258,7 @@ static void fill_bins(const prim_rec *r, int count, const binning *gp, bin bins[
 	 * stores to bins never change *gp. */
 	const binning g0 = *gp, *g = &g0;
 	for (int a = 0; a < 3; a++)
-		for (int k = 0; k < BINS; k++) {
+		for (int k = 0; k < g->nb; k++) {
 			bins[a][k].box = box_empty();
 			bins[a][k].count = 0;
 		}
@@ -261,7 +269,7 @@ static void fill_bins(const prim_rec *r, int count, const binning *gp, bin bins[
 	}
 	bin odd[3][BINS];
 	for (int a = 0; a < 3; a++)
-		for (int k = 0; k < BINS; k++) {
+		for (int k = 0; k < g->nb; k++) {
 			odd[a][k].box = box_empty();
 			odd[a][k].count = 0;
 		}
@@ -273,7 +281,7 @@ static void fill_bins(const prim_rec *r, int count, const binning *gp, bin bins[
 	if (i < count)
 		bin_prim(&r[i], g, bins);
 	for (int a = 0; a < 3; a++)
-		for (int k = 0; k < BINS; k++) {
+		for (int k = 0; k < g->nb; k++) {
 			box_grow(&bins[a][k].box, &odd[a][k].box);
 			bins[a][k].count += odd[a][k].count;
 		}
@@ -308,7 +316,7 @@ static void fill_bins_par(const prim_rec *r, int count, const binning *g, bin bi
 	fill_bins(r, count / 2, g, bins);
 	pthread_join(th, NULL);
 	for (int a = 0; a < 3; a++)
-		for (int k = 0; k < BINS; k++) {
+		for (int k = 0; k < g->nb; k++) {
 			box_grow(&bins[a][k].box, &j.bins[a][k].box);
 			bins[a][k].count += j.bins[a][k].count;
 		}
@@ -323,13 +331,13 @@ static void fill_bins_par(const prim_rec *r, int count, const binning *g, bin bi
  * replace the best. Equal costs go to the more even split: when every area is
  * 0 (primitives on one line) all costs tie, and taking the first plane would
  * peel off one bin at a time and make the tree needlessly deep. */
-static void best_on_axis(const bin bins[BINS], int axis, split *best)
+static void best_on_axis(const bin bins[BINS], int nb, int axis, split *best)
 {
 	float right_cost[BINS];     /* right_cost[k]: area * count of bins k+1 .. BINS-1 */
 	int right_count[BINS];
 	box4 acc = box_empty();
 	int n = 0;
-	for (int k = BINS - 1; k > 0; k--) {
+	for (int k = nb - 1; k > 0; k--) {
 		box_grow(&acc, &bins[k].box);
 		n += bins[k].count;
 		right_cost[k - 1] = box_area(&acc) * (float)n;
@@ -337,7 +345,7 @@ static void best_on_axis(const bin bins[BINS], int axis, split *best)
 	}
 	acc = box_empty();
 	n = 0;
-	for (int k = 0; k < BINS - 1; k++) {
+	for (int k = 0; k < nb - 1; k++) {
 		box_grow(&acc, &bins[k].box);
 		n += bins[k].count;
 		float c = box_area(&acc) * (float)n + right_cost[k];
@@ -359,7 +367,7 @@ static split find_split(bin bins[3][BINS], const binning *g)
 	split best = { -1, 0, FLT_MAX, INT_MAX };
 	for (int a = 0; a < 3; a++)
 		if (g->scale[a] != 0.0f)
-			best_on_axis(bins[a], a, &best);
+			best_on_axis(bins[a], g->nb, a, &best);
 	return best;
 }
 
@@ -375,7 +383,7 @@ static void swap_prims(prim_rec *r, int *index, int i, int j)
 
 static int goes_left(const float c[4], const binning *g, const split *s)
 {
-	return bin_of(c[s->axis], g->origin[s->axis], g->scale[s->axis]) <= s->bin;
+	return bin_of(c[s->axis], g->origin[s->axis], g->scale[s->axis], g->last) <= s->bin;
 }
 
 /* Moves the primitives of bins 0 .. s->bin to the front, collecting both
@@ -405,11 +413,11 @@ static int partition(prim_rec *r, int *index, int count, const binning *g, const
 }
 
 /* Each side's box is the union of its bins on the split axis. */
-static void boxes_from_bins(const bin bins[BINS], int split_bin, children *ch)
+static void boxes_from_bins(const bin bins[BINS], int nb, int split_bin, children *ch)
 {
 	ch->box[0] = box_empty();
 	ch->box[1] = box_empty();
-	for (int k = 0; k < BINS; k++)
+	for (int k = 0; k < nb; k++)
 		box_grow(&ch->box[k <= split_bin ? 0 : 1], &bins[k].box);
 }
 
@@ -558,7 +566,7 @@ static int choose_split(builder *b, int first, int count, const box4 *bounds, co
 			split_middle(r, count, ch);
 		return 1;
 	}
-	binning g = make_binning(cbounds);
+	binning g = make_binning(cbounds, count);
 	fill_bins_par(r, count, &g, bins, b->threads);
 	s = find_split(bins, &g);
 	if (s.axis < 0) {
@@ -572,7 +580,7 @@ static int choose_split(builder *b, int first, int count, const box4 *bounds, co
 		split_middle(r, count, ch);
 		return 1;
 	}
-	boxes_from_bins(bins[s.axis], s.bin, ch);
+	boxes_from_bins(bins[s.axis], g.nb, s.bin, ch);
 	return 1;
 }
 

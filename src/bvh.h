@@ -30,7 +30,8 @@ typedef struct {
 	double sah_cost;    /* SAH cost with C_node = 1, C_prim = 1, relative to the root area */
 } bvh_tree;
 
-/* Binned SAH build (16 bins per axis, exact SAH for small nodes, leaves of at most BVH_MAX_LEAF primitives).
+/* Binned SAH build (16 bins per axis, 8 under 64 primitives, exact SAH for
+ * small nodes, leaves of at most BVH_MAX_LEAF primitives).
  * n may be 0 (one empty leaf). Boxes may be flat (zero extent on an axis).
  * Returns 0, or -1 when memory runs out (t is then left empty). */
 #define BVH_MAX_LEAF 4
