@@ -905,27 +905,63 @@ double bvh_sah_cost(const bvh_node *nodes, int n_nodes)
 	return cost;
 }
 
-/* Every primitive's record, and the box of all boxes and of all centroids,
- * which the root needs, in the same pass. */
-static void init_records(builder *b, bvh_box_fn *box_of, const void *ctx, int n, box4 *bounds, box4 *cbounds)
+/* The records of primitives lo .. hi - 1, and the box of their boxes and of
+ * their centroids, which the root needs. */
+typedef struct {
+	builder *b;
+	bvh_box_fn *box_of;
+	const void *ctx;
+	int lo, hi;
+	box4 bounds, cbounds;
+} init_job;
+
+static void *init_part(void *arg)
 {
-	*bounds = box_empty();
-	*cbounds = box_empty();
-	for (int i = 0; i < n; i++) {
+	init_job *j = arg;
+	box4 bounds = box_empty(), cbounds = box_empty();
+	for (int i = j->lo; i < j->hi; i++) {
 		bvh_box box;
-		box_of(ctx, i, &box);
-		prim_rec *r = &b->rec[i];
+		j->box_of(j->ctx, i, &box);
+		prim_rec *r = &j->b->rec[i];
 		for (int a = 0; a < 3; a++) {
 			r->box.lo[a] = box.min[a];
 			r->box.hi[a] = box.max[a];
 		}
 		r->box.lo[3] = r->box.hi[3] = 0.0f;
-		b->index[i] = i;
+		j->b->index[i] = i;
 		float c[4];
 		centroid(r, c);
-		box_grow(bounds, &r->box);
-		box_grow_point(cbounds, c);
+		box_grow(&bounds, &r->box);
+		box_grow_point(&cbounds, c);
 	}
+	j->bounds = bounds;
+	j->cbounds = cbounds;
+	return NULL;
+}
+
+/* All records, the second half on a thread of its own for large builds: the
+ * boxes come from the caller's primitives (64 bytes each for the meshes),
+ * read here for the first time, and the records are fresh memory. igea,
+ * eclat --check --stats, best of 12 interleaved runs: 76.6 -> 72.4 ms. */
+static void init_records(builder *b, bvh_box_fn *box_of, const void *ctx, int n, int threads,
+			 box4 *bounds, box4 *cbounds)
+{
+	init_job j[2] = { { .b = b, .box_of = box_of, .ctx = ctx, .lo = 0, .hi = n / 2 },
+			  { .b = b, .box_of = box_of, .ctx = ctx, .lo = n / 2, .hi = n } };
+	pthread_t th;
+	if (threads < 2 || n < PAR_BIN_MIN || pthread_create(&th, NULL, init_part, &j[1]) != 0) {
+		j[0].hi = n;
+		init_part(&j[0]);
+		*bounds = j[0].bounds;
+		*cbounds = j[0].cbounds;
+		return;
+	}
+	init_part(&j[0]);
+	pthread_join(th, NULL);
+	*bounds = j[0].bounds;
+	*cbounds = j[0].cbounds;
+	box_grow(bounds, &j[1].bounds);
+	box_grow(cbounds, &j[1].cbounds);
 }
 
 /* The builder's large arrays, on transparent huge pages where the system
@@ -1022,9 +1058,10 @@ static int build(bvh_box_fn *box_of, const void *ctx, int n, int threads, bvh_tr
 		return -1;
 	}
 	box4 bounds, cbounds;
-	init_records(&b, box_of, ctx, n, &bounds, &cbounds);
+	threads = threads > 0 ? threads : thread_count();
+	init_records(&b, box_of, ctx, n, threads, &bounds, &cbounds);
 	double sah_cost = 0.0;
-	int n_nodes = build_tree(&b, n, threads > 0 ? threads : thread_count(), &bounds, &cbounds, &sah_cost);
+	int n_nodes = build_tree(&b, n, threads, &bounds, &cbounds, &sah_cost);
 	if (n_nodes < 0) {
 		free_builder(&b);
 		bvh_free(t);

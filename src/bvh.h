@@ -40,9 +40,10 @@ int bvh_build(const bvh_box *boxes, int n, bvh_tree *t);
  * does not depend on threads. */
 int bvh_build_threads(const bvh_box *boxes, int n, int threads, bvh_tree *t);
 /* The same, with primitive i's box from box_of(ctx, i, &box), called once for
- * each i in order on the calling thread: the builder writes the boxes straight
- * into its own records, and the caller needs no array of them (fresh memory
- * costs a page fault every 4 KiB, which is not cheap on a virtual machine). */
+ * each i, from two threads at once for large n (so it must not change shared
+ * state): the builder writes the boxes straight into its own records, and the
+ * caller needs no array of them (fresh memory costs a page fault every 4 KiB,
+ * which is not cheap on a virtual machine). */
 typedef void bvh_box_fn(const void *ctx, int i, bvh_box *out);
 int bvh_build_fn(bvh_box_fn *box_of, const void *ctx, int n, bvh_tree *t);
 
