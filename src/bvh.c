@@ -584,6 +584,26 @@ static int choose_split(builder *b, int first, int count, const box4 *bounds, co
 	return 1;
 }
 
+/* Splits node index (its centroid bounds cbounds), writing its two children
+ * at child and child + 1 as leaves over the two sides; returns 1, or 0 when
+ * the node stays a leaf. */
+static int split_node(builder *b, int index, const box4 *cbounds, int child, children *ch)
+{
+	bvh_node *node = &b->nodes[index];
+	int first = node->left_first, count = node->count;
+	box4 bounds = node_box(node);
+	if (!choose_split(b, first, count, &bounds, cbounds, ch))
+		return 0;
+	for (int k = 0; k < 2; k++) {
+		set_node_box(&b->nodes[child + k], &ch->box[k]);
+		b->nodes[child + k].left_first = k == 0 ? first : first + ch->left;
+		b->nodes[child + k].count = k == 0 ? ch->left : count - ch->left;
+	}
+	node->left_first = child;
+	node->count = 0;
+	return 1;
+}
+
 /* Returns 0, or -1 when the stack cannot grow. */
 static int push(builder *b, work w)
 {
@@ -603,23 +623,13 @@ static int push(builder *b, work w)
 static int build_subtree(builder *b, work w)
 {
 	for (;;) {
-		bvh_node *node = &b->nodes[w.node];
-		int first = node->left_first, count = node->count;
-		box4 bounds = node_box(node);
 		children ch;
 		if (w.depth > b->depth)
 			b->depth = w.depth;
-		if (!choose_split(b, first, count, &bounds, &w.cbounds, &ch))
-			return 0;
 		int child = b->next;
+		if (!split_node(b, w.node, &w.cbounds, child, &ch))
+			return 0;
 		b->next += 2;
-		for (int k = 0; k < 2; k++) {
-			set_node_box(&b->nodes[child + k], &ch.box[k]);
-			b->nodes[child + k].left_first = k == 0 ? first : first + ch.left;
-			b->nodes[child + k].count = k == 0 ? ch.left : count - ch.left;
-		}
-		node->left_first = child;
-		node->count = 0;
 		if (push(b, (work){ child + 1, w.depth + 1, ch.cbounds[1] }) != 0)
 			return -1;
 		w = (work){ child, w.depth + 1, ch.cbounds[0] };
@@ -709,20 +719,10 @@ static item take_item(pool *p)
  * as items (2), or 0 when it stays a leaf. */
 static int split_item(builder *b, item it, item out[2], int *left)
 {
-	bvh_node *node = &b->nodes[it.w.node];
-	int first = node->left_first, count = node->count;
-	box4 bounds = node_box(node);
 	children ch;
-	if (!choose_split(b, first, count, &bounds, &it.w.cbounds, &ch))
-		return 0;
 	int child = it.region;
-	for (int k = 0; k < 2; k++) {
-		set_node_box(&b->nodes[child + k], &ch.box[k]);
-		b->nodes[child + k].left_first = k == 0 ? first : first + ch.left;
-		b->nodes[child + k].count = k == 0 ? ch.left : count - ch.left;
-	}
-	node->left_first = child;
-	node->count = 0;
+	if (!split_node(b, it.w.node, &it.w.cbounds, child, &ch))
+		return 0;
 	out[0] = (item){ { child, it.w.depth + 1, ch.cbounds[0] }, child + 2 };
 	out[1] = (item){ { child + 1, it.w.depth + 1, ch.cbounds[1] }, child + 2 * ch.left };
 	*left = ch.left;
