@@ -288,12 +288,27 @@ static void fill_bins(const prim_rec *r, int count, const binning *gp, bin bins[
 		}
 }
 
-/* The second half of a large node's binning, on a thread of its own. */
+/* Runs fn(a) here and fn(b) on a thread of its own when two is set and a
+ * thread can be had, or both here. The passes split this way over all
+ * primitives (records, the root's binning, bvh_gather) give the same result
+ * either way. */
+static void run_halves(void *(*fn)(void *), void *a, void *b, int two)
+{
+	pthread_t th;
+	int started = two && pthread_create(&th, NULL, fn, b) == 0;
+	fn(a);
+	if (started)
+		pthread_join(th, NULL);
+	else
+		fn(b);
+}
+
+/* One half of a large node's binning. */
 typedef struct {
 	const prim_rec *r;
 	int count;
 	const binning *g;
-	bin bins[3][BINS];
+	bin (*bins)[BINS];
 } bin_job;
 
 static void *fill_bins_job(void *arg)
@@ -308,18 +323,17 @@ static void *fill_bins_job(void *arg)
  * the result is the same as one pass. */
 static void fill_bins_par(const prim_rec *r, int count, const binning *g, bin bins[3][BINS], int threads)
 {
-	bin_job j = { .r = r + count / 2, .count = count - count / 2, .g = g };
-	pthread_t th;
-	if (threads < 2 || count < PAR_BIN_MIN || pthread_create(&th, NULL, fill_bins_job, &j) != 0) {
+	if (threads < 2 || count < PAR_BIN_MIN) {
 		fill_bins(r, count, g, bins);
 		return;
 	}
-	fill_bins(r, count / 2, g, bins);
-	pthread_join(th, NULL);
+	bin second[3][BINS];
+	bin_job j[2] = { { r, count / 2, g, bins }, { r + count / 2, count - count / 2, g, second } };
+	run_halves(fill_bins_job, &j[0], &j[1], 1);
 	for (int a = 0; a < 3; a++)
 		for (int k = 0; k < g->nb; k++) {
-			box_grow(&bins[a][k].box, &j.bins[a][k].box);
-			bins[a][k].count += j.bins[a][k].count;
+			box_grow(&bins[a][k].box, &second[a][k].box);
+			bins[a][k].count += second[a][k].count;
 		}
 }
 
@@ -950,16 +964,7 @@ static void init_records(builder *b, bvh_box_fn *box_of, const void *ctx, int n,
 {
 	init_job j[2] = { { .b = b, .box_of = box_of, .ctx = ctx, .lo = 0, .hi = n / 2 },
 			  { .b = b, .box_of = box_of, .ctx = ctx, .lo = n / 2, .hi = n } };
-	pthread_t th;
-	if (threads < 2 || n < PAR_BIN_MIN || pthread_create(&th, NULL, init_part, &j[1]) != 0) {
-		j[0].hi = n;
-		init_part(&j[0]);
-		*bounds = j[0].bounds;
-		*cbounds = j[0].cbounds;
-		return;
-	}
-	init_part(&j[0]);
-	pthread_join(th, NULL);
+	run_halves(init_part, &j[0], &j[1], threads >= 2 && n >= PAR_BIN_MIN);
 	*bounds = j[0].bounds;
 	*cbounds = j[0].cbounds;
 	box_grow(bounds, &j[1].bounds);
@@ -1116,14 +1121,7 @@ void *bvh_gather(const void *elems, size_t size, const int *index, int n)
 	if (!out)
 		return NULL;
 	gather_job j[2] = { { out, elems, size, index, 0, n / 2 }, { out, elems, size, index, n / 2, n } };
-	pthread_t th;
-	if (n < PAR_BIN_MIN || thread_count() < 2 || pthread_create(&th, NULL, gather_part, &j[1]) != 0) {
-		j[0].hi = n;
-		gather_part(&j[0]);
-		return out;
-	}
-	gather_part(&j[0]);
-	pthread_join(th, NULL);
+	run_halves(gather_part, &j[0], &j[1], n >= PAR_BIN_MIN && thread_count() >= 2);
 	return out;
 }
 
