@@ -99,6 +99,15 @@ static int all_in_range(const float *v, int n)
 	return 1;
 }
 
+/* The same for a vector of the scene, in double precision. */
+static int vector_in_range(const double v[3])
+{
+	for (int k = 0; k < 3; k++)
+		if (!(fabs(v[k]) <= LOWER_FAR))   /* false for NaN */
+			return 0;
+	return 1;
+}
+
 /* Colours past LOWER_FAR (rgb 1e39 is infinite in single precision) would turn
  * every path that meets them into infinity or NaN. */
 static int material_in_range(const scene_material *m)
@@ -394,9 +403,9 @@ static void box_of_prim(const void *ctx, int i, bvh_box *out)
 }
 
 /* Puts p into the tree's leaf order, p[i] = old p[index[i]], in place by
- * following each cycle of the permutation: a new array would be fresh memory,
- * a page fault every 64 primitives, which costs more than the moves here.
- * index is used up (each entry becomes its own position). */
+ * following each cycle of the permutation: build_tree's fallback when there is
+ * no memory for bvh_gather's copy, which is faster (the cycles go from cache
+ * miss to cache miss). index is used up (each entry becomes its own position). */
 static void permute(dev_prim *p, int *index, int n)
 {
 	for (int start = 0; start < n; start++) {
@@ -639,8 +648,7 @@ static int light_in_range(const scene_light *l)
 	const double *v[] = { l->position, l->point_at, l->axis1, l->axis2 };
 	int ok = all_in_range(l->color, 3);
 	for (int i = 0; i < 4 && ok; i++)
-		for (int k = 0; k < 3 && ok; k++)
-			ok = fabs(v[i][k]) <= LOWER_FAR;
+		ok = vector_in_range(v[i]);
 	if (!ok)
 		diag_warning(l->loc, "light_source skipped: a position or colour passes %g, too much for "
 		             "the device's single precision", LOWER_FAR);
@@ -710,12 +718,11 @@ static int lower_camera(const scene *s, dev_params *p)
 	const scene_camera *c = &s->camera;
 	const double *v[] = { c->location, c->direction, c->right, c->up, c->focal_point };
 	for (int i = 0; i < 5; i++)
-		for (int k = 0; k < 3; k++)
-			if (!(fabs(v[i][k]) <= LOWER_FAR)) {
-				diag_error(c->loc, "the camera's vectors pass %g, too much for the device's "
-				           "single precision: bring the scene nearer the origin", LOWER_FAR);
-				return -1;
-			}
+		if (!vector_in_range(v[i])) {
+			diag_error(c->loc, "the camera's vectors pass %g, too much for the device's "
+			           "single precision: bring the scene nearer the origin", LOWER_FAR);
+			return -1;
+		}
 	const float *sky = s->has_sky ? s->sky : s->background;
 	if (!all_in_range(sky, 3)) {
 		diag_error(SRC_NOWHERE, "the %s colour passes %g, too much for the device's single "
