@@ -108,6 +108,73 @@ typedef struct {
 	float4 fade_color;     /* rgb: interior's fade_color */
 } dev_finish;
 
+/* ---- Appearance: patterns, maps and pigments (kernels/pattern.cl, kernels/texture.cl).
+ *
+ * A pattern maps a point in its own space to a value (pattern_value); the value
+ * picks a colour, or blends two, from a map (dev_map_entry). Continuous patterns
+ * (gradient, bozo, wood...) give a value in [0, 1] after turbulence, frequency,
+ * phase and wave type; POV-Ray's discrete patterns (checker, hexagon, brick,
+ * cubic, square, triangular) give the index of a list entry: 0, 1, 2... as a float.
+ * The numbers are POV-Ray 3.7's: a mask of a pattern renders POV-Ray's pixels. */
+enum {                       /* ORDER: the names in src/eval_pattern.c */
+	PATTERN_SOLID = 0,   /* no pattern: the map's first entry */
+	PATTERN_AGATE, PATTERN_AOI, PATTERN_BOXED, PATTERN_BOZO, PATTERN_BRICK,
+	PATTERN_BUMPS, PATTERN_CELLS, PATTERN_CHECKER, PATTERN_CRACKLE, PATTERN_CUBIC,
+	PATTERN_CYLINDRICAL, PATTERN_DENTS, PATTERN_FACETS, PATTERN_GRADIENT, PATTERN_GRANITE,
+	PATTERN_HEXAGON, PATTERN_LEOPARD, PATTERN_MARBLE, PATTERN_ONION, PATTERN_PLANAR,
+	PATTERN_QUILTED, PATTERN_RADIAL, PATTERN_RIPPLES, PATTERN_SPHERICAL, PATTERN_SPIRAL1,
+	PATTERN_SPIRAL2, PATTERN_SPOTTED, PATTERN_SQUARE, PATTERN_TRIANGULAR, PATTERN_WAVES,
+	PATTERN_WOOD, PATTERN_WRINKLES,
+	PATTERN_COUNT
+};
+/* POV-Ray's wave types, applied to a continuous pattern's value. */
+enum { WAVE_RAMP = 0, WAVE_SINE, WAVE_TRIANGLE, WAVE_SCALLOP, WAVE_CUBIC, WAVE_POLY };
+/* Warps, applied in order to the point before the pattern (dev_warp). */
+enum { WARP_TURBULENCE = 0, WARP_REPEAT, WARP_BLACK_HOLE };
+
+/* One warp, 64 bytes.
+ * turbulence: a.xyz turbulence, a.w omega; b.x lambda, b.y octaves.
+ * repeat: a.xyz the repeat vector, b.xyz offset, c.xyz flip (1 or 0 per axis).
+ * black_hole: a.xyz centre, a.w radius; b.x strength, b.y falloff,
+ *   b.z 1 for inverse; c.xyz repeat, c.w 1 when repeated; turbulence not kept. */
+typedef struct {
+	float4 a, b, c;
+	int kind, pad0, pad1, pad2;
+} dev_warp;
+
+/* A pattern with its modifiers, 144 bytes.
+ * rows: the affine map from world space to the pattern's space (the inverse of
+ *   the transformations written after the pattern and around the texture).
+ * The classic turbulence of agate, marble, wood... (turbulence written in the
+ *   pattern, not in a warp) is the first warp, with flags & PATTERN_TURB_FIRST.
+ * params, by kind (POV-Ray's defaults filled in by the host):
+ *   agate:     params[0].x agate_turb (1)
+ *   brick:     params[0].xyz brick_size (<8, 3, 4.5>), w mortar (0.5)
+ *   crackle:   params[0].xyz form (<-1, 1, 0>), w metric (2); params[1].x offset (0),
+ *              y 1 for solid
+ *   gradient:  params[0].xyz the axis vector
+ *   quilted:   params[0].x control0 (1), y control1 (1)
+ *   spiral1/2: params[0].x the number of arms
+ *   granite, leopard, ...: none */
+typedef struct {
+	float4 rows[3];
+	int kind, wave, noise_generator, flags;
+	float frequency, phase, wave_exponent, pad;
+	float4 params[2];
+	int warp_first, warp_count;   /* dev_warp entries, applied in order */
+	int map_first, map_count;     /* dev_map_entry entries, by increasing value */
+	float4 pad2;
+} dev_pattern;
+enum { PATTERN_TURB_FIRST = 1 };
+
+/* An entry of a pattern's map, 32 bytes: a colour, or a nested pigment (a
+ * pigment_map, or checker pigment { } pigment { }) when pigment >= 0. */
+typedef struct {
+	float4 colour;   /* rgb; w: filter */
+	float transmit, value;
+	int pigment, pad;
+} dev_map_entry;
+
 /* The objects buffer: one int of POV-Ray's object flags per scene object (the
  * values of scene.h's OBJ_ flags), indexed by dev_prim.object. */
 enum { OBJECT_NO_SHADOW = 1, OBJECT_NO_IMAGE = 2, OBJECT_NO_REFLECTION = 4, OBJECT_DOUBLE_ILLUMINATE = 16 };
