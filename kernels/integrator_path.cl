@@ -17,82 +17,68 @@
 #define DIM_EMITTER 4
 #define DIM_AREA 8
 
-/* What the camera ray found first, for the AOVs. */
-typedef struct {
-	float3 albedo, normal;
-	float depth;
-	int object;    /* -1: nothing */
-} first_hit;
-
-inline float3 path_radiance(global const bvh_node *nodes, global const dev_prim *prims,
-                            global const float4 *normals, global const dev_material *materials,
-                            global const dev_light *lights, global const dev_emitter *emitters,
-                            global const dev_params *p, int px, int py, uint key, uint *counts,
-                            first_hit *first)
+/* The objects a ray of this bounce may not see: POV-Ray's no_image for the
+ * camera's, no_reflection after a reflection. */
+inline int path_skip(int depth, bool reflected)
 {
+	return depth == 0 ? OBJECT_NO_IMAGE : reflected ? OBJECT_NO_REFLECTION : 0;
+}
+
+inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, first_hit *first)
+{
+	global const dev_params *p = sc->p;
 	float3 d = camera_ray_dir(p, px, py, rng_uniform(key, 0), rng_uniform(key, 1));
 	float3 o = camera_lens(p, &d, light_square_to_disc(rng_uniform(key, 2), rng_uniform(key, 3)));
 	float3 radiance = (float3)(0.0f), beta = (float3)(1.0f), sigma = (float3)(0.0f);
 	float last_pdf = 0.0f;   /* 0: the last bounce was a single direction, or the camera */
-	counts[COUNT_RAYS + RAY_CAMERA]++;
+	bool reflected = false;
+	sc->counts[COUNT_RAYS + RAY_CAMERA]++;
 	for (int depth = 0;; depth++) {
-		traverse_hit hit = traverse_closest(nodes, prims, p->n_prims, p->n_planes, o, d, 0.0f,
-		                                    INFINITY, counts, depth == 0 ? RAY_CAMERA : RAY_BOUNCE);
+		traverse_hit hit = visibility_closest(sc, o, d, 0.0f, INFINITY, path_skip(depth, reflected),
+		                                      depth == 0 ? RAY_CAMERA : RAY_BOUNCE);
 		if (hit.prim < 0) {
 			radiance += beta * p->background.xyz;
 			break;
 		}
 		if (sigma.x > 0.0f || sigma.y > 0.0f || sigma.z > 0.0f)
 			beta *= exp(-sigma * hit.t);   /* Beer-Lambert inside an absorbing interior */
-		float3 x = o + hit.t * d;
-		intersect_surface surf = intersect_surface_at(prims, normals, hit.prim, hit.inst, x);
-		global const dev_material *m = &materials[surf.material];
-		bool entering = dot(surf.ng, d) < 0.0f;
-		/* surfaces are two-sided, as in POV-Ray: both normals turn to face the ray */
-		float3 ng = entering ? surf.ng : -surf.ng, n = entering ? surf.ns : -surf.ns;
-		float3 wo = -d;
-		if (depth == 0) {
-			first->albedo = clamp(m->diffuse.xyz + m->reflect.xyz + m->absorb.w * m->transmit.xyz, 0.0f, 1.0f);
-			first->normal = n;
-			first->depth = hit.t;
-			first->object = surf.object;
-		}
+		shading_point sp = texture_point(sc, hit, o, d);
+		pigment_colour pc = texture_pigment(sc, &sp);
+		bsdf m = material_bsdf(sp.m, pc.rgb, pc.filter, pc.transmit);
+		float3 ng = sp.ng, n = sp.ns, wo = -d, x = sp.x;
+		texture_first_hit(first, &sp, clamp(m.diffuse + m.reflect.xyz + m.absorb.w * m.transmit.xyz, 0.0f, 1.0f));
 
-		if (surf.emitter >= 0) {
+		if (sp.emitter >= 0) {
 			float w = 1.0f;
 			if (p->integrator == INTEGRATOR_PATH && last_pdf > 0.0f)
-				w = light_power_heuristic(last_pdf, light_pdf(emitters, &prims[hit.prim], o, d, hit.t));
-			radiance += beta * w * m->emission.xyz;
+				w = light_power_heuristic(last_pdf, light_pdf(sc->emitters, &sc->prims[hit.prim], o, d, hit.t));
+			radiance += beta * w * m.emission;
 		} else {
-			radiance += beta * m->emission.xyz;
+			radiance += beta * m.emission;
 		}
 		if (depth >= p->max_depth)
 			break;
 
-		material_lobes lobes = material_lobes_at(m, dot(n, wo), entering);
-		/* Leave the surface by a margin relative to the coordinates' magnitude, so
-		 * the next ray does not find the surface it starts on. */
-		float eps = 1e-4f * fmax(1.0f, fmax(fabs(x.x), fmax(fabs(x.y), fabs(x.z))));
-		float3 xa = x + eps * ng;   /* above the surface, on the side the ray came from */
+		material_lobes lobes = material_lobes_at(&m, dot(n, wo), sp.entering);
+		float3 xa = x + sp.eps * ng;   /* above the surface, on the side the ray came from */
 		uint dim = RNG_DIMS_PER_BOUNCE * (uint)(depth + 1);
-		radiance += beta * light_pov(nodes, prims, lights, p, m, &lobes, xa, ng, n, wo, key,
-		                             dim + DIM_AREA, counts);
+		radiance += beta * light_pov(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_AREA);
 		if (p->integrator == INTEGRATOR_PATH)
-			radiance += beta * light_emitters(nodes, prims, materials, emitters, p, m, &lobes, xa,
-			                                  ng, n, wo, key, dim + DIM_EMITTER, counts);
+			radiance += beta * light_emitters(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_EMITTER);
 
 		float3 u = (float3)(rng_uniform(key, dim + DIM_LOBE), rng_uniform(key, dim + DIM_LOBE + 1),
 		                    rng_uniform(key, dim + DIM_LOBE + 2));
-		material_sample_t s = material_sample(m, &lobes, n, wo, entering, u);
+		material_sample_t s = material_sample(&m, &lobes, n, wo, sp.entering, u);
 		/* a shading normal can send a reflection below the true surface: lost */
 		if ((s.weight.x <= 0.0f && s.weight.y <= 0.0f && s.weight.z <= 0.0f) ||
 		    (dot(ng, s.wi) > 0.0f) == (bool)s.transmitted)
 			break;
 		beta *= s.weight;
 		last_pdf = s.pdf;
+		reflected = !s.transmitted;
 		if (s.transmitted) {
-			o = x - eps * ng;
-			sigma = entering ? m->absorb.xyz : (float3)(0.0f);
+			o = x - sp.eps * ng;
+			sigma = sp.entering ? m.absorb.xyz : (float3)(0.0f);
 		} else {
 			o = xa;
 		}
@@ -103,7 +89,7 @@ inline float3 path_radiance(global const bvh_node *nodes, global const dev_prim 
 				break;
 			beta /= q;
 		}
-		counts[COUNT_RAYS + RAY_BOUNCE]++;
+		sc->counts[COUNT_RAYS + RAY_BOUNCE]++;
 	}
 	return radiance;
 }
@@ -115,18 +101,15 @@ inline uint path_tests(const uint *counts)
 	return counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA];
 }
 
-kernel void render_pass(global const bvh_node *nodes, global const dev_prim *prims,
-                        global const float4 *normals, global const dev_material *materials,
-                        global const dev_light *lights,
-                        global const dev_emitter *emitters, global const dev_params *p,
-                        global float4 *film, global uint *counters, global float4 *aov,
-                        global const dev_finish *finishes, global const int *objects)
+kernel void render_pass(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, global float4 *film,
+                        global uint *counters, global float4 *aov)
 {
 	int pixel = get_global_id(0);
 	if (pixel >= p->width * p->height)
 		return;
 	int px = pixel % p->width, py = pixel / p->width;
 	uint counts[COUNT_N] = { 0 };
+	scene_data sc = { SCENE_BUFFERS(SCENE_FIELD) p, counts };
 	float4 acc = film[pixel];
 	float4 a0 = 0.0f, a1 = 0.0f, a2 = 0.0f;
 	if (p->aov) {
@@ -138,8 +121,7 @@ kernel void render_pass(global const bvh_node *nodes, global const dev_prim *pri
 		uint key = rng_key((uint)pixel, (uint)(p->sample_base + s), (uint)p->seed);
 		uint tests = path_tests(counts);
 		first_hit first = { (float3)(0.0f), (float3)(0.0f), 0.0f, -1 };
-		float3 l = path_radiance(nodes, prims, normals, materials, lights, emitters, p, px, py, key,
-		                         counts, &first);
+		float3 l = path_radiance(&sc, px, py, key, &first);
 		if (first.object >= 0) {
 			a0 += (float4)(first.albedo, 1.0f);
 			a1 += (float4)(first.normal, 0.0f);

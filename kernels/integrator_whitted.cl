@@ -13,7 +13,6 @@
  * frames, the reflected and refracted rays being each frame's children. */
 
 #define WHITTED_FRAMES 24        /* trace levels the kernel follows, at most */
-#define WHITTED_CROSSINGS 32     /* transparent surfaces a shadow ray passes, at most */
 #define WHITTED_REGIONS 40       /* an area light's grid regions waiting, at most */
 #define POV_EPSILON 1e-10f       /* POV-Ray's EPSILON */
 
@@ -47,17 +46,6 @@ typedef struct {
 	int object;
 } whitted_point;
 
-typedef struct {
-	global const bvh_node *nodes;
-	global const dev_prim *prims;
-	global const float4 *normals;
-	global const dev_finish *finishes;
-	global const int *objects;
-	global const dev_light *lights;
-	global const dev_params *p;
-	uint *counts;
-} whitted_scene;
-
 inline float whitted_max3(float3 c)
 {
 	return fmax(c.x, fmax(c.y, c.z));
@@ -83,63 +71,6 @@ inline float3 whitted_metallic_tint(float metallic, float cos_angle, float3 pigm
 	return (float3)(1.0f) + metallic * (1.0f - f) * (pigment - (float3)(1.0f));
 }
 
-/* The closest surface along (o, d) in (tmin, tmax) that does not carry the flags
- * in skip. */
-inline traverse_hit whitted_closest(const whitted_scene *sc, float3 o, float3 d, float tmin, float tmax,
-                                    int skip, int kind, intersect_surface *surf)
-{
-	for (;;) {
-		traverse_hit h = traverse_closest(sc->nodes, sc->prims, sc->p->n_prims, sc->p->n_planes, o, d, tmin,
-		                                  tmax, sc->counts, kind);
-		if (h.prim < 0)
-			return h;
-		*surf = intersect_surface_at(sc->prims, sc->normals, h.prim, h.inst, o + h.t * d);
-		if (!(sc->objects[surf->object] & skip))
-			return h;
-		tmin = h.t;
-	}
-}
-
-/* POV-Ray's interior fade over a distance t travelled inside. */
-inline float3 whitted_fade(global const dev_finish *f, float t)
-{
-	float fd = f->interior.y, fp = f->interior.z;
-	float3 fc = f->fade_color.xyz;
-	if (fabs(fd) <= POV_EPSILON || fp <= 0.0f)
-		return (float3)(1.0f);
-	if (fp >= 1000.0f)
-		return exp(-((float3)(1.0f) - fc) * (t / fd));
-	return fc + ((float3)(1.0f) - fc) / (1.0f + pow(t / fd, fp));
-}
-
-/* What of the light reaches x from the distance dist along l: each surface
- * between filters it by pigment * filter + transmit, and by its interior's fade
- * where the ray crosses the inside; opaque surfaces stop it (TracePointLightShadowRay). */
-inline float3 whitted_shadow(const whitted_scene *sc, float3 x, float3 l, float dist, float3 colour, float eps)
-{
-	float3 o = x;
-	float travelled = 0.0f;
-	for (int i = 0; i < WHITTED_CROSSINGS; i++) {
-		intersect_surface surf;
-		sc->counts[COUNT_RAYS + RAY_SHADOW]++;
-		/* POV-Ray's shadow rays start on the surface and ignore what is nearer than a tolerance */
-		traverse_hit h = whitted_closest(sc, o, l, eps, dist - travelled - eps, OBJECT_NO_SHADOW, RAY_SHADOW,
-		                                 &surf);
-		if (h.prim < 0)
-			return colour;
-		global const dev_finish *f = &sc->finishes[surf.material];
-		float filter = f->pigment.w, transmit = f->ambient.w;
-		if (fabs(filter) + fabs(transmit) < sc->p->classic.w)
-			return (float3)(0.0f);
-		colour *= f->pigment.xyz * filter + transmit;
-		if (dot(surf.ng, l) > 0.0f)   /* leaving the object: its interior faded the light */
-			colour *= whitted_fade(f, h.t);
-		o += h.t * l;
-		travelled += h.t;
-	}
-	return (float3)(0.0f);
-}
-
 /* The position of grid light (u, v) of an area light, and its axes when oriented
  * (TraceAreaLightSubsetShadowRay, without jitter). */
 inline float3 whitted_grid_point(global const dev_light *l, int size1, int size2, int u, int v, float3 a1, float3 a2)
@@ -160,18 +91,18 @@ inline float3 whitted_grid_point(global const dev_light *l, int size1, int size2
 }
 
 /* The light of one grid point that reaches x. */
-inline float3 whitted_grid_sample(const whitted_scene *sc, global const dev_light *l, int s1, int s2, int u, int v,
+inline float3 whitted_grid_sample(const scene_data *sc, global const dev_light *l, int s1, int s2, int u, int v,
                                   float3 a1, float3 a2, float3 x, float3 colour, float eps)
 {
 	float3 to = whitted_grid_point(l, s1, s2, u, v, a1, a2) - x;
 	float dist = length(to);
-	return dist > 0.0f ? whitted_shadow(sc, x, to / dist, dist, colour, eps) : colour;
+	return dist > 0.0f ? visibility_shadow(sc, x, to / dist, eps, dist - eps, colour) : colour;
 }
 
 /* An area light's shadow: POV-Ray samples the grid's corners and splits a region
  * in four while its corners differ (or down to the adaptive level), averaging
  * the four quarters; the grid is size1 x size2 lights, unjittered. */
-inline float3 whitted_area_shadow(const whitted_scene *sc, global const dev_light *l, float3 x, float3 to_light,
+inline float3 whitted_area_shadow(const scene_data *sc, global const dev_light *l, float3 x, float3 to_light,
                                   float3 colour, float eps)
 {
 	int s1 = (int)l->grid.x, s2 = (int)l->grid.y;
@@ -218,28 +149,30 @@ inline float3 whitted_area_shadow(const whitted_scene *sc, global const dev_ligh
 }
 
 /* POV-Ray's diffuse term: pigment * light * |N.L|^brilliance * diffuse * opacity. */
-inline float3 whitted_diffuse(global const dev_finish *f, float3 n, float3 l, float3 light, float opacity)
+inline float3 whitted_diffuse(global const dev_material *f, float3 pigment, float3 n, float3 l, float3 light,
+                              float opacity)
 {
 	float c = fabs(dot(n, l));
 	float k = f->terms.x != 1.0f ? pow(c, f->terms.x) : c;
-	return k * f->emission.w * opacity * f->pigment.xyz * light;
+	return k * f->emission.w * opacity * pigment * light;
 }
 
 /* phong: the light direction against the mirror direction of the eye ray,
  * to the power phong_size; metallic tints it by the pigment. */
-inline float3 whitted_phong(global const dev_finish *f, float3 n, float3 d, float3 l, float3 light)
+inline float3 whitted_phong(global const dev_material *f, float3 pigment, float3 n, float3 d, float3 l, float3 light)
 {
 	float3 r = d - 2.0f * dot(d, n) * n;
 	float c = dot(r, l);
 	if (c <= 0.0f || !(f->highlight.y < 60.0f || c > 0.0008f))
 		return (float3)(0.0f);
 	float k = f->highlight.x * pow(c, f->highlight.y);
-	float3 tint = f->terms.y > 0.0f ? whitted_metallic_tint(f->terms.y, dot(n, l), f->pigment.xyz) : (float3)(1.0f);
+	float3 tint = f->terms.y > 0.0f ? whitted_metallic_tint(f->terms.y, dot(n, l), pigment) : (float3)(1.0f);
 	return k * light * tint;
 }
 
 /* specular: the half vector against the normal, to the power 1/roughness. */
-inline float3 whitted_specular(global const dev_finish *f, float3 n, float3 d, float3 l, float3 light)
+inline float3 whitted_specular(global const dev_material *f, float3 pigment, float3 n, float3 d, float3 l,
+                               float3 light)
 {
 	float3 h = 0.5f * (l - d);
 	float len = length(h);
@@ -249,7 +182,7 @@ inline float3 whitted_specular(global const dev_finish *f, float3 n, float3 d, f
 	if (c <= 0.0f)
 		return (float3)(0.0f);
 	float k = f->highlight.z * pow(c, f->highlight.w);
-	float3 tint = f->terms.y > 0.0f ? whitted_metallic_tint(f->terms.y, dot(n, l), f->pigment.xyz) : (float3)(1.0f);
+	float3 tint = f->terms.y > 0.0f ? whitted_metallic_tint(f->terms.y, dot(n, l), pigment) : (float3)(1.0f);
 	return k * light * tint;
 }
 
@@ -272,8 +205,8 @@ inline float3 whitted_light_ray(global const dev_light *l, float3 x, float3 *dir
 }
 
 /* The sum of every light_source's diffuse and highlights at a point (ComputeDiffuseLight). */
-inline float3 whitted_lights(const whitted_scene *sc, global const dev_finish *f, const whitted_point *pt,
-                             float opacity)
+inline float3 whitted_lights(const scene_data *sc, global const dev_material *f, float3 pigment,
+                             const whitted_point *pt, float opacity)
 {
 	float3 sum = (float3)(0.0f);
 	bool both_sides = sc->objects[pt->object] & OBJECT_DOUBLE_ILLUMINATE;
@@ -291,16 +224,16 @@ inline float3 whitted_lights(const whitted_scene *sc, global const dev_finish *f
 			if (l->grid.x > 0.0f)
 				light = whitted_area_shadow(sc, l, from, dir, light, pt->eps);
 			else
-				light = whitted_shadow(sc, from, dir, dist, light, pt->eps);
+				light = visibility_shadow(sc, from, dir, pt->eps, dist - pt->eps, light);
 		}
 		if (fabs(light.x) <= POV_EPSILON && fabs(light.y) <= POV_EPSILON && fabs(light.z) <= POV_EPSILON)
 			continue;
-		sum += whitted_diffuse(f, pt->n, dir, light, opacity);
+		sum += whitted_diffuse(f, pigment, pt->n, dir, light, opacity);
 		if (!l->shadowless) {   /* POV-Ray's shadowless lights are fill lights: no highlights */
 			if (f->highlight.x > 0.0f)
-				sum += whitted_phong(f, pt->n, pt->d, dir, light);
+				sum += whitted_phong(f, pigment, pt->n, pt->d, dir, light);
 			if (f->highlight.z > 0.0f)
-				sum += whitted_specular(f, pt->n, pt->d, dir, light);
+				sum += whitted_specular(f, pigment, pt->n, pt->d, dir, light);
 		}
 	}
 	return sum;
@@ -309,7 +242,8 @@ inline float3 whitted_lights(const whitted_scene *sc, global const dev_finish *f
 /* How much the surface reflects at this angle, and the reflected ray's weight
  * (ComputeReflectivity, then reflection's metallic). ior_ratio: the ior on the
  * far side over the near side's. */
-inline float3 whitted_reflectivity(global const dev_finish *f, float cos_i, float ior_ratio, float *weight)
+inline float3 whitted_reflectivity(global const dev_material *f, float3 pigment, float cos_i, float ior_ratio,
+                                   float *weight)
 {
 	float3 lo = f->reflection.xyz, hi = f->reflection_max.xyz, r;
 	if (f->terms.w > 0.0f) {   /* fresnel */
@@ -330,7 +264,7 @@ inline float3 whitted_reflectivity(global const dev_finish *f, float cos_i, floa
 		r = fabs(frac) < POV_EPSILON ? lo : fabs(frac - 1.0f) < POV_EPSILON ? hi : frac * hi + (1.0f - frac) * lo;
 	}
 	if (f->terms.z != 0.0f)
-		r *= whitted_metallic_tint(f->terms.z, cos_i, f->pigment.xyz);
+		r *= whitted_metallic_tint(f->terms.z, cos_i, pigment);
 	return r;
 }
 
@@ -341,7 +275,7 @@ inline whitted_ray whitted_child(float3 o, float3 d, float3 mult, float exponent
 }
 
 /* Traces one ray: its surface's own colour, and the rays it spawns as children. */
-inline whitted_frame whitted_shade(const whitted_scene *sc, whitted_ray ray, first_hit *first)
+inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_hit *first)
 {
 	whitted_frame fr;
 	fr.ray = ray;
@@ -351,37 +285,33 @@ inline whitted_frame whitted_shade(const whitted_scene *sc, whitted_ray ray, fir
 	if (ray.level >= p->max_depth || ray.weight < p->classic.w)
 		return fr;
 	int skip = ray.kind & WRAY_REFLECTED ? OBJECT_NO_REFLECTION : OBJECT_NO_IMAGE;
-	intersect_surface surf;
 	int kind = ray.level == 0 ? RAY_CAMERA : RAY_BOUNCE;
-	traverse_hit hit = whitted_closest(sc, ray.o, ray.d, 0.0f, INFINITY, skip, kind, &surf);
+	traverse_hit hit = visibility_closest(sc, ray.o, ray.d, 0.0f, INFINITY, skip, kind);
 	if (hit.prim < 0) {
 		fr.colour = p->background.xyz;
 		return fr;
 	}
 	int level = ray.level + (ray.kind & WRAY_CONTINUED ? 0 : 1);
-	global const dev_finish *f = &sc->finishes[surf.material];
+	shading_point sp = texture_point(sc, hit, ray.o, ray.d);
+	pigment_colour pc = texture_pigment(sc, &sp);
+	global const dev_material *f = sp.m;
 	whitted_point pt;
 	pt.d = ray.d;
-	pt.x = ray.o + hit.t * ray.d;
-	pt.n = dot(surf.ns, ray.d) > 0.0f ? -surf.ns : surf.ns;
-	pt.eps = 1e-4f * fmax(1.0f, fmax(fabs(pt.x.x), fmax(fabs(pt.x.y), fabs(pt.x.z))));
-	pt.object = surf.object;
-	bool entering = dot(surf.ng, ray.d) < 0.0f;
-	float3 ng = entering ? surf.ng : -surf.ng;
-	if (first->object < 0) {
-		first->albedo = f->pigment.xyz;
-		first->normal = pt.n;
-		first->depth = hit.t;
-		first->object = surf.object;
-	}
+	pt.x = sp.x;
+	pt.n = dot(sp.ns, ray.d) > 0.0f ? -sp.ns : sp.ns;
+	pt.eps = sp.eps;
+	pt.object = sp.object;
+	bool entering = sp.entering;
+	float3 ng = sp.ng;
+	texture_first_hit(first, &sp, pc.rgb);
 
-	float3 pig = f->pigment.xyz;
-	float filter = f->pigment.w, transmit = f->ambient.w, ior = f->interior.x;
+	float3 pig = pc.rgb;
+	float filter = pc.filter, transmit = pc.transmit, ior = f->interior.x;
 	float cos_i = -dot(ray.d, pt.n);
 	float rweight = ray.weight;
-	float3 reflec = whitted_reflectivity(f, cos_i, entering ? ior : 1.0f / ior, &rweight);
+	float3 reflec = whitted_reflectivity(f, pig, cos_i, entering ? ior : 1.0f / ior, &rweight);
 	float opacity = 1.0f - filter - transmit;
-	fr.colour = pig * (f->ambient.xyz + f->emission.xyz) * opacity + whitted_lights(sc, f, &pt, opacity);
+	fr.colour = pig * (f->ambient.xyz + f->emission.xyz) * opacity + whitted_lights(sc, f, pig, &pt, opacity);
 
 	float3 filcol = pig * filter + transmit;
 	if (f->interior.w > 0.0f)   /* conserve_energy: what is reflected is not transmitted */
@@ -391,7 +321,7 @@ inline whitted_frame whitted_shade(const whitted_scene *sc, whitted_ray ray, fir
 	int image = ray.kind & WRAY_IMAGE;
 	if (trans > p->classic.w) {
 		float tweight = ray.weight * whitted_max3(fabs(filcol));
-		float3 att = entering ? (float3)(1.0f) : whitted_fade(f, hit.t);
+		float3 att = entering ? (float3)(1.0f) : visibility_fade(f, hit.t);
 		float ratio = entering ? 1.0f / ior : ior;
 		float3 below = pt.x - pt.eps * ng;
 		if (fabs(ratio - 1.0f) < POV_EPSILON) {
@@ -421,7 +351,7 @@ inline whitted_frame whitted_shade(const whitted_scene *sc, whitted_ray ray, fir
 
 /* The colour of a camera ray: POV-Ray's recursion, as a walk over a stack of
  * frames; a finished frame adds its colour to its parent's. */
-inline float3 whitted_radiance(const whitted_scene *sc, whitted_ray camera, first_hit *first)
+inline float3 whitted_radiance(const scene_data *sc, whitted_ray camera, first_hit *first)
 {
 	whitted_frame stack[WHITTED_FRAMES];
 	int sp = 0;
@@ -445,18 +375,15 @@ inline float3 whitted_radiance(const whitted_scene *sc, whitted_ray camera, firs
 	return result;
 }
 
-kernel void render_whitted(global const bvh_node *nodes, global const dev_prim *prims,
-                           global const float4 *normals, global const dev_material *materials,
-                           global const dev_light *lights, global const dev_emitter *emitters,
-                           global const dev_params *p, global float4 *film, global uint *counters,
-                           global float4 *aov, global const dev_finish *finishes, global const int *objects)
+kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, global float4 *film,
+                           global uint *counters, global float4 *aov)
 {
 	int pixel = get_global_id(0);
 	if (pixel >= p->width * p->height)
 		return;
 	int px = pixel % p->width, py = pixel / p->width;
 	uint counts[COUNT_N] = { 0 };
-	whitted_scene sc = { nodes, prims, normals, finishes, objects, lights, p, counts };
+	scene_data sc = { SCENE_BUFFERS(SCENE_FIELD) p, counts };
 	float3 d = camera_ray_dir(p, px, py, 0.5f, 0.5f);
 	whitted_ray camera = whitted_child(p->cam_location.xyz, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE);
 	first_hit first = { (float3)(0.0f), (float3)(0.0f), 0.0f, -1 };

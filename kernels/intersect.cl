@@ -149,6 +149,7 @@ inline float3 intersect_normal_to_world(global const dev_prim *p, float3 n)
  * triangle may take from its instance. */
 typedef struct {
 	float3 ng, ns;
+	float3 object_x;  /* the hit in its instance's space (a mesh's), else in world space */
 	int material, object;
 	int emitter;   /* index into the emitter table, or -1 */
 } intersect_surface;
@@ -169,7 +170,7 @@ inline intersect_surface intersect_surface_at(global const dev_prim *prims, glob
                                               int prim, int inst, float3 x)
 {
 	global const dev_prim *p = &prims[prim];
-	intersect_surface s = { (float3)(0.0f), (float3)(0.0f), p->material, p->object, -1 };
+	intersect_surface s = { (float3)(0.0f), (float3)(0.0f), x, p->material, p->object, -1 };
 	float3 lx = x;
 	if (inst >= 0) {
 		global const dev_prim *q = &prims[inst];
@@ -180,6 +181,7 @@ inline intersect_surface intersect_surface_at(global const dev_prim *prims, glob
 	} else if (p->type == PRIM_TRIANGLE || p->type == PRIM_SPHERE) {
 		s.emitter = p->link;
 	}
+	s.object_x = lx;
 	s.ng = prim_normal(p, lx);
 	s.ns = s.ng;
 	if (p->type == PRIM_SMOOTH_TRIANGLE) {

@@ -51,14 +51,12 @@ inline float light_spot(global const dev_light *l, float3 to_surface)
 }
 
 /* The sum over all light_sources of their contribution at x (normal n, facing wo). */
-inline float3 light_pov(global const bvh_node *nodes, global const dev_prim *prims,
-                        global const dev_light *lights, global const dev_params *p,
-                        global const dev_material *m, const material_lobes *lobes,
-                        float3 x, float3 ng, float3 n, float3 wo, uint key, uint dim, uint *counts)
+inline float3 light_pov(const scene_data *sc, const bsdf *m, const material_lobes *lobes,
+                        float3 x, float3 ng, float3 n, float3 wo, uint key, uint dim)
 {
 	float3 sum = (float3)(0.0f);
-	for (int i = 0; i < p->n_lights; i++) {
-		global const dev_light *l = &lights[i];
+	for (int i = 0; i < sc->p->n_lights; i++) {
+		global const dev_light *l = &sc->lights[i];
 		float3 pos = l->position.xyz;
 		if (l->axis1.w > 0.0f) {
 			float u = rng_uniform(key, dim + 2 * i), v = rng_uniform(key, dim + 2 * i + 1);
@@ -84,12 +82,10 @@ inline float3 light_pov(global const bvh_node *nodes, global const dev_prim *pri
 		float3 f = material_eval(m, lobes, n, wo, wi, &pdf);
 		if (k <= 0.0f || dot(ng, wi) <= 0.0f || (f.x <= 0.0f && f.y <= 0.0f && f.z <= 0.0f))
 			continue;
-		if (!l->shadowless && dist > 0.0f) {
-			counts[COUNT_RAYS + RAY_SHADOW]++;
-			if (traverse_any(nodes, prims, p->n_prims, p->n_planes, x, wi, 0.0f, dist, counts))
-				continue;
-		}
-		sum += M_PI_F * k * l->color.xyz * f;
+		float3 light = k * l->color.xyz;
+		if (!l->shadowless && dist > 0.0f)
+			light = visibility_shadow(sc, x, wi, 0.0f, dist, light);
+		sum += M_PI_F * light * f;
 	}
 	return sum;
 }
@@ -129,22 +125,33 @@ inline float light_pdf(global const dev_emitter *em, global const dev_prim *prim
 	return cos_l > 0.0f ? e->pdf * t * t / (e->area * cos_l) : 0.0f;
 }
 
+/* The radiance an emissive primitive sends from pos, reached along wi after
+ * dist: its finish's emission times its pigment there. */
+inline float3 light_emitted(const scene_data *sc, int prim, float3 pos, float3 wi, float dist)
+{
+	global const dev_material *m = &sc->materials[sc->prims[prim].material];
+	if (m->pattern < 0)
+		return m->pigment.xyz * m->emission.xyz;
+	traverse_hit h = { dist, prim, -1 };
+	shading_point sp = texture_point(sc, h, pos - dist * wi, wi);
+	return texture_pigment(sc, &sp).rgb * m->emission.xyz;
+}
+
 inline float light_power_heuristic(float a, float b)
 {
 	return a * a / (a * a + b * b);
 }
 
 /* One sample of one emissive primitive, weighted against BSDF sampling. */
-inline float3 light_emitters(global const bvh_node *nodes, global const dev_prim *prims,
-                             global const dev_material *materials, global const dev_emitter *em,
-                             global const dev_params *p, global const dev_material *m,
-                             const material_lobes *lobes, float3 x, float3 ng, float3 n, float3 wo,
-                             uint key, uint dim, uint *counts)
+inline float3 light_emitters(const scene_data *sc, const bsdf *m, const material_lobes *lobes, float3 x,
+                             float3 ng, float3 n, float3 wo, uint key, uint dim)
 {
+	global const dev_params *p = sc->p;
+	global const dev_emitter *em = sc->emitters;
 	if (p->n_emitters == 0)
 		return (float3)(0.0f);
 	global const dev_emitter *e = &em[light_choose(em, p->n_emitters, rng_uniform(key, dim))];
-	global const dev_prim *prim = &prims[e->prim];
+	global const dev_prim *prim = &sc->prims[e->prim];
 	float u1 = rng_uniform(key, dim + 1), u2 = rng_uniform(key, dim + 2);
 	float3 wi, pos;
 	if (prim->type == PRIM_SPHERE && dot(prim->a.xyz - x, prim->a.xyz - x) > prim->a.w * prim->a.w * 1.0001f) {
@@ -173,10 +180,10 @@ inline float3 light_emitters(global const bvh_node *nodes, global const dev_prim
 	float3 f = material_eval(m, lobes, n, wo, wi, &pdf_bsdf);
 	if (pdf_light <= 0.0f || dot(ng, wi) <= 0.0f || (f.x <= 0.0f && f.y <= 0.0f && f.z <= 0.0f))
 		return (float3)(0.0f);
-	counts[COUNT_RAYS + RAY_SHADOW]++;
-	/* stop short of the emitter itself */
-	if (traverse_any(nodes, prims, p->n_prims, p->n_planes, x, wi, 0.0f, dist * (1.0f - 1e-4f), counts))
+	sc->counts[COUNT_RAYS + RAY_SHADOW]++;
+	/* stop short of the emitter itself; every surface blocks, since the paths
+	 * that cross transparent ones find the emitter by BSDF sampling */
+	if (traverse_any(sc->nodes, sc->prims, p->n_prims, p->n_planes, x, wi, 0.0f, dist * (1.0f - 1e-4f), sc->counts))
 		return (float3)(0.0f);
-	float3 le = materials[prim->material].emission.xyz;
-	return le * f * (light_power_heuristic(pdf_light, pdf_bsdf) / pdf_light);
+	return light_emitted(sc, e->prim, pos, wi, dist) * f * (light_power_heuristic(pdf_light, pdf_bsdf) / pdf_light);
 }

@@ -1,4 +1,4 @@
-/* material.cl: the layered BSDF of dev_material (shared.h).
+/* material.cl: the path tracer's layered BSDF, made from a dev_material (shared.h).
  *
  * From the top: a clear coat (GGX, Schlick's Fresnel), a reflection layer (a
  * mirror, or GGX when rough), a dielectric interface that transmits (Fresnel,
@@ -6,6 +6,58 @@
  * its share of what the layers above let through, evaluated at the outgoing
  * direction, so the shares sum to at most 1 and every lobe reflects at most what
  * it receives: no material returns more energy than it receives. */
+
+/* The path tracer's view of a material at one point, made by material_bsdf
+ * from POV-Ray's finish and the pigment evaluated there. */
+typedef struct {
+	float3 diffuse;     /* Lambertian albedo of the opaque part */
+	float3 emission;    /* emitted radiance, both sides */
+	float4 reflect;     /* rgb: reflection at normal incidence; w: GGX alpha, 0 for a mirror */
+	float4 reflect_max; /* rgb: reflection at grazing incidence; w: falloff exponent,
+	                     * or -1: Fresnel's equations with the ior decide between the two */
+	float4 transmit;    /* rgb: tint of transmitted light; w: ior (1: no refraction) */
+	float4 absorb;      /* rgb: absorption per unit length inside; w: transmitted fraction */
+	float4 coat;        /* x: coat strength, y: coat GGX alpha, z: coat reflectance at normal incidence */
+} bsdf;
+
+/* POV-Ray's roughness is a Blinn exponent's reciprocal, phong_size a Phong
+ * exponent (about a quarter of Blinn's); a Blinn exponent e matches GGX with
+ * alpha = sqrt(2 / (e + 2)) (Walter et al. 2007). */
+inline float material_alpha_from_blinn(float e)
+{
+	return clamp(sqrt(2.0f / (e + 2.0f)), 0.01f, 1.0f);
+}
+
+/* POV-Ray's finish and interior with the pigment at a point, as a layered BSDF
+ * (eclat-scene(5), HOW MATERIALS ARE RENDERED): the opaque share of the pigment
+ * is diffuse, filter and transmit are transmission tinted by the pigment's
+ * filter share, reflection is a mirror or GGX layer tinted by metallic, and
+ * phong or specular a clear coat. */
+inline bsdf material_bsdf(global const dev_material *m, float3 rgb, float filter, float transmit)
+{
+	bsdf d;
+	float t = clamp(filter + transmit, 0.0f, 1.0f);
+	float3 tint = t > 0.0f ? clamp((filter * rgb + transmit) / t, 0.0f, 1.0f) : (float3)(1.0f);
+	float metallic = fmax(m->terms.y, m->terms.z);
+	float3 metal = (1.0f - metallic) + metallic * rgb;
+	float ior = m->interior.x > 0.0f ? m->interior.x : 1.0f;
+	float fd = m->interior.y;
+	bool fade = fd > 0.0f && m->interior.z > 0.0f;
+	float blinn = m->highlight.w > 0.0f ? m->highlight.w : 1e6f;   /* 1 / roughness */
+	d.diffuse = clamp(rgb * m->emission.w, 0.0f, 1.0f) * (1.0f - t);
+	d.emission = rgb * m->emission.xyz;
+	d.reflect = (float4)(clamp(m->reflection.xyz * metal, 0.0f, 1.0f),
+	                     m->flags & MATERIAL_ROUGH ? material_alpha_from_blinn(blinn) : 0.0f);
+	d.reflect_max = (float4)(clamp(m->reflection_max.xyz * metal, 0.0f, 1.0f),
+	                         m->terms.w > 0.0f ? -1.0f : m->reflection.w);
+	d.transmit = (float4)(tint, ior);
+	d.absorb = (float4)(fade ? (1.0f - clamp(m->fade_color.xyz, 0.0f, 1.0f)) / fd : (float3)(0.0f), t);
+	float phong = m->highlight.x, specular = m->highlight.z;
+	float alpha = phong >= specular ? material_alpha_from_blinn(4.0f * m->highlight.y)
+	                                : material_alpha_from_blinn(blinn);
+	d.coat = (float4)(clamp(fmax(phong, specular), 0.0f, 1.0f), alpha, 0.04f, 0.0f);   /* 0.04: ior 1.5 */
+	return d;
+}
 
 /* An orthonormal basis around n without branches on a special axis
  * (Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 2017). */
@@ -86,7 +138,7 @@ typedef struct {
 	float p_coat, p_refl, p_trans, p_diff;
 } material_lobes;
 
-inline material_lobes material_lobes_at(global const dev_material *m, float cos_o, bool entering)
+inline material_lobes material_lobes_at(const bsdf *m, float cos_o, bool entering)
 {
 	material_lobes l;
 	float wc = m->coat.x * material_schlick(cos_o, m->coat.z);
@@ -103,7 +155,7 @@ inline material_lobes material_lobes_at(global const dev_material *m, float cos_
 	l.coat = (float3)(wc);
 	l.refl = (1.0f - wc) * r;
 	l.trans = rest * m->absorb.w;
-	l.diff = rest * m->diffuse.xyz;
+	l.diff = rest * m->diffuse;
 	float pc = wc, pr = material_luminance(l.refl), pt = material_luminance(l.trans);
 	float pd = material_luminance(l.diff), sum = pc + pr + pt + pd;
 	float inv = sum > 0.0f ? 1.0f / sum : 0.0f;
@@ -116,7 +168,7 @@ inline material_lobes material_lobes_at(global const dev_material *m, float cos_
 
 /* f * cos(theta_i) of the lobes that are not a single direction (diffuse, coat,
  * rough reflection), and the pdf of sampling wi by material_sample. */
-inline float3 material_eval(global const dev_material *m, const material_lobes *l, float3 n,
+inline float3 material_eval(const bsdf *m, const material_lobes *l, float3 n,
                             float3 wo, float3 wi, float *pdf)
 {
 	float ni = dot(n, wi);
@@ -153,7 +205,7 @@ inline float3 material_refract(float3 wo, float3 n, float cos_o, float eta)
 }
 
 /* Chooses a layer by u.x, then a direction with u.y, u.z. weight 0: absorbed. */
-inline material_sample_t material_sample(global const dev_material *m, const material_lobes *l,
+inline material_sample_t material_sample(const bsdf *m, const material_lobes *l,
                                          float3 n, float3 wo, bool entering, float3 u)
 {
 	material_sample_t s = { (float3)(0.0f), (float3)(0.0f), 0.0f, 0 };

@@ -76,27 +76,15 @@ typedef struct {
 	int type, material, object, link;
 } dev_prim;
 
-/* A physically based material, 112 bytes, made by lower.c from POV-Ray's texture
- * and interior (eclat-scene(5), HOW MATERIALS ARE RENDERED). Layers from the top:
- * a clear coat, a reflection layer, a dielectric transmission, a Lambertian base.
- * The layer weights are taken at the outgoing direction and sum to at most 1. */
+/* A surface's material, 160 bytes, one per texture: POV-Ray's finish and
+ * interior as the scene gives them (lower.c changes nothing but ambient, which
+ * is multiplied by global_settings' ambient_light), and its pigment: a solid
+ * colour, or a pattern evaluated at each shading point (texture.cl). Both
+ * integrators read it: the Whitted one as POV-Ray's classic model, the path
+ * tracer through material_bsdf (material.cl), which maps it onto a layered
+ * BSDF as eclat-scene(5), HOW MATERIALS ARE RENDERED, says. */
 typedef struct {
-	float4 diffuse;     /* rgb: Lambertian albedo of the opaque part */
-	float4 emission;    /* rgb: emitted radiance, both sides */
-	float4 reflect;     /* rgb: reflection at normal incidence; w: GGX alpha, 0 for a mirror */
-	float4 reflect_max; /* rgb: reflection at grazing incidence; w: falloff exponent,
-	                     * or -1: Fresnel's equations with the ior decide between the two */
-	float4 transmit;    /* rgb: tint of transmitted light; w: ior (1: no refraction) */
-	float4 absorb;      /* rgb: absorption per unit length inside; w: transmitted fraction */
-	float4 coat;        /* x: coat strength, y: coat GGX alpha, z: coat reflectance at normal incidence */
-} dev_material;
-
-/* A POV-Ray texture and interior as POV-Ray's classic model reads them, 144
- * bytes, one per dev_material (same index): what --integrator whitted shades with.
- * lower.c fills it from the evaluated texture without reinterpreting anything;
- * ambient is already multiplied by global_settings' ambient_light. */
-typedef struct {
-	float4 pigment;        /* rgb; w: filter */
+	float4 pigment;        /* rgb; w: filter (with a pattern: its average colour) */
 	float4 ambient;        /* rgb: ambient * ambient_light; w: transmit */
 	float4 emission;       /* rgb; w: diffuse */
 	float4 highlight;      /* x: phong, y: phong_size, z: specular, w: 1 / roughness */
@@ -106,7 +94,13 @@ typedef struct {
 	                        * w: 1 for fresnel reflection */
 	float4 interior;       /* x: ior, y: fade_distance, z: fade_power, w: 1 for conserve_energy */
 	float4 fade_color;     /* rgb: interior's fade_color */
-} dev_finish;
+	int pattern;           /* the pigment's dev_pattern, or -1: the solid pigment above */
+	int flags;             /* MATERIAL_ */
+	float pad[2];
+} dev_material;
+/* MATERIAL_LOCAL: a mesh's own texture, whose patterns see the mesh's space;
+ * MATERIAL_ROUGH: roughness was given, so the path tracer's reflection is rough. */
+enum { MATERIAL_LOCAL = 1, MATERIAL_ROUGH = 2 };
 
 /* ---- Appearance: patterns, maps and pigments (kernels/pattern.cl, kernels/texture.cl).
  *
@@ -215,7 +209,7 @@ enum {
 	COUNT_N = 3 * RAY_KINDS,
 };
 
-/* Everything a render pass needs besides the buffers, 160 bytes. The camera
+/* Everything a render pass needs besides the buffers, 176 bytes. The camera
  * vectors are POV-Ray's after look_at: a primary ray is direction + sx * right +
  * sy * up with sx, sy in [-0.5, 0.5], sy upwards. */
 typedef struct {
@@ -227,7 +221,28 @@ typedef struct {
 	int n_lights, sample_base, samples_per_pass, n_prims;
 	int n_planes, n_emitters, integrator, aov;   /* aov: 1 when the aov buffer is there */
 	float4 classic;     /* the Whitted integrator's: w: adc_bailout */
+	int scene_flags;    /* SCENE_ */
+	int pad[3];
 } dev_params;
+/* SCENE_SHADOWS_PASS: some surface lets shadow rays through (no_shadow, filter,
+ * transmit), so shadow rays look at what they meet instead of stopping at the first. */
+enum { SCENE_SHADOWS_PASS = 1 };
+
+/* The scene's buffers, read by every kernel that renders, in the kernels'
+ * argument order (after them: params, film, counters, aov). One list for the
+ * host's buffers (render.c) and the kernels' parameters and scene_data
+ * (kernels/scene.cl): type and name. */
+#define SCENE_BUFFERS(X) \
+	X(bvh_node, nodes) \
+	X(dev_prim, prims) \
+	X(float4, normals) \
+	X(dev_material, materials) \
+	X(dev_light, lights) \
+	X(dev_emitter, emitters) \
+	X(int, objects) \
+	X(dev_pattern, patterns) \
+	X(dev_warp, warps) \
+	X(dev_map_entry, maps)
 
 /* The aov buffer, when asked for: three float4 a pixel, sums over its samples.
  * [0] rgb: albedo of the first surface; w: samples that hit a surface

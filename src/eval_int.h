@@ -177,6 +177,19 @@ int eval_spline_call(struct eval *e, const ast_node *call, const value *spl, val
 /* trace(OBJECT, <Start>, <Direction> [, NORMAL]) (eval_trace.c) */
 int eval_trace(struct eval *e, const ast_node *call, value *out);
 
+/* ---- patterns (eval_pattern.c) ---- */
+/* The PATTERN_ of a pattern's name, or -1. */
+int eval_pattern_kind(const char *name);
+int eval_pattern_list_size(int kind);
+void eval_pattern_defaults(scene_pigment *pg, int kind, src_loc loc);
+/* Gives pg POV-Ray's default colours or colour map. */
+void eval_pattern_default_map(scene_pigment *pg);
+/* A pattern modifier (turbulence, warp, brick_size...): 0 when item was one and
+ * went into pg, 1 when it is not one, -1 after an error. */
+int eval_pattern_modifier(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg);
+/* The argument of a pattern keyword: gradient's vector, spiral's arms. */
+int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *pg);
+
 /* ---- #fopen, #read, #write, #fclose (eval_fileio.c) ---- */
 void eval_file_io(struct eval *e, const ast_node *d);
 void eval_files_close(struct eval *e);

@@ -1,6 +1,9 @@
 /* eval_material.c: pigment, finish, texture, normal, interior, material and the
- * maps. eclat renders one colour per texture: a pattern becomes the average of
- * its colours, with one warning per pattern (see eclat-scene(5), TEXTURES). */
+ * maps. A pigment's pattern becomes a scene_pigment (eval_pattern.c) that the
+ * kernels evaluate at each point; its average colour stays in pigment[] for
+ * what needs one colour. Patterns eclat does not have yet, and patterns of
+ * whole textures (texture_map), become that average, with one warning per
+ * place (see eclat-scene(5), TEXTURES). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,6 +16,8 @@
 static void copy_pigment(scene_material *d, const scene_material *s)
 {
 	memcpy(d->pigment, s->pigment, sizeof d->pigment);
+	d->pattern = s->pattern;
+	d->tex_xf = s->tex_xf;
 }
 
 static void copy_finish(scene_material *d, const scene_material *s)
@@ -85,6 +90,7 @@ void eval_apply_texture(struct eval *e, src_loc loc, scene_material *m, bool tex
 
 struct map_point {
 	double at, c[5];
+	int pigment;             /* a pattern pigment, or -1 */
 };
 
 /* The average over 0 to 1 of the colour a map gives: constant before its first
@@ -120,17 +126,20 @@ struct map_build {
 	scene_material first;   /* a texture_map's first texture, for its finish */
 };
 
-static void map_add(struct map_build *mb, double at, const double c[5])
+static void map_add(struct map_build *mb, double at, const double c[5], int pigment)
 {
 	mb->p = eval_xrealloc(mb->p, (mb->n + 1) * sizeof *mb->p);
 	mb->p[mb->n].at = at;
+	mb->p[mb->n].pigment = pigment;
 	memcpy(mb->p[mb->n].c, c, sizeof mb->p[mb->n].c);
 	mb->n++;
 }
 
 /* The colour an entry's value gives: a colour, a pigment, a texture. */
-static int entry_color(struct eval *e, const ast_node *at, value *v, int map_kw, struct map_build *mb, double c[5])
+static int entry_color(struct eval *e, const ast_node *at, value *v, int map_kw, struct map_build *mb, double c[5],
+                       int *pigment)
 {
+	*pigment = -1;
 	if (map_kw == KW_COLOR_MAP || map_kw == KW_COLOUR_MAP) {
 		if (!eval_is_numeric(v->kind)) {
 			eval_error(e, at->loc, "expected a colour in a colour_map entry, found %s", eval_kind_name(v->kind));
@@ -150,6 +159,8 @@ static int entry_color(struct eval *e, const ast_node *at, value *v, int map_kw,
 	else
 		for (int k = 0; k < 5; k++)
 			c[k] = v->mat.pigment[k];
+	if (want == V_PIGMENT && !eval_is_numeric(v->kind))
+		*pigment = v->mat.pattern;
 	if (want == V_TEXTURE && !mb->finish_set) {
 		mb->first = v->mat;
 		mb->finish_set = true;
@@ -184,9 +195,10 @@ static int body_entry(struct eval *e, const ast_node *entry, int map_kw, struct 
 	value v;
 	if (eval_material_value(e, &body, &v))
 		return -1;
-	int rc = entry_color(e, entry->kids[first], &v, map_kw, mb, c);
+	int pigment;
+	int rc = entry_color(e, entry->kids[first], &v, map_kw, mb, c, &pigment);
 	if (rc == 0)
-		map_add(mb, at, c);
+		map_add(mb, at, c, pigment);
 	eval_value_free(&v);
 	return rc;
 }
@@ -240,16 +252,33 @@ static int map_entry(struct eval *e, const ast_node *entry, int map_kw, struct m
 	}
 	for (int i = 0; rc == 0 && i < half; i++) {
 		double c[5];
+		int pigment;
 		if (v[i].kind != V_FLOAT) {
 			eval_error(e, at[i]->loc, "expected a float, found %s", eval_kind_name(v[i].kind));
 			rc = -1;
-		} else if ((rc = entry_color(e, at[half + i], &v[half + i], map_kw, mb, c)) == 0) {
-			map_add(mb, v[i].v[0], c);
+		} else if ((rc = entry_color(e, at[half + i], &v[half + i], map_kw, mb, c, &pigment)) == 0) {
+			map_add(mb, v[i].v[0], c, pigment);
 		}
 	}
 	for (int i = 0; i < n; i++)
 		eval_value_free(&v[i]);
 	return rc;
+}
+
+/* A map's entries, kept as a pigment of kind PATTERN_SOLID that patterns copy
+ * their map from. */
+static int map_pigment(struct eval *e, const struct map_build *mb, src_loc loc)
+{
+	scene_pigment pg;
+	eval_pattern_defaults(&pg, PATTERN_SOLID, loc);
+	pg.map = eval_xrealloc(NULL, mb->n * sizeof *pg.map);
+	pg.n_map = mb->n;
+	for (int i = 0; i < mb->n; i++) {
+		pg.map[i] = (scene_map_entry){ .value = mb->p[i].at, .pigment = mb->p[i].pigment };
+		for (int k = 0; k < 5; k++)
+			pg.map[i].colour[k] = (float)mb->p[i].c[k];
+	}
+	return scene_add_pigment(e->s, &pg);
 }
 
 /* color_map { [MAP_IDENTIFIER] [Value COLOR]... }, pigment_map, texture_map: the
@@ -294,6 +323,7 @@ static int map_block(struct eval *e, const ast_node *b, value *out)
 			out->mat = mb.first;
 		for (int k = 0; k < 5; k++)
 			out->mat.pigment[k] = (float)avg[k];
+		out->mat.pattern = mb.unordered || mb.n == 0 ? -1 : map_pigment(e, &mb, b->loc);
 	}
 	free(mb.p);
 	return rc || err ? -1 : 0;
@@ -342,31 +372,84 @@ static bool is_pattern_modifier(const ast_node *item)
 	return item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, "warp") == 0;
 }
 
-/* What a pattern has to average: its map, or the colours listed after it. */
+/* A pattern being read: the pigment it makes when eclat has the pattern
+ * (kind > 0), and what its average is made of: its map, or the colours listed
+ * after it. */
+#define LIST_MAX 6
 struct pattern {
 	const ast_node *at;      /* the pattern keyword, or NULL: a solid colour */
 	char name[40];
+	int kind;                /* PATTERN_, or -1: one eclat does not have */
+	scene_pigment pg;        /* its modifiers; its map comes at the end */
 	bool inherited;          /* from a declared pigment: its average unless a map follows */
 	double base[5];
-	double list[3][5];
+	double list[LIST_MAX][5];
+	int list_pigment[LIST_MAX];
 	int n_list;
 	bool has_map;
 	double map[5];
+	int map_pigment;         /* the map's entries (map_pigment), or -1 */
 	scene_material map_mat;  /* a texture_map's finish */
 	bool map_finish;
+	bool of_texture;         /* a texture's pattern: eclat renders its average */
 };
 
-static void pattern_result(struct eval *e, struct pattern *p, double c[5])
+/* The map of the pigment being made: its map's, its list's, the inherited
+ * pigment's, or POV-Ray's default. */
+static void pattern_map(struct eval *e, struct pattern *p)
 {
+	scene_pigment *pg = &p->pg;
+	const scene_pigment *from = p->has_map && p->map_pigment >= 0 ? &e->s->pigments[p->map_pigment] : NULL;
+	free(pg->map);
+	pg->map = NULL;
+	pg->n_map = 0;
+	if (from) {
+		pg->map = eval_xrealloc(NULL, from->n_map * sizeof *pg->map);
+		memcpy(pg->map, from->map, from->n_map * sizeof *pg->map);
+		pg->n_map = from->n_map;
+	} else if (p->n_list) {
+		pg->map = eval_xrealloc(NULL, p->n_list * sizeof *pg->map);
+		for (int i = 0; i < p->n_list; i++) {
+			pg->map[i] = (scene_map_entry){ .value = i, .pigment = p->list_pigment[i] };
+			for (int k = 0; k < 5; k++)
+				pg->map[i].colour[k] = (float)p->list[i][k];
+		}
+		pg->n_map = p->n_list;
+	} else {
+		eval_pattern_default_map(pg);
+	}
+}
+
+static void pattern_result(struct eval *e, struct pattern *p, double c[5], int *pigment)
+{
+	*pigment = -1;
+	if (p->kind > 0) {
+		if (!(p->inherited && !p->has_map && !p->n_list))
+			pattern_map(e, p);
+		*pigment = scene_add_pigment(e->s, &p->pg);
+		p->pg.map = NULL;
+	}
 	if (p->inherited && !p->has_map && !p->n_list) {
 		memcpy(c, p->base, sizeof p->base);
+		return;
+	}
+	if (p->kind > 0) {   /* its average, for what needs one colour */
+		for (int k = 0; k < 5; k++) {
+			double sum = 0;
+			for (int i = 0; i < p->n_list; i++)
+				sum += p->list[i][k];
+			c[k] = p->has_map ? p->map[k] : p->n_list ? sum / p->n_list : k < 3 ? 0.5 : 0;
+		}
 		return;
 	}
 	const char *how = p->has_map ? "the average of its map" : p->n_list ? "the average of its colours"
 	                : "rgb 0.5, the average of the default colour map";
 	char key[64];
 	snprintf(key, sizeof key, "pattern %s", p->name);
-	if (strcmp(p->name, "average") != 0 || !p->has_map)   /* average is its map's mean: exact */
+	if (p->of_texture && eval_pattern_kind(p->name) > 0)
+		eval_warn_once(e, p->at->loc, key, "patterns of whole textures (texture_map, or textures listed "
+		               "after '%s') are not supported yet; using %s", p->name, how);
+	else if (strcmp(p->name, "average") != 0 || !p->has_map)   /* average is its map's mean: exact */
 		eval_warn_once(e, p->at->loc, key, "pattern '%s' is not supported yet; using %s", p->name, how);
 	for (int k = 0; k < 5; k++) {
 		double sum = 0;
@@ -378,8 +461,25 @@ static void pattern_result(struct eval *e, struct pattern *p, double c[5])
 
 static void start_pattern(struct pattern *p, const ast_node *item, const char *name)
 {
-	*p = (struct pattern){ .at = item };
+	free(p->pg.map);
+	*p = (struct pattern){ .at = item, .kind = eval_pattern_kind(name), .map_pigment = -1 };
 	snprintf(p->name, sizeof p->name, "%s", name);
+	eval_pattern_defaults(&p->pg, p->kind > 0 ? p->kind : PATTERN_SOLID, item->loc);
+}
+
+/* A pattern keyword with its argument (gradient x), or a pattern that is no
+ * eclat keyword (cubic, square...): starts the pattern. 1 when item is none. */
+static int pattern_start(struct eval *e, const ast_node *item, struct pattern *p)
+{
+	if (is_pattern(item)) {
+		start_pattern(p, item, ast_keyword_name(item->kw));
+		return p->kind > 0 ? eval_pattern_argument(e, item, &p->pg) : 0;
+	}
+	if (item->kind == AST_IDENT && !eval_lookup(e, item->str) && eval_pattern_kind(item->str) > 0) {
+		start_pattern(p, item, item->str);
+		return 0;
+	}
+	return 1;
 }
 
 static int map_into(struct eval *e, const ast_node *item, struct pattern *p)
@@ -388,6 +488,7 @@ static int map_into(struct eval *e, const ast_node *item, struct pattern *p)
 	if (map_block(e, item, &v))
 		return -1;
 	p->has_map = true;
+	p->map_pigment = item->kw == KW_TEXTURE_MAP ? -1 : v.mat.pattern;
 	bool average = strcmp(p->name, "average") == 0;
 	for (int k = 0; k < 5; k++)
 		p->map[k] = average ? v.v[k] : v.mat.pigment[k];
@@ -396,10 +497,12 @@ static int map_into(struct eval *e, const ast_node *item, struct pattern *p)
 	return 0;
 }
 
-static void list_add(struct pattern *p, const double c[5])
+static void list_add(struct pattern *p, const double c[5], int pigment)
 {
-	if (p->n_list < 3)
+	if (p->n_list < LIST_MAX) {
+		p->list_pigment[p->n_list] = pigment;
 		memcpy(p->list[p->n_list++], c, sizeof p->list[0]);
+	}
 }
 
 /* A POV-Ray pattern that is not an eclat keyword (mandel, average...) starts a
@@ -429,42 +532,53 @@ static int pigment_value(struct eval *e, const ast_node *item, struct pattern *p
 	if (eval_expr(e, item, &v))
 		return -1;
 	double c[5];
+	bool inherits = false;
 	if (eval_is_numeric(v.kind)) {
 		eval_widen(&v, 5, c);
 	} else if (v.kind == V_PIGMENT) {
 		for (int k = 0; k < 5; k++)
 			c[k] = v.mat.pigment[k];
-		if (v.str && !p->at) {   /* a pattern pigment: a colour_map after it replaces its own */
+		inherits = v.str && !p->at;
+		if (inherits) {   /* a pattern pigment: a colour_map after it replaces its own */
 			start_pattern(p, item, v.str);
 			p->inherited = true;
 			memcpy(p->base, c, sizeof c);
+			if (v.mat.pattern >= 0 && p->kind > 0) {   /* its modifiers, its map unless one follows */
+				free(p->pg.map);
+				p->pg = e->s->pigments[v.mat.pattern];
+				p->pg.map = eval_xrealloc(NULL, p->pg.n_map * sizeof *p->pg.map);
+				memcpy(p->pg.map, e->s->pigments[v.mat.pattern].map, p->pg.n_map * sizeof *p->pg.map);
+			}
 		}
 	} else {
 		eval_error(e, item->loc, "expected a colour or a pigment, found %s", eval_kind_name(v.kind));
 		eval_value_free(&v);
 		return -1;
 	}
+	int pigment = v.kind == V_PIGMENT ? v.mat.pattern : -1;
 	eval_value_free(&v);
-	if (p->at)
-		list_add(p, c);
-	else
+	if (p->at && !inherits)
+		list_add(p, c, pigment);
+	else if (!p->at) {
 		for (int k = 0; k < 5; k++)
 			m->pigment[k] = (float)c[k];
+		m->pattern = v.kind == V_PIGMENT ? pigment : -1;
+	}
 	return 0;
 }
 
 static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p,
                         scene_material *m)
 {
-	int rc = pattern_word(e, c, item, p);
+	int rc = pattern_start(e, item, p);
 	if (rc <= 0)
+		return rc;
+	if (p->kind > 0 && (rc = eval_pattern_modifier(e, c, item, &p->pg)) <= 0)
+		return rc;
+	if ((rc = pattern_word(e, c, item, p)) <= 0)
 		return rc;
 	if (AST_IS_EXPRESSION(item->kind))
 		return pigment_value(e, item, p, m);
-	if (is_pattern(item)) {
-		start_pattern(p, item, ast_keyword_name(item->kw));
-		return 0;
-	}
 	if (item->kind == AST_BLOCK && (item->kw == KW_COLOR_MAP || item->kw == KW_COLOUR_MAP ||
 	                                item->kw == KW_PIGMENT_MAP)) {
 		if (!p->at)
@@ -479,13 +593,15 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 		for (int k = 0; k < 5; k++)
 			c[k] = v.mat.pigment[k];
 		eval_value_free(&v);   /* its pattern's name, when it has one */
-		list_add(p, c);
+		list_add(p, c, v.mat.pattern);
 		return 0;
 	}
 	xform t = scene_xform_identity();
 	rc = eval_transform_item(e, NULL, item, &t);
+	if (rc > 0)   /* a pigment's transformations move its pattern only */
+		p->pg.xf = scene_xform_then(&p->pg.xf, &t);
 	if (rc != 0 || is_pattern_modifier(item))
-		return rc < 0 ? -1 : 0;   /* a pigment's transformations move its pattern only */
+		return rc < 0 ? -1 : 0;
 	if ((item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) ||
 	    item->kind == AST_FUNCTION || (item->kind == AST_BLOCK && item->kw == KW_OBJECT)) {
 		const char *name = item->kind == AST_FUNCTION ? "function" : item->kw == KW_OBJECT ? "object" : item->str;
@@ -513,12 +629,14 @@ static int pigment_block(struct eval *e, const ast_node *b, scene_material *m, c
 		return -1;
 	if (p.at) {
 		double col[5];
-		pattern_result(e, &p, col);
+		pattern_result(e, &p, col, &m->pattern);
+		m->tex_xf = scene_xform_identity();
 		for (int k = 0; k < 5; k++)
 			m->pigment[k] = (float)col[k];
 		if (pattern)
 			*pattern = eval_xstrdup(p.name);
 	}
+	free(p.pg.map);
 	return 0;
 }
 
@@ -778,11 +896,13 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 		for (int k = 0; k < 5; k++)
 			c[k] = v.mat.pigment[k];
 		eval_value_free(&v);   /* its pattern's name, when it has one */
-		list_add(p, c);
+		list_add(p, c, -1);
 		return 0;
 	}
 	xform t = scene_xform_identity();
 	int rc = eval_transform_item(e, NULL, item, &t);
+	if (rc > 0)   /* a texture's transformations move its patterns */
+		m->tex_xf = scene_xform_then(&m->tex_xf, &t);
 	if (rc != 0 || is_pattern_modifier(item))
 		return rc < 0 ? -1 : 0;
 	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
@@ -809,7 +929,9 @@ static int texture_block(struct eval *e, const ast_node *b, scene_material *m)
 		return -1;
 	if (p.at) {
 		double col[5];
-		pattern_result(e, &p, col);
+		p.kind = -1;   /* patterns of whole textures: their average, for now */
+		p.of_texture = true;
+		pattern_result(e, &p, col, &m->pattern);
 		if (p.map_finish)
 			copy_finish(m, &p.map_mat);
 		for (int k = 0; k < 5; k++)

@@ -197,10 +197,16 @@ static void transform_light(struct lightval *l, const xform *t)
 		l->looks[i].xf = scene_xform_then(&l->looks[i].xf, t);
 }
 
+/* A texture moves with the transformations written after it (not those before). */
 static void transform_objval(struct objval *o, const xform *t)
 {
-	for (int i = 0; i < o->n_objs; i++)
+	for (int i = 0; i < o->n_objs; i++) {
 		o->objs[i].xf = scene_xform_then(&o->objs[i].xf, t);
+		if (o->objs[i].textured)
+			o->objs[i].material.tex_xf = scene_xform_then(&o->objs[i].material.tex_xf, t);
+	}
+	if (o->has_mat)
+		o->mat.tex_xf = scene_xform_then(&o->mat.tex_xf, t);
 	for (int i = 0; i < o->n_lights; i++)
 		transform_light(&o->lights[i], t);
 }

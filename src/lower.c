@@ -18,15 +18,14 @@ _Static_assert(sizeof(bvh_wnode) == 64, "bvh_wnode is 64 bytes");
 _Static_assert(offsetof(bvh_wnode, qlo_x) == 16 && offsetof(bvh_wnode, child) == 40, "bvh_wnode layout");
 _Static_assert(sizeof(dev_prim) == 64, "dev_prim is 64 bytes");
 _Static_assert(offsetof(dev_prim, type) == 48, "dev_prim ints at 48");
-_Static_assert(sizeof(dev_material) == 112, "dev_material is 112 bytes");
+_Static_assert(sizeof(dev_material) == 160 && offsetof(dev_material, pattern) == 144, "dev_material layout");
 _Static_assert(sizeof(dev_light) == 112, "dev_light is 112 bytes");
 _Static_assert(offsetof(dev_light, cos_falloff) == 80, "dev_light scalars at 80");
 _Static_assert(sizeof(dev_warp) == 64, "dev_warp is 64 bytes");
 _Static_assert(sizeof(dev_pattern) == 144 && offsetof(dev_pattern, params) == 80, "dev_pattern layout");
 _Static_assert(sizeof(dev_map_entry) == 32, "dev_map_entry is 32 bytes");
 _Static_assert(sizeof(dev_emitter) == 16, "dev_emitter is 16 bytes");
-_Static_assert(sizeof(dev_finish) == 144, "dev_finish is 144 bytes");
-_Static_assert(sizeof(dev_params) == 160, "dev_params is 160 bytes");
+_Static_assert(sizeof(dev_params) == 176, "dev_params is 176 bytes");
 _Static_assert((int)OBJECT_NO_SHADOW == (int)OBJ_NO_SHADOW && (int)OBJECT_NO_IMAGE == (int)OBJ_NO_IMAGE &&
                (int)OBJECT_NO_REFLECTION == (int)OBJ_NO_REFLECTION &&
                (int)OBJECT_DOUBLE_ILLUMINATE == (int)OBJ_DOUBLE_ILLUMINATE,
@@ -54,8 +53,8 @@ struct lowering {
 	const scene *s;
 	struct prim_list top, planes;
 	dev_material *mats;
-	dev_finish *finishes;
 	int n_mats, cap_mats;
+	lower_textures textures;
 	float4 *normals;
 	int n_normals, cap_normals;
 	struct lowered_mesh *meshes;
@@ -118,82 +117,13 @@ static int material_in_range(const scene_material *m)
 	return all_in_range(m->pigment, 5) && all_in_range(m->emission, 3);
 }
 
-static float clamp01(float v)
-{
-	return v < 0 ? 0 : v > 1 ? 1 : v;
-}
-
 /* ---- materials ---- */
 
-/* POV-Ray's roughness is a Blinn exponent's reciprocal, phong_size a Phong
- * exponent (about a quarter of Blinn's); a Blinn exponent e matches GGX with
- * alpha = sqrt(2 / (e + 2)) (Walter et al. 2007). */
-static float alpha_from_blinn(double e)
+static int add_material(struct lowering *lw, const scene_material *m, int local)
 {
-	float a = (float)sqrt(2.0 / (e + 2.0));
-	return a < 0.01f ? 0.01f : a > 1 ? 1 : a;
-}
-
-dev_material lower_material(const scene_material *m)
-{
-	dev_material d = { 0 };
-	float rgb[3] = { m->pigment[0], m->pigment[1], m->pigment[2] };
-	float t = clamp01(m->pigment[3] + m->pigment[4]);
-	float tint[3], refl[3], refl_max[3];
-	for (int i = 0; i < 3; i++) {
-		tint[i] = t > 0 ? clamp01((m->pigment[3] * rgb[i] + m->pigment[4]) / t) : 1;
-		float metallic = fmaxf(m->metallic, m->reflection_metallic);
-		float metal = (1 - metallic) + metallic * rgb[i];
-		refl[i] = clamp01(m->reflection[i] * metal);
-		refl_max[i] = clamp01(m->reflection_max[i] * metal);
-	}
-	float fade = m->fade_distance > 0 && m->fade_power > 0;
-	d.diffuse = (float4){ clamp01(rgb[0] * m->diffuse) * (1 - t), clamp01(rgb[1] * m->diffuse) * (1 - t),
-	                      clamp01(rgb[2] * m->diffuse) * (1 - t), 0 };
-	d.emission = (float4){ rgb[0] * m->emission[0], rgb[1] * m->emission[1], rgb[2] * m->emission[2], 0 };
-	d.reflect = (float4){ refl[0], refl[1], refl[2],
-	                      m->roughness_set ? alpha_from_blinn(1.0 / fmax(m->roughness, 1e-6)) : 0 };
-	d.reflect_max = (float4){ refl_max[0], refl_max[1], refl_max[2],
-	                          m->reflection_fresnel ? -1 : m->reflection_falloff };
-	d.transmit = (float4){ tint[0], tint[1], tint[2], m->ior > 0 ? m->ior : 1 };
-	d.absorb = (float4){ fade ? (1 - clamp01(m->fade_color[0])) / m->fade_distance : 0,
-	                     fade ? (1 - clamp01(m->fade_color[1])) / m->fade_distance : 0,
-	                     fade ? (1 - clamp01(m->fade_color[2])) / m->fade_distance : 0, t };
-	float coat = clamp01(fmaxf(m->phong, m->specular));
-	float alpha = m->phong >= m->specular ? alpha_from_blinn(4.0 * m->phong_size)
-	                                      : alpha_from_blinn(1.0 / fmax(m->roughness, 1e-6));
-	d.coat = (float4){ coat, alpha, 0.04f, 0 };   /* 0.04: a clear coat of ior 1.5 */
-	return d;
-}
-
-dev_finish lower_finish(const scene_material *m, const float ambient_light[3])
-{
-	const float *p = m->pigment;
-	return (dev_finish){
-		.pigment = { p[0], p[1], p[2], p[3] },
-		.ambient = { m->ambient[0] * ambient_light[0], m->ambient[1] * ambient_light[1],
-		             m->ambient[2] * ambient_light[2], p[4] },
-		.emission = { m->emission[0], m->emission[1], m->emission[2], m->diffuse },
-		.highlight = { m->phong, m->phong_size, m->specular, m->roughness > 0 ? 1 / m->roughness : 0 },
-		.reflection = { m->reflection[0], m->reflection[1], m->reflection[2], m->reflection_falloff },
-		/* POV-Ray raises the reflected colour to 1 / exponent */
-		.reflection_max = { m->reflection_max[0], m->reflection_max[1], m->reflection_max[2],
-		                    m->reflection_exponent != 0 ? 1 / m->reflection_exponent : 1 },
-		.terms = { m->brilliance, m->metallic, m->reflection_metallic, m->reflection_fresnel },
-		.interior = { m->ior > 0 ? m->ior : 1, m->fade_distance, m->fade_power, m->conserve_energy },
-		.fade_color = { m->fade_color[0], m->fade_color[1], m->fade_color[2], 0 },
-	};
-}
-
-static int add_material(struct lowering *lw, const scene_material *m)
-{
-	if (lw->n_mats == lw->cap_mats) {
-		int cap = lw->cap_mats;
+	if (lw->n_mats == lw->cap_mats)
 		lw->mats = grow(lw->mats, &lw->cap_mats, sizeof *lw->mats);
-		lw->finishes = grow(lw->finishes, &cap, sizeof *lw->finishes);
-	}
-	lw->mats[lw->n_mats] = lower_material(m);
-	lw->finishes[lw->n_mats] = lower_finish(m, lw->s->ambient_light);
+	lw->mats[lw->n_mats] = lower_texture(&lw->textures, lw->s, m, local);
 	return lw->n_mats++;
 }
 
@@ -264,8 +194,7 @@ static double det3(const xform *t)
 	       m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
 
-/* The inverse of an affine transform; -1 when it is singular. */
-static int invert(const xform *t, xform *inv)
+int lower_invert(const xform *t, xform *inv)
 {
 	double d = det3(t);
 	if (fabs(d) < 1e-300)
@@ -316,7 +245,7 @@ static int lower_sphere(struct lowering *lw, const scene_object *o, int mat, int
 	xform move = scene_xform_translate(o->p[0]);
 	unit = scene_xform_then(&unit, &move);
 	to_world = scene_xform_then(&unit, &o->xf);
-	if (invert(&to_world, &to_unit)) {
+	if (lower_invert(&to_world, &to_unit)) {
 		diag_warning(o->loc, "sphere with a singular transform (a scale of 0?) skipped");
 		return 0;
 	}
@@ -369,7 +298,7 @@ static int lower_plane(struct lowering *lw, const scene_object *o, int mat, int 
 		diag_error(o->loc, "a plane needs a normal that is not zero");
 		return -1;
 	}
-	if (invert(&o->xf, &inv)) {
+	if (lower_invert(&o->xf, &inv)) {
 		diag_warning(o->loc, "plane with a singular transform (a scale of 0?) skipped");
 		return 0;
 	}
@@ -506,7 +435,7 @@ static int lower_mesh_once(struct lowering *lw, const scene *s, int index)
 			return 1;
 		}
 	for (int i = 0; i < m->n_mats; i++)
-		add_material(lw, &m->mats[i]);
+		add_material(lw, &m->mats[i], 1);
 	for (int f = 0; f < m->n_faces; f++) {
 		double v[3][3], n[3][3];
 		for (int k = 0; k < 3; k++)
@@ -552,7 +481,7 @@ static int lower_instance(struct lowering *lw, const scene *s, const scene_objec
 	if (once)
 		return once < 0 ? -1 : 0;
 	xform to_mesh;
-	if (invert(&o->xf, &to_mesh)) {
+	if (lower_invert(&o->xf, &to_mesh)) {
 		diag_warning(o->loc, "mesh with a singular transform (a scale of 0?) skipped");
 		return 0;
 	}
@@ -570,7 +499,7 @@ static int lower_smooth_triangle(struct lowering *lw, const scene_object *o, int
 {
 	xform inv;
 	double v[3][3], n[3][3];
-	if (invert(&o->xf, &inv)) {
+	if (lower_invert(&o->xf, &inv)) {
 		diag_warning(o->loc, "smooth_triangle with a singular transform (a scale of 0?) skipped");
 		return 0;
 	}
@@ -586,7 +515,7 @@ static int lower_smooth_triangle(struct lowering *lw, const scene_object *o, int
 static int lower_shape(struct lowering *lw, const scene *s, int id)
 {
 	const scene_object *o = &s->objects[id];
-	int mat = add_material(lw, &o->material);
+	int mat = add_material(lw, &o->material, 0);
 	double v[3][3];
 	switch (o->shape) {
 	case SHAPE_SPHERE:
@@ -690,7 +619,8 @@ static void lower_emitters(lower_result *r)
 	r->emitters = xmalloc(r->n_prims * sizeof *r->emitters);
 	for (int i = 0; i < r->n_prims; i++) {
 		dev_prim *p = &r->prims[i];
-		float4 e = r->materials[p->material].emission;
+		const dev_material *m = &r->materials[p->material];   /* its average pigment */
+		float4 e = { m->pigment.x * m->emission.x, m->pigment.y * m->emission.y, m->pigment.z * m->emission.z, 0 };
 		double lum = 0.2126 * e.x + 0.7152 * e.y + 0.0722 * e.z, area;
 		if (lum <= 0 || (p->type != PRIM_SPHERE && p->type != PRIM_TRIANGLE))
 			continue;
@@ -755,7 +685,7 @@ static xform local_to_world(const dev_prim *p)
 	for (int i = 0; i < 3; i++)
 		for (int j = 0; j < 4; j++)
 			to_local.m[i][j] = ((const float *)rows[i])[j];
-	invert(&to_local, &to_world);
+	lower_invert(&to_local, &to_world);
 	return to_world;
 }
 
@@ -955,12 +885,16 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 		if (light_in_range(&s->lights[i]))
 			out->lights[out->n_lights++] = lower_light(&s->lights[i]);
 	out->materials = lw.mats;
-	out->finishes = lw.finishes;
 	out->n_materials = lw.n_mats;
+	out->textures = lw.textures;
 	out->object_flags = xmalloc(s->n_objects * sizeof *out->object_flags);
 	for (int i = 0; i < s->n_objects; i++)
 		out->object_flags[i] = s->objects[i].flags;
 	out->n_objects = s->n_objects;
+	int shadows_pass = lw.textures.see_through;
+	for (int i = 0; i < s->n_objects; i++)
+		shadows_pass |= (s->objects[i].flags & OBJ_NO_SHADOW) != 0;
+	out->params.scene_flags = shadows_pass ? SCENE_SHADOWS_PASS : 0;
 	out->normals = lw.normals;
 	out->n_normals = lw.n_normals;
 	if (lower_camera(s, &out->params))
@@ -994,7 +928,7 @@ void lower_free(lower_result *r)
 	free(r->stats);
 	free(r->prims);
 	free(r->materials);
-	free(r->finishes);
+	lower_textures_free(&r->textures);
 	free(r->object_flags);
 	free(r->lights);
 	free(r->emitters);

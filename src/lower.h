@@ -36,6 +36,17 @@ typedef struct {
 	size_t bytes;       /* nodes, primitives and normals */
 } lower_bvh_stats;
 
+/* The buffers of the materials' patterns (lower_texture.c). */
+typedef struct {
+	dev_pattern *patterns;
+	int n_patterns, cap_patterns;
+	dev_warp *warps;
+	int n_warps, cap_warps;
+	dev_map_entry *maps;
+	int n_maps, cap_maps;
+	int see_through;          /* some colour has filter or transmit */
+} lower_textures;
+
 typedef struct {
 	bvh_node *nodes;          /* the top level's, then each mesh's */
 	int n_nodes;
@@ -52,8 +63,8 @@ typedef struct {
 	float4 *normals;          /* three a smooth triangle */
 	int n_normals;
 	dev_material *materials;
-	dev_finish *finishes;     /* the same textures for the Whitted integrator, one per material */
 	int n_materials;
+	lower_textures textures;  /* the materials' patterns, warps and maps */
 	int *object_flags;        /* OBJ_ flags, one per scene object */
 	int n_objects;
 	dev_light *lights;
@@ -72,10 +83,12 @@ void lower_free(lower_result *r);
 /* The OpenCL build options for lr's kernels (the node layout is a -D). */
 const char *lower_kernel_options(const lower_result *lr);
 
-/* The physically based material of a POV-Ray texture and interior. */
-dev_material lower_material(const scene_material *m);
-/* The same texture and interior as POV-Ray's classic model reads them; ambient
- * is multiplied by ambient_light. */
-dev_finish lower_finish(const scene_material *m, const float ambient_light[3]);
+/* A POV-Ray texture and interior as the kernels read them (ambient multiplied
+ * by ambient_light); its pattern pigments go into lt. local: a mesh's own
+ * texture, whose patterns are in the mesh's space. */
+dev_material lower_texture(lower_textures *lt, const scene *s, const scene_material *m, int local);
+void lower_textures_free(lower_textures *lt);
+/* The inverse of an affine transform; -1 when it is singular. */
+int lower_invert(const xform *t, xform *inv);
 
 #endif

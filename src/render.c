@@ -9,28 +9,49 @@
 
 #define WHITTED_GROUP 16
 
-/* The kernel's buffers in argument order (an X-macro, so creating, binding and
- * releasing them cannot drift apart): name, host pointer, bytes, flags. */
-#define RENDER_BUFFERS(X, LR, PARAMS, NPIX) \
-	X(nodes, (LR)->dev_nodes, (LR)->dev_node_bytes, CL_MEM_READ_ONLY) \
-	X(prims, (LR)->prims, (LR)->n_all_prims * sizeof(dev_prim), CL_MEM_READ_ONLY) \
-	X(normals, (LR)->normals, (LR)->n_normals * sizeof(float4), CL_MEM_READ_ONLY) \
-	X(materials, (LR)->materials, (LR)->n_materials * sizeof(dev_material), CL_MEM_READ_ONLY) \
-	X(lights, (LR)->lights, (LR)->n_lights * sizeof(dev_light), CL_MEM_READ_ONLY) \
-	X(emitters, (LR)->emitters, (LR)->n_emitters * sizeof(dev_emitter), CL_MEM_READ_ONLY) \
-	X(params, (PARAMS), sizeof(dev_params), CL_MEM_READ_ONLY) \
-	X(film, NULL, (NPIX) * 4 * sizeof(float), CL_MEM_READ_WRITE) \
-	X(counters, NULL, COUNT_N * sizeof(cl_uint), CL_MEM_READ_WRITE) \
-	X(aov, NULL, (PARAMS)->aov ? (NPIX) * AOV_FLOAT4S * 4 * sizeof(float) : 0, CL_MEM_READ_WRITE) \
-	X(finishes, (LR)->finishes, (LR)->n_materials * sizeof(dev_finish), CL_MEM_READ_ONLY) \
-	X(objects, (LR)->object_flags, (LR)->n_objects * sizeof(cl_int), CL_MEM_READ_ONLY)
+/* Where each of the scene's buffers (SCENE_BUFFERS in shared.h) is on the
+ * host: pointer and bytes. A buffer added to that list needs a line here. */
+#define HOST_nodes(LR) (LR)->dev_nodes, (LR)->dev_node_bytes
+#define HOST_prims(LR) (LR)->prims, (LR)->n_all_prims * sizeof(dev_prim)
+#define HOST_normals(LR) (LR)->normals, (LR)->n_normals * sizeof(float4)
+#define HOST_materials(LR) (LR)->materials, (LR)->n_materials * sizeof(dev_material)
+#define HOST_lights(LR) (LR)->lights, (LR)->n_lights * sizeof(dev_light)
+#define HOST_emitters(LR) (LR)->emitters, (LR)->n_emitters * sizeof(dev_emitter)
+#define HOST_objects(LR) (LR)->object_flags, (LR)->n_objects * sizeof(cl_int)
+#define HOST_patterns(LR) (LR)->textures.patterns, (LR)->textures.n_patterns * sizeof(dev_pattern)
+#define HOST_warps(LR) (LR)->textures.warps, (LR)->textures.n_warps * sizeof(dev_warp)
+#define HOST_maps(LR) (LR)->textures.maps, (LR)->textures.n_maps * sizeof(dev_map_entry)
 
+/* The kernels' buffers in argument order: the scene's, from shared.h's list,
+ * then the parameters and the film's. */
 enum {
-#define X(NAME, PTR, BYTES, FLAGS) BUF_##NAME,
-	RENDER_BUFFERS(X, 0, 0, 0)
-#undef X
+#define SCENE_ENUM(TYPE, NAME) BUF_##NAME,
+	SCENE_BUFFERS(SCENE_ENUM)
+#undef SCENE_ENUM
+	BUF_params, BUF_film, BUF_counters, BUF_aov,
 	BUF_COUNT
 };
+
+struct host_buffer {
+	const char *name;
+	const void *ptr;     /* what the buffer starts with, or NULL */
+	size_t bytes;
+	cl_mem_flags flags;
+};
+
+/* Every buffer's name, contents and size, in argument order. */
+static void buffer_table(const lower_result *lr, const dev_params *params, size_t npix,
+                         struct host_buffer b[BUF_COUNT])
+{
+#define SCENE_ROW(TYPE, NAME) b[BUF_##NAME] = (struct host_buffer){ #NAME, HOST_##NAME(lr), CL_MEM_READ_ONLY };
+	SCENE_BUFFERS(SCENE_ROW)
+#undef SCENE_ROW
+	b[BUF_params] = (struct host_buffer){ "params", params, sizeof *params, CL_MEM_READ_ONLY };
+	b[BUF_film] = (struct host_buffer){ "film", NULL, npix * 4 * sizeof(float), CL_MEM_READ_WRITE };
+	b[BUF_counters] = (struct host_buffer){ "counters", NULL, COUNT_N * sizeof(cl_uint), CL_MEM_READ_WRITE };
+	b[BUF_aov] = (struct host_buffer){ "aov", NULL, params->aov ? npix * AOV_FLOAT4S * 4 * sizeof(float) : 0,
+	                                   CL_MEM_READ_WRITE };
+}
 
 struct pass_loop {
 	device_ctx *d;
@@ -57,19 +78,17 @@ static double gib(double bytes)
 }
 
 /* Says which buffer does not fit the device, with the numbers, before any is made. */
-static int check_fits(const device_ctx *d, lower_result *lr, const dev_params *params, size_t npix)
+static int check_fits(const device_ctx *d, const struct host_buffer b[BUF_COUNT])
 {
 	double total = 0;
-	(void)params;
-#define X(NAME, PTR, BYTES, FLAGS) \
-	if ((double)(BYTES) > (double)d->max_alloc) { \
-		fprintf(stderr, "eclat: the %s buffer needs %.2f GiB, more than the %.2f GiB %s allows " \
-		        "in one buffer\n", #NAME, gib(BYTES), gib(d->max_alloc), d->name); \
-		return -1; \
-	} \
-	total += (double)(BYTES);
-	RENDER_BUFFERS(X, lr, params, npix)
-#undef X
+	for (int i = 0; i < BUF_COUNT; i++) {
+		if ((double)b[i].bytes > (double)d->max_alloc) {
+			fprintf(stderr, "eclat: the %s buffer needs %.2f GiB, more than the %.2f GiB %s allows "
+			        "in one buffer\n", b[i].name, gib(b[i].bytes), gib(d->max_alloc), d->name);
+			return -1;
+		}
+		total += (double)b[i].bytes;
+	}
 	if (total > (double)d->global_mem) {
 		fprintf(stderr, "eclat: the scene and image need %.2f GiB, more than the %.2f GiB of %s\n",
 		        gib(total), gib(d->global_mem), d->name);
@@ -232,11 +251,10 @@ static int setup(struct pass_loop *pl, cl_program prog, lower_result *lr)
 	if (!pl->k)
 		return device_fail("clCreateKernel", err);
 	err = CL_SUCCESS;
-#define X(NAME, PTR, BYTES, FLAGS) \
-	if (err == CL_SUCCESS) \
-		pl->bufs[BUF_##NAME] = make_buffer(pl->d, PTR, BYTES, FLAGS, &err);
-	RENDER_BUFFERS(X, lr, &pl->params, pl->npix)
-#undef X
+	struct host_buffer b[BUF_COUNT];
+	buffer_table(lr, &pl->params, pl->npix, b);
+	for (int i = 0; i < BUF_COUNT && err == CL_SUCCESS; i++)
+		pl->bufs[i] = make_buffer(pl->d, b[i].ptr, b[i].bytes, b[i].flags, &err);
 	if (err != CL_SUCCESS)
 		return device_fail("clCreateBuffer", err);
 	for (int i = 0; i < BUF_COUNT && err == CL_SUCCESS; i++)
@@ -261,7 +279,9 @@ int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_se
 	pl.params.n_emitters = lr->n_emitters;
 	pl.params.aov = rs->aov;
 	pl.params.classic.w = rs->adc_bailout;
-	if (check_fits(d, lr, &pl.params, pl.npix))
+	struct host_buffer table[BUF_COUNT];
+	buffer_table(lr, &pl.params, pl.npix, table);
+	if (check_fits(d, table))
 		return -1;
 	int rc = -1;
 	pl.sums = malloc(pl.npix * 4 * sizeof *pl.sums);

@@ -123,6 +123,14 @@ int scene_add_mesh(scene *s, scene_mesh *m)
 	return s->n_meshes++;
 }
 
+int scene_add_pigment(scene *s, const scene_pigment *p)
+{
+	if (s->n_pigments == s->cap_pigments)
+		s->pigments = grow(s->pigments, &s->cap_pigments, sizeof *p);
+	s->pigments[s->n_pigments] = *p;
+	return s->n_pigments++;
+}
+
 void scene_mesh_free(scene_mesh *m)
 {
 	free(m->v);
@@ -142,6 +150,9 @@ void scene_free(scene *s)
 	free(s->meshes);
 	free(s->objects);
 	free(s->lights);
+	for (int i = 0; i < s->n_pigments; i++)
+		free(s->pigments[i].map);
+	free(s->pigments);
 	memset(s, 0, sizeof *s);
 }
 
@@ -149,6 +160,8 @@ scene_material scene_default_material(void)
 {
 	return (scene_material){
 		.pigment = { 0, 0, 0, 0, 0 },
+		.pattern = -1,
+		.tex_xf = scene_xform_identity(),
 		.ambient = { 0.1f, 0.1f, 0.1f },
 		.diffuse = 0.6f,
 		.brilliance = 1,
@@ -314,6 +327,8 @@ static void material(FILE *out, const scene_material *m)
 		num(out, m->pigment[i]);
 		fputs(i < 4 ? ", " : ">", out);
 	}
+	if (m->pattern >= 0)
+		fprintf(out, " pattern %d", m->pattern);
 	fputs(" diffuse ", out);
 	num(out, m->diffuse);
 	double e[3] = { m->emission[0], m->emission[1], m->emission[2] };
@@ -495,6 +510,84 @@ static void dump_light(FILE *out, const scene_light *l)
 	fputc('\n', out);
 }
 
+/* ORDER: PATTERN_ in kernels/shared.h. */
+static const char *const pattern_names[] = {
+	"solid", "agate", "aoi", "boxed", "bozo", "brick", "bumps", "cells", "checker", "crackle", "cubic",
+	"cylindrical", "dents", "facets", "gradient", "granite", "hexagon", "leopard", "marble", "onion",
+	"planar", "quilted", "radial", "ripples", "spherical", "spiral1", "spiral2", "spotted", "square",
+	"triangular", "waves", "wood", "wrinkles",
+};
+_Static_assert(sizeof pattern_names / sizeof *pattern_names == PATTERN_COUNT, "a name for each pattern");
+
+const char *scene_pattern_name(int kind)
+{
+	return kind >= 0 && kind < PATTERN_COUNT ? pattern_names[kind] : "?";
+}
+
+/* The pattern pigments that materials use, and those their maps nest, once each. */
+static void mark_pigment(const scene *s, int i, bool *used)
+{
+	if (i < 0 || i >= s->n_pigments || used[i])
+		return;
+	used[i] = true;
+	for (int k = 0; k < s->pigments[i].n_map; k++)
+		mark_pigment(s, s->pigments[i].map[k].pigment, used);
+}
+
+static void dump_pigment(FILE *out, int index, const scene_pigment *pg)
+{
+	fprintf(out, "pigment %d %s", index, scene_pattern_name(pg->kind));
+	double params[8];
+	memcpy(params, pg->params, sizeof params);
+	fputs(" params", out);
+	for (int i = 0; i < 8; i++) {
+		fputc(' ', out);
+		num(out, params[i]);
+	}
+	fprintf(out, " wave %d noise_generator %d", pg->wave, pg->noise_generator);
+	fnum(out, "frequency", pg->frequency);
+	fnum(out, "phase", pg->phase);
+	for (int i = 0; i < pg->n_warps; i++)
+		fprintf(out, " warp %d", pg->warps[i].kind);
+	fputs(" xf", out);
+	for (int i = 0; i < 3; i++) {
+		vec(out, "", pg->xf.m[i]);
+		fputc(' ', out);
+		num(out, pg->xf.m[i][3]);
+	}
+	fputs(" map", out);
+	for (const scene_map_entry *e = pg->map; e < pg->map + pg->n_map; e++) {
+		fputs(" [", out);
+		num(out, e->value);
+		if (e->pigment >= 0) {
+			fprintf(out, " pigment %d]", e->pigment);
+			continue;
+		}
+		for (int k = 0; k < 5; k++) {
+			fputc(' ', out);
+			num(out, e->colour[k]);
+		}
+		fputc(']', out);
+	}
+	fputc('\n', out);
+}
+
+static void dump_pigments(FILE *out, const scene *s)
+{
+	bool *used = calloc(s->n_pigments + 1, sizeof *used);
+	if (!used)
+		return;
+	for (int i = 0; i < s->n_objects; i++)
+		mark_pigment(s, s->objects[i].material.pattern, used);
+	for (int m = 0; m < s->n_meshes; m++)
+		for (int i = 0; i < s->meshes[m].n_mats; i++)
+			mark_pigment(s, s->meshes[m].mats[i].pattern, used);
+	for (int i = 0; i < s->n_pigments; i++)
+		if (used[i])
+			dump_pigment(out, i, &s->pigments[i]);
+	free(used);
+}
+
 void scene_dump(const scene *s, FILE *out)
 {
 	const scene_camera *c = &s->camera;
@@ -530,6 +623,7 @@ void scene_dump(const scene *s, FILE *out)
 		dump_object(out, &s->objects[i]);
 	for (int i = 0; i < s->n_meshes; i++)
 		dump_mesh(out, i, &s->meshes[i]);
+	dump_pigments(out, s);
 }
 
 static void grow_box(double lo[3], double hi[3], const double p[3])

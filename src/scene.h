@@ -9,6 +9,7 @@
 #include <stdbool.h>
 #include <stdio.h>
 #include "diag.h"
+#include "../kernels/shared.h"   /* PATTERN_, WAVE_, WARP_ */
 
 /* An affine transform: world = m * (p, 1), rows of a 3x4 matrix. */
 typedef struct {
@@ -25,12 +26,51 @@ xform scene_xform_then(const xform *a, const xform *b);
 void scene_xform_point(const xform *t, const double p[3], double out[3]);
 void scene_xform_vector(const xform *t, const double v[3], double out[3]);
 
+/* A pattern pigment's map entry: a colour, or a nested pigment (a pigment_map
+ * entry, or checker pigment { } pigment { }). */
+typedef struct {
+	double value;
+	float colour[5];         /* rgb, filter, transmit */
+	int pigment;             /* an index into scene.pigments, or -1: the colour */
+} scene_map_entry;
+
+/* A warp { } of a pattern, or its classic turbulence (kernels/shared.h, dev_warp). */
+#define SCENE_MAX_WARPS 8
+typedef struct {
+	int kind;                /* WARP_ */
+	double a[4], b[4], c[4];
+} scene_warp;
+
+/* A pigment with a pattern (src/eval_pattern.c): its kind, modifiers and map,
+ * with POV-Ray 3.7's defaults. The scene keeps them in one pool, and a material
+ * or a map entry refers to one by its index; a pigment in the pool is never
+ * changed once made, so materials copied by value can share it. kind
+ * PATTERN_SOLID holds a colour_map alone (a declared map). */
+typedef struct {
+	int kind;                /* PATTERN_ */
+	int wave, noise_generator;
+	double frequency, phase, wave_exponent;
+	double params[2][4];     /* by kind, as dev_pattern's */
+	scene_warp warps[SCENE_MAX_WARPS];
+	int n_warps;
+	bool turb_first;         /* warps[0] is the pattern's classic turbulence */
+	xform xf;                /* the pattern's space to its parent's: the texture's, or
+	                          * the pigment whose map holds it */
+	scene_map_entry *map;    /* by increasing value */
+	int n_map;
+	src_loc loc;
+} scene_pigment;
+
 /* A POV-Ray texture and interior, with POV-Ray 3.7's defaults
  * (scene_default_material). The path tracer turns these into a physically based
  * material (lower.c, documented in eclat-scene(5)); the Whitted integrator uses
  * them as POV-Ray does. */
 typedef struct {
-	float pigment[5];        /* red, green, blue, filter, transmit; default black */
+	float pigment[5];        /* red, green, blue, filter, transmit; default black; with a
+	                          * pattern, its average colour */
+	int pattern;             /* the pattern pigment (scene.pigments), or -1: pigment[] */
+	xform tex_xf;            /* the texture's space to world (to the mesh's space for a
+	                          * mesh's own textures): the transformations written after it */
 	/* finish */
 	float ambient[3];        /* 0.1 */
 	float diffuse;           /* 0.6 */
@@ -142,6 +182,8 @@ typedef struct {
 	int n_lights, cap_lights;
 	scene_mesh *meshes;
 	int n_meshes, cap_meshes;
+	scene_pigment *pigments;   /* the pattern pigments' pool, scene_material.pattern */
+	int n_pigments, cap_pigments;
 	float background[3];
 	float sky[3];         /* sky_sphere with a solid pigment; used when has_sky */
 	bool has_sky;
@@ -156,6 +198,8 @@ void scene_init(scene *s);
 /* Appends; exits with a message on out of memory. */
 void scene_add_object(scene *s, const scene_object *o);
 void scene_add_light(scene *s, const scene_light *l);
+/* Takes ownership of p's map; returns its index. */
+int scene_add_pigment(scene *s, const scene_pigment *p);
 /* Takes ownership of m's arrays; returns its index. */
 int scene_add_mesh(scene *s, scene_mesh *m);
 void scene_free(scene *s);
@@ -165,6 +209,8 @@ void scene_mesh_free(scene_mesh *m);
 /* Grows [lo, hi] by the object's box in world space (planes reach 1e10, as in
  * POV-Ray); start with lo = +huge and hi = -huge. */
 void scene_object_bounds(const scene *s, const scene_object *o, double lo[3], double hi[3]);
+/* A PATTERN_'s name (kernels/shared.h): "checker". */
+const char *scene_pattern_name(int kind);
 /* Writes the scene in world space, one entity a line, for --dump-scene and golden tests. */
 void scene_dump(const scene *s, FILE *out);
 scene_material scene_default_material(void);

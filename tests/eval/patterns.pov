@@ -1,17 +1,20 @@
-// Patterns become their average colour, with one warning per pattern kind
-// (patterns.pov.err; patterns.pov.scene has the colours). The averages, by
-// hand, over 0 to 1, a map being constant before its first entry and after its
-// last and linear between:
+// Pattern pigments: each becomes a pattern pigment of the scene (the
+// "pigment N" lines of patterns.pov.scene: kind, parameters, wave, noise
+// generator, frequency, phase, warps, its transform and its map) that the
+// kernels evaluate at each point, and keeps its average colour for what needs
+// one colour. Those averages, by hand, over 0 to 1, a map being constant
+// before its first entry and after its last and linear between:
 //  checker red, blue: <0.5, 0, 0.5>;
 //  [0 rgb 0] [1 rgb 1]: 0.5;
 //  [0.25 rgb 0] [0.75 rgb 1]: 0 * 0.25 + 0.5 * 0.5 + 1 * 0.25 = 0.5;
 //  [0 rgb 1] [0.5 rgb 1] [0.5 rgb 0] [1 rgb 0]: 0.5;
 //  the old form [0, 0.5 rgb 1 rgb 0]: a ramp from 1 to 0 over 0 to 0.5, then 0:
 //    0.25;
-//  bozo without a map: 0.5, POV-Ray's default grey ramp;
+//  bozo without a map: 0.5 (its map is POV-Ray's default one);
 //  a declared pattern pigment with a colour_map after it takes the map's
 //    average: <0.5, 0, 0.5>;
-//  a texture_map: the average pigment (0.5) and the first texture's finish;
+//  a texture_map: the average pigment (0.5) and the first texture's finish,
+//    with a warning: patterns of whole textures are not rendered yet;
 //  [0.0 blue 0.4] [1 red 1 green 0.5] (a value, then a colour of components):
 //    <0.5, 0.25, 0.2>;
 //  average, whose values are weights: [1 rgb x] [3 rgb z] -> <0.25, 0, 0.75>,

@@ -1,0 +1,128 @@
+/* lower_texture.c: a scene material into the kernels' dev_material, and its
+ * pigment's tree of patterns into the patterns, warps and maps buffers.
+ *
+ * Each use of a pattern pigment is flattened with the transformations it is
+ * placed under, so a pattern's rows map world space (a mesh's own space for a
+ * mesh's textures) straight into its own space: the kernel applies one affine
+ * map per pattern, however deep the pigment sits in maps. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "lower.h"
+
+/* How deep pigments nest in maps on the device (texture.cl's stack holds the
+ * pigments waiting at one depth and one at each above). */
+#define NEST_MAX 6
+
+static void *grow_to(void *p, int *cap, int need, size_t size)
+{
+	if (need <= *cap)
+		return p;
+	int cap2 = *cap ? *cap : 16;
+	while (cap2 < need)
+		cap2 *= 2;
+	p = realloc(p, (size_t)cap2 * size);
+	if (!p) {
+		fprintf(stderr, "eclat: out of memory\n");
+		exit(1);
+	}
+	*cap = cap2;
+	return p;
+}
+
+static float4 row(const xform *t, int i)
+{
+	return (float4){ (float)t->m[i][0], (float)t->m[i][1], (float)t->m[i][2], (float)t->m[i][3] };
+}
+
+static float4 f4v(const double v[4])
+{
+	return (float4){ (float)v[0], (float)v[1], (float)v[2], (float)v[3] };
+}
+
+static dev_map_entry entry_colour(const float c[5], double value)
+{
+	return (dev_map_entry){ .colour = { c[0], c[1], c[2], c[3] }, .transmit = c[4], .value = (float)value,
+	                        .pigment = -1 };
+}
+
+/* The pigment s->pigments[node] placed by to_world (its parent's space to
+ * world); returns its dev_pattern's index. */
+static int flatten(lower_textures *lt, const scene *s, int node, const xform *to_world, int depth)
+{
+	const scene_pigment *pg = &s->pigments[node];
+	xform full = scene_xform_then(&pg->xf, to_world), inv;
+	if (lower_invert(&full, &inv)) {
+		diag_warning(pg->loc, "a pattern with a singular transform (a scale of 0?) is its first colour");
+		inv = scene_xform_identity();
+	}
+	int at = lt->n_patterns++;
+	lt->patterns = grow_to(lt->patterns, &lt->cap_patterns, lt->n_patterns, sizeof *lt->patterns);
+	dev_pattern d = {
+		.rows = { row(&inv, 0), row(&inv, 1), row(&inv, 2) },
+		.kind = pg->kind, .wave = pg->wave, .noise_generator = pg->noise_generator,
+		.flags = pg->turb_first ? PATTERN_TURB_FIRST : 0,
+		.frequency = (float)pg->frequency, .phase = (float)pg->phase, .wave_exponent = (float)pg->wave_exponent,
+		.params = { f4v(pg->params[0]), f4v(pg->params[1]) },
+		.warp_first = lt->n_warps, .warp_count = pg->n_warps,
+		.map_first = lt->n_maps, .map_count = pg->n_map,
+	};
+	lt->warps = grow_to(lt->warps, &lt->cap_warps, lt->n_warps + pg->n_warps, sizeof *lt->warps);
+	for (int i = 0; i < pg->n_warps; i++)
+		lt->warps[lt->n_warps++] = (dev_warp){ .a = f4v(pg->warps[i].a), .b = f4v(pg->warps[i].b),
+		                                       .c = f4v(pg->warps[i].c), .kind = pg->warps[i].kind };
+	/* the map's entries side by side; nested pigments go after them */
+	int first = lt->n_maps;
+	lt->n_maps += pg->n_map;
+	lt->maps = grow_to(lt->maps, &lt->cap_maps, lt->n_maps, sizeof *lt->maps);
+	for (int i = 0; i < pg->n_map; i++) {
+		const scene_map_entry *e = &pg->map[i];
+		dev_map_entry de = entry_colour(e->colour, e->value);
+		if (e->pigment >= 0 && depth + 1 < NEST_MAX)
+			de.pigment = flatten(lt, s, e->pigment, &full, depth + 1);
+		else if (e->pigment >= 0)
+			diag_warning(pg->loc, "pigments nested more than %d deep in maps: the deeper ones are "
+			             "their average colour", NEST_MAX);
+		lt->maps[first + i] = de;
+		if (e->colour[3] != 0 || e->colour[4] != 0)
+			lt->see_through = 1;
+	}
+	lt->patterns[at] = d;
+	return at;
+}
+
+dev_material lower_texture(lower_textures *lt, const scene *s, const scene_material *m, int local)
+{
+	const float *p = m->pigment;
+	const float *al = s->ambient_light;
+	dev_material d = {
+		.pigment = { p[0], p[1], p[2], p[3] },
+		.ambient = { m->ambient[0] * al[0], m->ambient[1] * al[1], m->ambient[2] * al[2], p[4] },
+		.emission = { m->emission[0], m->emission[1], m->emission[2], m->diffuse },
+		.highlight = { m->phong, m->phong_size, m->specular, m->roughness > 0 ? 1 / m->roughness : 0 },
+		.reflection = { m->reflection[0], m->reflection[1], m->reflection[2], m->reflection_falloff },
+		/* POV-Ray raises the reflected colour to 1 / exponent */
+		.reflection_max = { m->reflection_max[0], m->reflection_max[1], m->reflection_max[2],
+		                    m->reflection_exponent != 0 ? 1 / m->reflection_exponent : 1 },
+		.terms = { m->brilliance, m->metallic, m->reflection_metallic, m->reflection_fresnel },
+		.interior = { m->ior > 0 ? m->ior : 1, m->fade_distance, m->fade_power, m->conserve_energy },
+		.fade_color = { m->fade_color[0], m->fade_color[1], m->fade_color[2], 0 },
+		.pattern = -1,
+		.flags = (local ? MATERIAL_LOCAL : 0) | (m->roughness_set ? MATERIAL_ROUGH : 0),
+	};
+	if (p[3] != 0 || p[4] != 0)
+		lt->see_through = 1;
+	if (m->pattern >= 0 && m->pattern < s->n_pigments)
+		d.pattern = flatten(lt, s, m->pattern, &m->tex_xf, 0);
+	return d;
+}
+
+void lower_textures_free(lower_textures *lt)
+{
+	free(lt->patterns);
+	free(lt->warps);
+	free(lt->maps);
+	memset(lt, 0, sizeof *lt);
+}
