@@ -133,20 +133,33 @@ enum { WAVE_RAMP = 0, WAVE_SINE, WAVE_TRIANGLE, WAVE_SCALLOP, WAVE_CUBIC, WAVE_P
 enum { WARP_TURBULENCE = 0, WARP_REPEAT, WARP_BLACK_HOLE };
 
 /* One warp, 64 bytes.
- * turbulence: a.xyz turbulence, a.w omega; b.x lambda, b.y octaves.
- * repeat: a.xyz the repeat vector, b.xyz offset, c.xyz flip (1 or 0 per axis).
+ * turbulence: a.xyz turbulence, a.w omega; b.x lambda, b.y octaves (1-10).
+ *   classic = 1: the turbulence written in the pattern itself (turbulence,
+ *   octaves, omega, lambda outside a warp {}: POV-Ray's "classic" turbulence);
+ *   0: warp { turbulence }. POV-Ray keeps the classic one in the warp list, where
+ *   it first appeared (appended after the warps written before it); marble and
+ *   wood never apply it as a warp, and agate, marble, spiral1, spiral2 and wood
+ *   read its parameters when it is the list's last warp (POV-Ray's
+ *   Search_For_Turb). Agate always has one: POV-Ray creates it, turbulence 0.
+ * repeat: a.xyz the repeat vector (one non-zero component: the axis and the
+ *   width); b.xyz offset; c.xyz flip (non-zero: flip that axis).
  * black_hole: a.xyz centre, a.w radius; b.x strength, b.y falloff,
- *   b.z 1 for inverse; c.xyz repeat, c.w 1 when repeated; turbulence not kept. */
+ *   b.z 1 for inverse; c.xyz repeat, c.w 1 when repeated; turbulence not kept,
+ *   nor a type other than 0 (which does nothing in POV-Ray 3.7: drop the warp). */
 typedef struct {
 	float4 a, b, c;
-	int kind, pad0, pad1, pad2;
+	int kind, classic, pad1, pad2;
 } dev_warp;
 
 /* A pattern with its modifiers, 144 bytes.
  * rows: the affine map from world space to the pattern's space (the inverse of
  *   the transformations written after the pattern and around the texture).
- * The classic turbulence of agate, marble, wood... (turbulence written in the
- *   pattern, not in a warp) is the first warp, with flags & PATTERN_TURB_FIRST.
+ *   POV-Ray applies them before every warp, wherever they are written.
+ * noise_generator: 1, 2 or 3, the pattern's or global_settings' (default 2).
+ * frequency 0 skips frequency and phase: POV-Ray's default for quilted (and for
+ *   the discrete patterns, which ignore frequency, phase and wave anyway).
+ *   Marble, wood, spiral1 and spiral2 default to the triangle wave.
+ * flags: none yet (0).
  * params, by kind (POV-Ray's defaults filled in by the host):
  *   agate:     params[0].x agate_turb (1)
  *   brick:     params[0].xyz brick_size (<8, 3, 4.5>), w mortar (0.5)
@@ -155,6 +168,7 @@ typedef struct {
  *   gradient:  params[0].xyz the axis vector
  *   quilted:   params[0].x control0 (1), y control1 (1)
  *   spiral1/2: params[0].x the number of arms
+ *   waves, ripples: params[0].x global_settings' number_of_waves (10)
  *   granite, leopard, ...: none */
 typedef struct {
 	float4 rows[3];
@@ -165,7 +179,6 @@ typedef struct {
 	int map_first, map_count;     /* dev_map_entry entries, by increasing value */
 	float4 pad2;
 } dev_pattern;
-enum { PATTERN_TURB_FIRST = 1 };
 
 /* An entry of a pattern's map, 32 bytes: a colour, or a nested pigment (a
  * pigment_map, or checker pigment { } pigment { }) when pigment >= 0. */
