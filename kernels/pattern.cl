@@ -252,6 +252,10 @@ inline float3 pattern_warp(global const dev_warp *w, float3 p)
 			q.z = qa;
 		return q + block * w->b.xyz;
 	}
+	if (w->kind == WARP_TRANSFORM) {
+		float4 q = (float4)(p, 1.0f);
+		return (float3)(dot(w->a, q), dot(w->b, q), dot(w->c, q));
+	}
 	if (w->kind == WARP_BLACK_HOLE) {
 		float3 centre = w->a.xyz;
 		if (w->c.w != 0.0f) {
@@ -286,46 +290,28 @@ inline float pattern_agate(float3 p, global const dev_warp *turb, float agate_tu
 	return noise < 0.0f ? 0.0f : pow(fmin(noise, 1.0f), 0.77f);
 }
 
+/* Whether a coordinate of brick falls in the mortar: POV-Ray tests
+ * frac((x + 1e-10 + mortar) / size) <= mortar / size in double, which holds
+ * exactly when x mod size >= size - mortar - 1e-10. Tested this way in float,
+ * where the 1e-10 vanishes and would put x = 0, a common plane, in the mortar. */
+inline int pattern_brick_mortar(float x, float size, float mortar)
+{
+	return x - size * floor(x / size) >= size - mortar;
+}
+
+/* Brick: rows of height size.y, every other row shifted by half a brick along
+ * x and z. POV-Ray's row test frac((y + mortar) / (2 size.y)) <= 0.5 changes
+ * only inside horizontal mortar, so float cannot misplace it. */
 inline float pattern_brick(float3 p, float4 size_mortar)
 {
-	float mortar = size_mortar.w;
-	float3 q = p + (1e-10f + mortar);
 	float3 size = size_mortar.xyz;
-	float3 m = mortar / size;
-	/* POV-Ray takes fractions by truncation, then adds 1 to a negative one. */
-	float f = q.y / size.y;
-	f -= (float)(int)f;
-	if (f < 0.0f)
-		f += 1.0f;
-	if (f <= m.y)
+	float mortar = size_mortar.w;
+	if (pattern_brick_mortar(p.y, size.y, mortar))
 		return 0.0f;
-	float row = q.y / size.y * 0.5f;
-	row -= (float)(int)row;
-	if (row < 0.0f)
-		row += 1.0f;
-	float bx = q.x / size.x;
-	bx -= (float)(int)bx;
-	if (bx < 0.0f)
-		bx += 1.0f;
-	if (bx <= m.x && row <= 0.5f)
-		return 0.0f;
-	bx = q.x / size.x + 0.5f;
-	bx -= (float)(int)bx;
-	if (bx < 0.0f)
-		bx += 1.0f;
-	if (bx <= m.x && row > 0.5f)
-		return 0.0f;
-	float bz = q.z / size.z;
-	bz -= (float)(int)bz;
-	if (bz < 0.0f)
-		bz += 1.0f;
-	if (bz <= m.z && row > 0.5f)
-		return 0.0f;
-	bz = q.z / size.z + 0.5f;
-	bz -= (float)(int)bz;
-	if (bz < 0.0f)
-		bz += 1.0f;
-	if (bz <= m.z && row <= 0.5f)
+	float row = (p.y + mortar) / (2.0f * size.y);
+	int odd = row - floor(row) > 0.5f;
+	float half_x = odd ? 0.5f * size.x : 0.0f, half_z = odd ? 0.0f : 0.5f * size.z;
+	if (pattern_brick_mortar(p.x + half_x, size.x, mortar) || pattern_brick_mortar(p.z + half_z, size.z, mortar))
 		return 0.0f;
 	return 1.0f;
 }
@@ -634,7 +620,7 @@ float pattern_value(global const dev_pattern *pt, global const dev_warp *warps, 
 	}
 	p = clamp(p, -1.0e17f, 1.0e17f);
 
-	/* POV-Ray's Search_For_Turb: the classic turbulence, if it is the last warp. */
+	/* POV-Ray's Search_For_Turb: the classic turbulence, which is the last warp. */
 	global const dev_warp *turb = 0;
 	if (pt->warp_count > 0) {
 		global const dev_warp *last = &warps[pt->warp_first + pt->warp_count - 1];
