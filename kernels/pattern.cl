@@ -349,7 +349,6 @@ inline float pattern_crackle(float3 p, float4 form_metric, float4 offset_solid, 
 	int fx = (int)floor(p.x - 1e-10f), fy = (int)floor(p.y - 1e-10f), fz = (int)floor(p.z - 1e-10f);
 	float d1 = MAXFLOAT, d2 = MAXFLOAT, d3 = MAXFLOAT;
 	float3 nearest = (float3)(0.0f);
-	int count = 0;
 	for (int ax = -2; ax <= 2; ax++)
 		for (int ay = -2; ay <= 2; ay++)
 			for (int az = -2; az <= 2; az++) {
@@ -362,7 +361,7 @@ inline float pattern_crackle(float3 p, float4 form_metric, float4 offset_solid, 
 				float d = pattern_metric(c - p, metric);
 				/* POV-Ray sorts its first three, then keeps the three
 				 * smallest; strict comparisons keep its choice on ties. */
-				if (count < 3 ? (count == 0 || d < d1) : d < d1) {
+				if (d < d1) {
 					d3 = d2;
 					d2 = d1;
 					d1 = d;
@@ -373,7 +372,6 @@ inline float pattern_crackle(float3 p, float4 form_metric, float4 offset_solid, 
 				} else if (d < d3) {
 					d3 = d;
 				}
-				count++;
 			}
 	if (offset != 0.0f) {
 		float o = metric == 2.0f ? offset * offset : metric == 1.0f ? offset : pow(offset, metric);

@@ -173,7 +173,7 @@ typedef struct {
  *   brick:     params[0].xyz brick_size (<8, 3, 4.5>), w mortar (0.5)
  *   crackle:   params[0].xyz form (<-1, 1, 0>), w metric (2); params[1].x offset (0),
  *              y 1 for solid
- *   gradient:  params[0].xyz the axis vector
+ *   gradient:  params[0].xyz the axis vector, normalized (as POV-Ray does)
  *   quilted:   params[0].x control0 (1), y control1 (1)
  *   spiral1/2: params[0].x the number of arms
  *   waves, ripples: params[0].x global_settings' number_of_waves (10)
