@@ -124,31 +124,53 @@ enum {                       /* ORDER: the names in src/eval_pattern.c */
 /* POV-Ray's wave types, applied to a continuous pattern's value. */
 enum { WAVE_RAMP = 0, WAVE_SINE, WAVE_TRIANGLE, WAVE_SCALLOP, WAVE_CUBIC, WAVE_POLY };
 /* Warps, applied in order to the point before the pattern (dev_warp). */
-enum { WARP_TURBULENCE = 0, WARP_REPEAT, WARP_BLACK_HOLE };
+enum { WARP_TURBULENCE = 0, WARP_REPEAT, WARP_BLACK_HOLE, WARP_TRANSFORM };
 
-/* One warp, 64 bytes.
- * turbulence: a.xyz turbulence, a.w omega; b.x lambda, b.y octaves.
- * repeat: a.xyz the repeat vector, b.xyz offset, c.xyz flip (1 or 0 per axis).
+/* One warp, 64 bytes. A pattern's warps are in POV-Ray's list order, which is
+ * the order they apply in: each warp { } written goes to the FRONT of the list
+ * (the last written applies first); the turbulence written in the pattern
+ * itself goes to the END when first written, and stays last; a transformation
+ * joins the front entry when that is a transformation, else becomes a new
+ * front entry. The front transformation is dev_pattern.rows; one written
+ * before a warp { } that follows it is a WARP_TRANSFORM entry.
+ * turbulence: a.xyz turbulence, a.w omega; b.x lambda, b.y octaves (1-10);
+ *   classic = 1 for the turbulence written in the pattern (turbulence, octaves,
+ *   omega, lambda outside a warp { }: POV-Ray's "classic" turbulence), 0 for
+ *   warp { turbulence }. Marble and wood never apply the classic one as a warp;
+ *   agate, marble, spiral1, spiral2 and wood read its parameters. Agate always
+ *   has one: POV-Ray creates it, turbulence 0.
+ * repeat: a.xyz the repeat vector (one non-zero component: the axis and the
+ *   width); b.xyz offset; c.xyz flip (non-zero: flip that axis).
  * black_hole: a.xyz centre, a.w radius; b.x strength, b.y falloff,
- *   b.z 1 for inverse; c.xyz repeat, c.w 1 when repeated; turbulence not kept. */
+ *   b.z 1 for inverse; c.xyz repeat, c.w 1 when repeated; centre and repeat as
+ *   POV-Ray adjusts them for a repeat (Check_BH_Parameters); turbulence not
+ *   kept, nor a type other than 0 (which does nothing in 3.7: drop the warp).
+ * transform: a, b, c the rows of the affine map applied to the point (the
+ *   inverse of the transformation written), as dev_pattern.rows. */
 typedef struct {
 	float4 a, b, c;
-	int kind, pad0, pad1, pad2;
+	int kind, classic, pad1, pad2;
 } dev_warp;
 
 /* A pattern with its modifiers, 144 bytes.
  * rows: the affine map from world space to the pattern's space (the inverse of
  *   the transformations written after the pattern and around the texture).
- * The classic turbulence of agate, marble, wood... (turbulence written in the
- *   pattern, not in a warp) is the first warp, with flags & PATTERN_TURB_FIRST.
+ *   POV-Ray applies them before every warp, except a transformation written
+ *   before a warp { } (see dev_warp).
+ * noise_generator: 1, 2 or 3, the pattern's or global_settings' (default 2).
+ * frequency 0 skips frequency and phase: POV-Ray's default for quilted (and for
+ *   the discrete patterns, which ignore frequency, phase and wave anyway).
+ *   Marble, wood, spiral1 and spiral2 default to the triangle wave.
+ * flags: none yet (0).
  * params, by kind (POV-Ray's defaults filled in by the host):
  *   agate:     params[0].x agate_turb (1)
  *   brick:     params[0].xyz brick_size (<8, 3, 4.5>), w mortar (0.5)
  *   crackle:   params[0].xyz form (<-1, 1, 0>), w metric (2); params[1].x offset (0),
  *              y 1 for solid
- *   gradient:  params[0].xyz the axis vector
+ *   gradient:  params[0].xyz the axis vector, normalized (as POV-Ray does)
  *   quilted:   params[0].x control0 (1), y control1 (1)
  *   spiral1/2: params[0].x the number of arms
+ *   waves, ripples: params[0].x global_settings' number_of_waves (10)
  *   granite, leopard, ...: none */
 typedef struct {
 	float4 rows[3];
@@ -159,7 +181,6 @@ typedef struct {
 	int map_first, map_count;     /* dev_map_entry entries, by increasing value */
 	float4 pad2;
 } dev_pattern;
-enum { PATTERN_TURB_FIRST = 1 };
 
 /* An entry of a pattern's map, 32 bytes: a colour, or a nested pigment (a
  * pigment_map, or checker pigment { } pigment { }) when pigment >= 0. */

@@ -260,8 +260,28 @@ enum kw_class {
  * tests/man.test reads these lines (one AST_WORD_ a line).
  *   file: right inside a mesh, mesh { file "NAME" } (eval_object.c)
  *   spline and its types: spline { linear_spline ... }, S(T, cubic_spline)
- *   (eval_spline.c) */
+ *   (eval_spline.c)
+ *   the patterns and pattern modifiers POV-Ray has no keyword token for, in a
+ *   pigment: aoi, cubic, square, triangular, noise_generator, metric, form,
+ *   offset, solid, control0, control1, and in warp { }: repeat, offset, flip,
+ *   black_hole, strength (eval_pattern.c) */
 #define AST_WORD_MESH_FILE "file"
+#define AST_WORD_AOI "aoi"
+#define AST_WORD_CUBIC "cubic"
+#define AST_WORD_SQUARE "square"
+#define AST_WORD_TRIANGULAR "triangular"
+#define AST_WORD_NOISE_GENERATOR "noise_generator"
+#define AST_WORD_METRIC "metric"
+#define AST_WORD_FORM "form"
+#define AST_WORD_OFFSET "offset"
+#define AST_WORD_SOLID "solid"
+#define AST_WORD_CONTROL0 "control0"
+#define AST_WORD_CONTROL1 "control1"
+#define AST_WORD_WARP "warp"
+#define AST_WORD_REPEAT "repeat"
+#define AST_WORD_FLIP "flip"
+#define AST_WORD_BLACK_HOLE "black_hole"
+#define AST_WORD_STRENGTH "strength"
 #define AST_WORD_SPLINE "spline"
 #define AST_WORD_LINEAR_SPLINE "linear_spline"
 #define AST_WORD_QUADRATIC_SPLINE "quadratic_spline"

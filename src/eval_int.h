@@ -113,6 +113,8 @@ struct eval {
 	int errors_at_start;
 	scene_material default_mat;  /* #default */
 	double version;
+	double scene_version;    /* the scene file's own first #version, 0 when it has none */
+	src_loc scene_version_loc;
 	struct rng rng;
 	ast_node **trees;        /* included files, kept while their macros may run */
 	int n_trees;
@@ -187,6 +189,8 @@ void eval_pattern_default_map(scene_pigment *pg);
 /* A pattern modifier (turbulence, warp, brick_size...): 0 when item was one and
  * went into pg, 1 when it is not one, -1 after an error. */
 int eval_pattern_modifier(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg);
+/* A transformation written in a pigment with a pattern, into its warps' list. */
+int eval_pattern_transform(struct eval *e, scene_pigment *pg, const xform *t, src_loc loc);
 /* The argument of a pattern keyword: gradient's vector, spiral's arms. */
 int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *pg);
 

@@ -598,8 +598,8 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	}
 	xform t = scene_xform_identity();
 	rc = eval_transform_item(e, NULL, item, &t);
-	if (rc > 0)   /* a pigment's transformations move its pattern only */
-		p->pg.xf = scene_xform_then(&p->pg.xf, &t);
+	if (rc > 0 && p->kind > 0 && eval_pattern_transform(e, &p->pg, &t, item->loc))
+		return -1;   /* a pigment's transformations move its pattern only */
 	if (rc != 0 || is_pattern_modifier(item))
 		return rc < 0 ? -1 : 0;
 	if ((item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) ||

@@ -36,51 +36,82 @@ int eval_pattern_list_size(int kind)
 void eval_pattern_defaults(scene_pigment *pg, int kind, src_loc loc)
 {
 	*pg = (scene_pigment){ .kind = kind, .wave = WAVE_RAMP, .noise_generator = 2, .frequency = 1,
-	                       .wave_exponent = 1, .xf = scene_xform_identity(), .loc = loc };
+	                       .wave_exponent = 1, .loc = loc };
 	double *p = pg->params[0];
 	switch (kind) {
-	case PATTERN_AGATE: p[0] = 1; break;
+	case PATTERN_AGATE:   /* POV-Ray gives agate a classic turbulence, of 0 */
+		p[0] = 1;
+		pg->warps[pg->n_warps++] = (scene_warp){ .kind = WARP_TURBULENCE, .classic = true, .a = { 0, 0, 0, 0.5 },
+		                                         .b = { 2, 6 } };
+		break;
+	case PATTERN_MARBLE: case PATTERN_WOOD: pg->wave = WAVE_TRIANGLE; break;
+	case PATTERN_QUILTED: pg->frequency = 0; p[0] = 1; p[1] = 1; break;
+	case PATTERN_WAVES: case PATTERN_RIPPLES: p[0] = 10; break;   /* number_of_waves */
 	case PATTERN_BRICK: p[0] = 8; p[1] = 3; p[2] = 4.5; p[3] = 0.5; break;
 	case PATTERN_CRACKLE: p[0] = -1; p[1] = 1; p[2] = 0; p[3] = 2; break;
-	case PATTERN_QUILTED: p[0] = 1; p[1] = 1; break;
 	case PATTERN_GRADIENT: p[0] = 1; break;
-	case PATTERN_SPIRAL1: case PATTERN_SPIRAL2: p[0] = 1; break;
+	case PATTERN_SPIRAL1: case PATTERN_SPIRAL2: p[0] = 1; pg->wave = WAVE_TRIANGLE; break;
 	default: break;
 	}
 }
 
-/* POV-Ray's default colours of a discrete pattern without a list, and the
- * colour map of a continuous one without a map. */
+/* POV-Ray 3.7's default maps: a pattern without a map or a list of its own
+ * uses its kind's (value, colour) entries, black to white for most. Discrete
+ * patterns look their index up in them as in any map, so cubic's default
+ * (0, 1, 1, 1, 1, 2) shows red, green and then magenta, as in POV-Ray. */
+struct default_entry {
+	float value, rgb[3];
+};
+static const struct default_entry map_grey[] = { { 0, { 0, 0, 0 } }, { 1, { 1, 1, 1 } } };
+static const struct default_entry map_agate[] = {
+	{ 0, { 1, 1, 1 } }, { 0.5f, { 0.95f, 0.75f, 0.5f } }, { 0.5f, { 0.9f, 0.7f, 0.5f } },
+	{ 0.6f, { 0.9f, 0.7f, 0.4f } }, { 0.6f, { 1, 0.7f, 0.4f } }, { 1, { 0.6f, 0.3f, 0 } },
+};
+static const struct default_entry map_bozo[] = {
+	{ 0.4f, { 1, 1, 1 } }, { 0.4f, { 0, 1, 0 } }, { 0.6f, { 0, 1, 0 } },
+	{ 0.6f, { 0, 0, 1 } }, { 0.8f, { 0, 0, 1 } }, { 0.8f, { 1, 0, 0 } },
+};
+static const struct default_entry map_brick[] = { { 0, { 0.5f, 0.5f, 0.5f } }, { 1, { 0.6f, 0.15f, 0.15f } } };
+static const struct default_entry map_checker[] = { { 0, { 0, 0, 1 } }, { 1, { 0, 1, 0 } } };
+static const struct default_entry map_six[] = {   /* cubic, triangular */
+	{ 0, { 1, 0, 0 } }, { 1, { 0, 1, 0 } }, { 1, { 0, 0, 1 } }, { 1, { 1, 1, 0 } }, { 1, { 0, 1, 1 } },
+	{ 2, { 1, 0, 1 } },
+};
+static const struct default_entry map_hexagon[] = { { 0, { 0, 0, 1 } }, { 1, { 0, 1, 0 } }, { 2, { 1, 0, 0 } } };
+static const struct default_entry map_marble[] = {
+	{ 0, { 0.9f, 0.8f, 0.8f } }, { 0.9f, { 0.9f, 0.08f, 0.08f } }, { 0.9f, { 0, 0, 0 } },
+};
+static const struct default_entry map_radial[] = {
+	{ 0, { 0, 1, 1 } }, { 0.333f, { 1, 1, 0 } }, { 0.666f, { 1, 0, 1 } }, { 1, { 0, 1, 1 } },
+};
+static const struct default_entry map_wood[] = {
+	{ 0.6f, { 0.666f, 0.312f, 0.2f } }, { 0.6f, { 0.4f, 0.1333f, 0.066f } },
+};
+
 void eval_pattern_default_map(scene_pigment *pg)
 {
-	static const float discrete[6][5] = {
-		{ 0, 0, 1, 0, 0 }, { 0, 1, 0, 0, 0 }, { 1, 0, 0, 0, 0 },
-		{ 1, 1, 0, 0, 0 }, { 0, 1, 1, 0, 0 }, { 1, 0, 1, 0, 0 },
-	};
-	/* POV-Ray's default colour_map: a rainbow over 0 to 1. */
-	static const float rainbow[6][5] = {
-		{ 1, 0, 0, 0, 0 }, { 1, 1, 0, 0, 0 }, { 0, 1, 0, 0, 0 },
-		{ 0, 1, 1, 0, 0 }, { 0, 0, 1, 0, 0 }, { 1, 0, 1, 0, 0 },
-	};
-	int n = eval_pattern_list_size(pg->kind);
-	if (pg->kind == PATTERN_BRICK) {   /* mortar white, brick red */
-		static const float brick[2][5] = { { 1, 1, 1, 0, 0 }, { 1, 0, 0, 0, 0 } };
-		pg->map = eval_xrealloc(NULL, 2 * sizeof *pg->map);
-		for (int i = 0; i < 2; i++)
-			pg->map[i] = (scene_map_entry){ .value = i, .pigment = -1 };
-		memcpy(pg->map[0].colour, brick[0], sizeof brick[0]);
-		memcpy(pg->map[1].colour, brick[1], sizeof brick[1]);
-		pg->n_map = 2;
-		return;
+#define MAP(M) (m = M, n = (int)(sizeof M / sizeof *M))
+	const struct default_entry *m;
+	int n;
+	switch (pg->kind) {
+	case PATTERN_AGATE: MAP(map_agate); break;
+	case PATTERN_BOZO: MAP(map_bozo); break;
+	case PATTERN_BRICK: MAP(map_brick); break;
+	case PATTERN_CHECKER: MAP(map_checker); break;
+	case PATTERN_CUBIC: case PATTERN_TRIANGULAR: MAP(map_six); break;
+	case PATTERN_SQUARE: m = map_six, n = 4; break;   /* POV-Ray's square uses its first four */
+	case PATTERN_HEXAGON: MAP(map_hexagon); break;
+	case PATTERN_MARBLE: MAP(map_marble); break;
+	case PATTERN_RADIAL: MAP(map_radial); break;
+	case PATTERN_WOOD: MAP(map_wood); break;
+	default: MAP(map_grey); break;
 	}
-	const float (*c)[5] = n ? discrete : rainbow;
-	int count = n ? n : 6;
-	pg->map = eval_xrealloc(NULL, count * sizeof *pg->map);
-	for (int i = 0; i < count; i++) {
-		pg->map[i] = (scene_map_entry){ .value = n ? i : i / 5.0, .pigment = -1 };
-		memcpy(pg->map[i].colour, c[i], sizeof c[i]);
-	}
-	pg->n_map = count;
+#undef MAP
+	pg->map = eval_xrealloc(NULL, n * sizeof *pg->map);
+	for (int i = 0; i < n; i++)
+		pg->map[i] = (scene_map_entry){ .value = m[i].value, .colour = { m[i].rgb[0], m[i].rgb[1], m[i].rgb[2] },
+		                                .pigment = -1 };
+	pg->n_map = n;
 }
 
 /* ---- modifiers ---- */
@@ -121,21 +152,49 @@ static int arg_float(struct eval *e, const ast_node *item, double *out)
 	return eval_expect_float(e, item->kids[0], out);
 }
 
-/* The classic turbulence warp: the first, made when the pattern has none. */
+static int room(struct eval *e, const scene_pigment *pg, src_loc loc)
+{
+	if (pg->n_warps < SCENE_MAX_WARPS)
+		return 0;
+	eval_error(e, loc, "a pattern takes at most %d warps and transformations between them", SCENE_MAX_WARPS);
+	return -1;
+}
+
+/* POV-Ray's list of warps: a warp { } goes to its front, so the last written
+ * applies first. */
+static void push_front(scene_pigment *pg, const scene_warp *w)
+{
+	memmove(pg->warps + 1, pg->warps, pg->n_warps * sizeof *pg->warps);
+	pg->warps[0] = *w;
+	pg->n_warps++;
+}
+
+/* The classic turbulence (written in the pattern, not in a warp): made at the
+ * end of the list the first time, with POV-Ray's octaves 6, omega 0.5, lambda 2. */
 static scene_warp *classic_turb(struct eval *e, scene_pigment *pg, src_loc loc)
 {
-	if (pg->turb_first)
-		return &pg->warps[0];
-	if (pg->n_warps == SCENE_MAX_WARPS) {
-		eval_error(e, loc, "a pattern takes at most %d warps", SCENE_MAX_WARPS);
+	for (int i = 0; i < pg->n_warps; i++)
+		if (pg->warps[i].kind == WARP_TURBULENCE && pg->warps[i].classic)
+			return &pg->warps[i];
+	if (room(e, pg, loc))
 		return NULL;
+	pg->warps[pg->n_warps] = (scene_warp){ .kind = WARP_TURBULENCE, .classic = true, .a = { 0, 0, 0, 0.5 },
+	                                       .b = { 2, 6 } };
+	return &pg->warps[pg->n_warps++];
+}
+
+/* A transformation written in a pigment: it joins the front of the list when
+ * that is a transformation, else it becomes the new front. */
+int eval_pattern_transform(struct eval *e, scene_pigment *pg, const xform *t, src_loc loc)
+{
+	if (pg->n_warps > 0 && pg->warps[0].kind == WARP_TRANSFORM) {
+		pg->warps[0].xf = scene_xform_then(&pg->warps[0].xf, t);
+		return 0;
 	}
-	memmove(pg->warps + 1, pg->warps, pg->n_warps * sizeof *pg->warps);
-	pg->n_warps++;
-	pg->turb_first = true;
-	/* POV-Ray's defaults: octaves 6, omega 0.5, lambda 2 */
-	pg->warps[0] = (scene_warp){ .kind = WARP_TURBULENCE, .a = { 0, 0, 0, 0.5 }, .b = { 2, 6 } };
-	return &pg->warps[0];
+	if (room(e, pg, loc))
+		return -1;
+	push_front(pg, &(scene_warp){ .kind = WARP_TRANSFORM, .xf = *t });
+	return 0;
 }
 
 /* turbulence, octaves, omega, lambda: of w, a turbulence warp. 1: not one. */
@@ -161,10 +220,8 @@ static int turbulence_item(struct eval *e, const ast_node *item, scene_warp *w)
  *        black_hole <Centre>, Radius [strength S] [falloff F] [inverse] [repeat <V>] } */
 static int warp_block(struct eval *e, const ast_node *b, scene_pigment *pg)
 {
-	if (pg->n_warps == SCENE_MAX_WARPS) {
-		eval_error(e, b->loc, "a pattern takes at most %d warps", SCENE_MAX_WARPS);
+	if (room(e, pg, b->loc))
 		return -1;
-	}
 	scene_warp w = { .kind = -1 };
 	struct cursor c;
 	int err = 0, rc = 0;
@@ -177,23 +234,23 @@ static int warp_block(struct eval *e, const ast_node *b, scene_pigment *pg)
 		if (w.kind == WARP_TURBULENCE && (rc = turbulence_item(e, item, &w)) <= 0)
 			continue;
 		rc = 0;
-		if (name && strcmp(name, "repeat") == 0 && w.kind < 0) {
+		if (name && strcmp(name, AST_WORD_REPEAT) == 0 && w.kind < 0) {
 			w = (scene_warp){ .kind = WARP_REPEAT };
 			rc = next_vector(e, &c, item, w.a);
-		} else if (name && strcmp(name, "black_hole") == 0 && w.kind < 0) {
-			w = (scene_warp){ .kind = WARP_BLACK_HOLE, .b = { 1, 0, 0 } };
+		} else if (name && strcmp(name, AST_WORD_BLACK_HOLE) == 0 && w.kind < 0) {
+			w = (scene_warp){ .kind = WARP_BLACK_HOLE, .b = { 1, 2, 0 } };   /* strength 1, falloff 2 */
 			rc = next_vector(e, &c, item, w.a) || next_float(e, &c, item, &w.a[3]) ? -1 : 0;
-		} else if (name && strcmp(name, "offset") == 0 && w.kind == WARP_REPEAT) {
+		} else if (name && strcmp(name, AST_WORD_OFFSET) == 0 && w.kind == WARP_REPEAT) {
 			rc = next_vector(e, &c, item, w.b);
-		} else if (name && strcmp(name, "flip") == 0 && w.kind == WARP_REPEAT) {
+		} else if (name && strcmp(name, AST_WORD_FLIP) == 0 && w.kind == WARP_REPEAT) {
 			rc = next_vector(e, &c, item, w.c);
-		} else if (name && strcmp(name, "strength") == 0 && w.kind == WARP_BLACK_HOLE) {
+		} else if (name && strcmp(name, AST_WORD_STRENGTH) == 0 && w.kind == WARP_BLACK_HOLE) {
 			rc = next_float(e, &c, item, &w.b[0]);
 		} else if (item->kind == AST_ARG && item->kw == KW_FALLOFF && w.kind == WARP_BLACK_HOLE) {
 			rc = arg_float(e, item, &w.b[1]);
 		} else if (item->kind == AST_FLAG && item->kw == KW_INVERSE && w.kind == WARP_BLACK_HOLE) {
 			w.b[2] = 1;
-		} else if (name && strcmp(name, "repeat") == 0 && w.kind == WARP_BLACK_HOLE) {
+		} else if (name && strcmp(name, AST_WORD_REPEAT) == 0 && w.kind == WARP_BLACK_HOLE) {
 			rc = next_vector(e, &c, item, w.c);
 			w.c[3] = 1;
 		} else {
@@ -207,9 +264,11 @@ static int warp_block(struct eval *e, const ast_node *b, scene_pigment *pg)
 		eval_warning(e, b->loc, "an empty warp is ignored");
 		return 0;
 	}
-	if (w.kind == WARP_BLACK_HOLE && w.b[1] == 0)
-		w.b[1] = w.b[0];   /* POV-Ray: falloff defaults to strength... and 0 radius stays 0 */
-	pg->warps[pg->n_warps++] = w;
+	if (w.kind == WARP_BLACK_HOLE && w.c[3] != 0)   /* POV-Ray keeps a repeated hole inside its block */
+		for (int k = 0; k < 3; k++)
+			if (w.c[k] > 0 && w.a[k] < w.a[3])
+				w.a[k] = w.a[3];
+	push_front(pg, &w);
 	return 0;
 }
 
@@ -261,13 +320,13 @@ int eval_pattern_modifier(struct eval *e, struct cursor *c, const ast_node *item
 		default: return 1;
 		}
 	}
-	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, "warp") == 0)
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_WARP) == 0)
 		return warp_block(e, item, pg);
 	const char *name = word(e, item);
 	if (!name)
 		return 1;
 	double v[3];
-	if (strcmp(name, "noise_generator") == 0) {
+	if (strcmp(name, AST_WORD_NOISE_GENERATOR) == 0) {
 		double g;
 		if (next_float(e, c, item, &g))
 			return -1;
@@ -278,23 +337,23 @@ int eval_pattern_modifier(struct eval *e, struct cursor *c, const ast_node *item
 		pg->noise_generator = (int)g;
 		return 0;
 	}
-	if (pg->kind == PATTERN_CRACKLE && strcmp(name, "metric") == 0)
+	if (pg->kind == PATTERN_CRACKLE && strcmp(name, AST_WORD_METRIC) == 0)
 		return next_float(e, c, item, &p0[3]);
-	if (pg->kind == PATTERN_CRACKLE && strcmp(name, "form") == 0) {
+	if (pg->kind == PATTERN_CRACKLE && strcmp(name, AST_WORD_FORM) == 0) {
 		if (next_vector(e, c, item, v))
 			return -1;
 		memcpy(p0, v, sizeof v);
 		return 0;
 	}
-	if (pg->kind == PATTERN_CRACKLE && strcmp(name, "offset") == 0)
+	if (pg->kind == PATTERN_CRACKLE && strcmp(name, AST_WORD_OFFSET) == 0)
 		return next_float(e, c, item, &p1[0]);
-	if (pg->kind == PATTERN_CRACKLE && strcmp(name, "solid") == 0) {
+	if (pg->kind == PATTERN_CRACKLE && strcmp(name, AST_WORD_SOLID) == 0) {
 		p1[1] = 1;
 		return 0;
 	}
-	if (pg->kind == PATTERN_QUILTED && strcmp(name, "control0") == 0)
+	if (pg->kind == PATTERN_QUILTED && strcmp(name, AST_WORD_CONTROL0) == 0)
 		return next_float(e, c, item, &p0[0]);
-	if (pg->kind == PATTERN_QUILTED && strcmp(name, "control1") == 0)
+	if (pg->kind == PATTERN_QUILTED && strcmp(name, AST_WORD_CONTROL1) == 0)
 		return next_float(e, c, item, &p0[1]);
 	return 1;
 }
@@ -304,11 +363,13 @@ int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *p
 {
 	if (item->kind != AST_ARG)
 		return 0;
-	if (pg->kind == PATTERN_GRADIENT) {
+	if (pg->kind == PATTERN_GRADIENT) {   /* the axis, normalized as POV-Ray does */
 		double v[3];
 		if (eval_expect_vector(e, item->kids[0], v))
 			return -1;
-		memcpy(pg->params[0], v, sizeof v);
+		double len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+		for (int k = 0; k < 3; k++)
+			pg->params[0][k] = len > 0 ? v[k] / len : 0;
 		return 0;
 	}
 	return arg_float(e, item, &pg->params[0][0]);

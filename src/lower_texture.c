@@ -48,31 +48,54 @@ static dev_map_entry entry_colour(const float c[5], double value)
 	                        .pigment = -1 };
 }
 
-/* The pigment s->pigments[node] placed by to_world (its parent's space to
- * world); returns its dev_pattern's index. */
+static xform inverse_or_identity(const xform *t, src_loc loc)
+{
+	xform inv;
+	if (lower_invert(t, &inv) == 0)
+		return inv;
+	diag_warning(loc, "a pattern with a singular transformation (a scale of 0?) is left untransformed");
+	return scene_xform_identity();
+}
+
+/* The pigment s->pigments[node] placed by to_world (the transformations
+ * outside it, its space to world); returns its dev_pattern's index. The outer
+ * transformations join the front of its warps' list as POV-Ray's do (dev_warp):
+ * the front transformation becomes the rows, the others transform warps. */
 static int flatten(lower_textures *lt, const scene *s, int node, const xform *to_world, int depth)
 {
 	const scene_pigment *pg = &s->pigments[node];
-	xform full = scene_xform_then(&pg->xf, to_world), inv;
-	if (lower_invert(&full, &inv)) {
-		diag_warning(pg->loc, "a pattern with a singular transform (a scale of 0?) is its first colour");
-		inv = scene_xform_identity();
+	const scene_warp *w = pg->warps;
+	int n_warps = pg->n_warps;
+	xform front = *to_world, inner = *to_world;   /* inner: every transformation, for nested pigments */
+	if (n_warps > 0 && w[0].kind == WARP_TRANSFORM) {
+		front = scene_xform_then(&w[0].xf, to_world);
+		w++;
+		n_warps--;
 	}
+	for (int i = pg->n_warps - 1; i >= 0; i--)   /* written last, applied first */
+		if (pg->warps[i].kind == WARP_TRANSFORM)
+			inner = scene_xform_then(&pg->warps[i].xf, &inner);
+	xform inv = inverse_or_identity(&front, pg->loc);
 	int at = lt->n_patterns++;
 	lt->patterns = grow_to(lt->patterns, &lt->cap_patterns, lt->n_patterns, sizeof *lt->patterns);
 	dev_pattern d = {
 		.rows = { row(&inv, 0), row(&inv, 1), row(&inv, 2) },
 		.kind = pg->kind, .wave = pg->wave, .noise_generator = pg->noise_generator,
-		.flags = pg->turb_first ? PATTERN_TURB_FIRST : 0,
 		.frequency = (float)pg->frequency, .phase = (float)pg->phase, .wave_exponent = (float)pg->wave_exponent,
 		.params = { f4v(pg->params[0]), f4v(pg->params[1]) },
-		.warp_first = lt->n_warps, .warp_count = pg->n_warps,
+		.warp_first = lt->n_warps, .warp_count = n_warps,
 		.map_first = lt->n_maps, .map_count = pg->n_map,
 	};
-	lt->warps = grow_to(lt->warps, &lt->cap_warps, lt->n_warps + pg->n_warps, sizeof *lt->warps);
-	for (int i = 0; i < pg->n_warps; i++)
-		lt->warps[lt->n_warps++] = (dev_warp){ .a = f4v(pg->warps[i].a), .b = f4v(pg->warps[i].b),
-		                                       .c = f4v(pg->warps[i].c), .kind = pg->warps[i].kind };
+	lt->warps = grow_to(lt->warps, &lt->cap_warps, lt->n_warps + n_warps, sizeof *lt->warps);
+	for (int i = 0; i < n_warps; i++) {
+		dev_warp dw = { .a = f4v(w[i].a), .b = f4v(w[i].b), .c = f4v(w[i].c), .kind = w[i].kind,
+		                .classic = w[i].classic };
+		if (w[i].kind == WARP_TRANSFORM) {
+			xform t = inverse_or_identity(&w[i].xf, pg->loc);
+			dw.a = row(&t, 0), dw.b = row(&t, 1), dw.c = row(&t, 2);
+		}
+		lt->warps[lt->n_warps++] = dw;
+	}
 	/* the map's entries side by side; nested pigments go after them */
 	int first = lt->n_maps;
 	lt->n_maps += pg->n_map;
@@ -81,7 +104,7 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 		const scene_map_entry *e = &pg->map[i];
 		dev_map_entry de = entry_colour(e->colour, e->value);
 		if (e->pigment >= 0 && depth + 1 < NEST_MAX)
-			de.pigment = flatten(lt, s, e->pigment, &full, depth + 1);
+			de.pigment = flatten(lt, s, e->pigment, &inner, depth + 1);
 		else if (e->pigment >= 0)
 			diag_warning(pg->loc, "pigments nested more than %d deep in maps: the deeper ones are "
 			             "their average colour", NEST_MAX);

@@ -86,6 +86,7 @@ void scene_init(scene *s)
 	memset(s, 0, sizeof *s);
 	s->camera = scene_default_camera();
 	s->adc_bailout = 1.0f / 255.0f;
+	s->film_gamma = 1;
 	for (int i = 0; i < 3; i++)
 		s->ambient_light[i] = 1;
 }
@@ -547,14 +548,25 @@ static void dump_pigment(FILE *out, int index, const scene_pigment *pg)
 	fprintf(out, " wave %d noise_generator %d", pg->wave, pg->noise_generator);
 	fnum(out, "frequency", pg->frequency);
 	fnum(out, "phase", pg->phase);
-	for (int i = 0; i < pg->n_warps; i++)
-		fprintf(out, " warp %d", pg->warps[i].kind);
-	fputs(" xf", out);
-	for (int i = 0; i < 3; i++) {
-		vec(out, "", pg->xf.m[i]);
-		fputc(' ', out);
-		num(out, pg->xf.m[i][3]);
+	static const char *const warps[] = { "turbulence", "repeat", "black_hole", "transform" };
+	for (const scene_warp *w = pg->warps; w < pg->warps + pg->n_warps; w++) {
+		fprintf(out, " %s%s", w->classic ? "classic " : "", warps[w->kind]);
+		if (w->kind == WARP_TRANSFORM) {
+			for (int i = 0; i < 3; i++) {
+				vec(out, "", w->xf.m[i]);
+				fputc(' ', out);
+				num(out, w->xf.m[i][3]);
+			}
+			continue;
+		}
+		const double *v[3] = { w->a, w->b, w->c };
+		for (int i = 0; i < 3; i++)
+			for (int k = 0; k < 4; k++) {
+				fputc(' ', out);
+				num(out, v[i][k]);
+			}
 	}
+
 	fputs(" map", out);
 	for (const scene_map_entry *e = pg->map; e < pg->map + pg->n_map; e++) {
 		fputs(" [", out);

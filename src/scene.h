@@ -34,11 +34,14 @@ typedef struct {
 	int pigment;             /* an index into scene.pigments, or -1: the colour */
 } scene_map_entry;
 
-/* A warp { } of a pattern, or its classic turbulence (kernels/shared.h, dev_warp). */
-#define SCENE_MAX_WARPS 8
+/* A warp { } of a pattern, its classic turbulence, or a transformation
+ * (kernels/shared.h, dev_warp, which says in what order POV-Ray keeps them). */
+#define SCENE_MAX_WARPS 16
 typedef struct {
 	int kind;                /* WARP_ */
+	bool classic;            /* the turbulence written in the pattern itself */
 	double a[4], b[4], c[4];
+	xform xf;                /* WARP_TRANSFORM: the pattern's space to the outer one, as written */
 } scene_warp;
 
 /* A pigment with a pattern (src/eval_pattern.c): its kind, modifiers and map,
@@ -51,11 +54,9 @@ typedef struct {
 	int wave, noise_generator;
 	double frequency, phase, wave_exponent;
 	double params[2][4];     /* by kind, as dev_pattern's */
-	scene_warp warps[SCENE_MAX_WARPS];
+	scene_warp warps[SCENE_MAX_WARPS];  /* POV-Ray's list: the first applies first; the
+	                          * transformations written in the pigment are among them */
 	int n_warps;
-	bool turb_first;         /* warps[0] is the pattern's classic turbulence */
-	xform xf;                /* the pattern's space to its parent's: the texture's, or
-	                          * the pigment whose map holds it */
 	scene_map_entry *map;    /* by increasing value */
 	int n_map;
 	src_loc loc;
@@ -190,6 +191,10 @@ typedef struct {
 	/* global_settings */
 	int max_trace_level;  /* 0 when the scene does not say */
 	float assumed_gamma;  /* 0 when the scene does not say */
+	float film_gamma;     /* the film's colours to linear ones: c ^ film_gamma, POV-Ray's
+	                       * working gamma (assumed_gamma, else 1); 0 when POV-Ray turns
+	                       * gamma correction off (an older #version without assumed_gamma):
+	                       * the colours are written into 8-bit images as they are */
 	float adc_bailout;    /* 1/255 */
 	float ambient_light[3]; /* 1 */
 } scene;
