@@ -910,6 +910,8 @@ static void run_version(struct eval *e, const ast_node *d)
 	if (eval_expect_float(e, d->kids[0], &v))
 		return;
 	e->version = v;
+	e->version_given = true;
+	e->version_loc = d->loc;
 	struct symbol *y = scope_find(e->global, "version");
 	if (!y)
 		y = scope_add(e->global, "version");
@@ -1096,6 +1098,22 @@ static void eval_free(struct eval *e)
 	free(e->rng.state);
 }
 
+/* POV-Ray 3.7's working gamma: assumed_gamma; without it, 1 when the version
+ * in effect at the end of the scene is 3.7 or later, and gamma correction off
+ * for an older one. A scene without #version is eclat's own and 3.7's
+ * (POV-Ray turns gamma correction off for it too, with a warning:
+ * eclat-scene(5) says why eclat does not). */
+static void film_gamma(struct eval *e)
+{
+	scene *s = e->s;
+	s->film_gamma = s->assumed_gamma > 0 ? s->assumed_gamma : 1;
+	if (s->assumed_gamma == 0 && e->version_given && e->version < 3.7) {
+		s->film_gamma = 0;
+		eval_warning(e, e->version_loc, "no assumed_gamma in a #version %g scene: gamma correction is off, "
+		             "as in POV-Ray 3.7 (colours go into 8-bit images as they are)", e->version);
+	}
+}
+
 int eval_scene(const ast_node *root, scene *s, const eval_options *opt)
 {
 	eval_options defaults = eval_options_default();
@@ -1115,6 +1133,7 @@ int eval_scene(const ast_node *root, scene *s, const eval_options *opt)
 	while ((item = eval_next(&c, &err)) != NULL)
 		eval_scene_statement(&e, item);
 	eval_cursor_free(&c);
+	film_gamma(&e);
 	eval_free(&e);
 	return diag_error_count() > e.errors_at_start ? -1 : 0;
 }

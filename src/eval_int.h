@@ -113,8 +113,8 @@ struct eval {
 	int errors_at_start;
 	scene_material default_mat;  /* #default */
 	double version;
-	double scene_version;    /* the scene file's own first #version, 0 when it has none */
-	src_loc scene_version_loc;
+	bool version_given;      /* a #version ran */
+	src_loc version_loc;     /* where the last #version ran */
 	struct rng rng;
 	ast_node **trees;        /* included files, kept while their macros may run */
 	int n_trees;

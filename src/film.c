@@ -19,13 +19,26 @@ int film_init(film *f, int width, int height, int with_aov)
 	return -1;
 }
 
-void film_resolve(film *f, const float *sums, long samples)
+/* The sRGB decoding: what an 8-bit value's sRGB encoding stands for. */
+static float srgb_decode(float c)
+{
+	return c <= 0.04045f ? c / 12.92f : powf((c + 0.055f) / 1.055f, 2.4f);
+}
+
+static float to_linear(float c, float gamma)
+{
+	if (gamma == 1 || c <= 0)
+		return c;
+	return gamma == 0 ? srgb_decode(c) : powf(c, gamma);
+}
+
+void film_resolve(film *f, const float *sums, long samples, float gamma)
 {
 	size_t n = (size_t)f->width * f->height;
 	float inv = samples > 0 ? 1.0f / (float)samples : 0.0f;
 	for (size_t i = 0; i < n; i++) {
 		for (int c = 0; c < 3; c++)
-			f->rgb[3 * i + c] = sums[4 * i + c] * inv;
+			f->rgb[3 * i + c] = to_linear(sums[4 * i + c] * inv, gamma);
 		f->heat[i] = sums[4 * i + 3] * inv;
 	}
 	f->samples = samples;

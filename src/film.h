@@ -13,8 +13,11 @@ typedef struct {
 
 /* Returns 0, or -1 when memory runs out. with_aov: allocate film.aov. */
 int film_init(film *f, int width, int height, int with_aov);
-/* Sets the film from per-pixel sums (4 floats a pixel: rgb and tests) of samples samples. */
-void film_resolve(film *f, const float *sums, long samples);
+/* Sets the film from per-pixel sums (4 floats a pixel: rgb and tests) of samples
+ * samples. gamma: the working gamma the sums are in (scene.film_gamma): the
+ * film holds c ^ gamma, or for 0 (gamma correction off) the colours that the
+ * sRGB encoding of 8-bit images turns back into c. */
+void film_resolve(film *f, const float *sums, long samples, float gamma);
 void film_free(film *f);
 
 /* 1 when name is an AOV: albedo, normal, depth, id or heat. */

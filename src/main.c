@@ -524,7 +524,7 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		.width = o->width, .height = o->height, .samples = whitted ? 1 : o->samples, .seed = o->seed,
 		.max_depth = o->max_depth >= 0 ? o->max_depth
 		           : s->max_trace_level > 0 ? s->max_trace_level : DEFAULT_MAX_DEPTH,
-		.integrator = o->integrator, .adc_bailout = s->adc_bailout, .quiet = o->quiet,
+		.integrator = o->integrator, .adc_bailout = s->adc_bailout, .gamma = s->film_gamma, .quiet = o->quiet,
 		.aov = needs_aov_buffer(o),
 		.time_limit = o->time_limit,
 		.checkpoint = o->checkpoint, .on_checkpoint = write_film, .ctx = &out, .stop = &stop_signal,

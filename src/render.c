@@ -148,7 +148,7 @@ static int read_film(struct pass_loop *pl, film *f)
 		                          pl->npix * AOV_FLOAT4S * 4 * sizeof(float), f->aov, 0, NULL, NULL);
 	if (err != CL_SUCCESS)
 		return device_fail("clEnqueueReadBuffer", err);
-	film_resolve(f, pl->sums, pl->st->samples);
+	film_resolve(f, pl->sums, pl->st->samples, pl->rs->gamma);
 	return 0;
 }
 

@@ -17,6 +17,7 @@ typedef struct render_settings {
 	int integrator;        /* INTEGRATOR_PATH, INTEGRATOR_NAIVE or INTEGRATOR_WHITTED (whose
 	                        * max_depth is max_trace_level, and which needs one sample) */
 	float adc_bailout;     /* the Whitted integrator's */
+	float gamma;           /* the scene's working gamma (scene.film_gamma) */
 	int quiet;
 	int aov;               /* 1: keep the first hits' albedo, normal, depth and object (film.aov) */
 	double time_limit;     /* seconds; 0: none. The render stops after the pass that passes it. */
