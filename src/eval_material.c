@@ -55,7 +55,8 @@ void eval_apply_value(const value *v, scene_material *m)
 	switch (v->kind) {
 	case V_PIGMENT: copy_pigment(m, &v->mat); break;
 	case V_FINISH: copy_finish(m, &v->mat); break;
-	case V_TEXTURE: copy_pigment(m, &v->mat); copy_finish(m, &v->mat); break;
+	case V_TEXTURE: copy_pigment(m, &v->mat); copy_finish(m, &v->mat); m->normal = v->mat.normal; break;
+	case V_NORMAL: m->normal = v->mat.normal; break;
 	case V_INTERIOR: copy_interior(m, &v->mat); break;
 	case V_MATERIAL: *m = v->mat; break;
 	default: break;
@@ -69,6 +70,8 @@ void eval_apply_value(const value *v, scene_material *m)
 void eval_apply_texture(struct eval *e, src_loc loc, scene_material *m, bool textured, const scene_material *tex)
 {
 	double t = tex->pigment[3] + tex->pigment[4];
+	if (tex->normal >= 0 || !textured || t <= 0)
+		m->normal = tex->normal;
 	if (!textured || t <= 0) {
 		copy_pigment(m, tex);
 		copy_finish(m, tex);
@@ -974,10 +977,96 @@ static int material_block(struct eval *e, const ast_node *b, scene_material *m)
 	return rc || err ? -1 : 0;
 }
 
-/* normal { ... }: bump patterns are not rendered; the block is not evaluated. */
-static int normal_block(struct eval *e, const ast_node *b)
+/* An item of a normal { } after its pattern: the amount right after the
+ * pattern, bump_size, accuracy, the pattern's modifiers and transformations.
+ * 1 when item is none of them. */
+static int normal_item(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p, bool *amount)
 {
-	eval_warn_once(e, b->loc, "normal", "'normal' (bump patterns) is not supported yet; ignored");
+	scene_pigment *pg = &p->pg;
+	const char *w = item->kind == AST_IDENT && !eval_lookup(e, item->str) ? item->str : NULL;
+	int err = 0;
+	if (AST_IS_EXPRESSION(item->kind) && !w && !*amount) {   /* bumps 0.5 */
+		*amount = true;
+		return eval_expect_float(e, item, &pg->bump_size);
+	}
+	if (w && (strcmp(w, AST_WORD_BUMP_SIZE) == 0 || strcmp(w, AST_WORD_ACCURACY) == 0)) {
+		const ast_node *arg = eval_next_expr(c, &err);
+		if (!arg) {
+			if (!err)
+				eval_error(e, item->loc, "'%s' needs a value", w);
+			return -1;
+		}
+		return eval_expect_float(e, arg, w[0] == 'b' ? &pg->bump_size : &pg->accuracy);
+	}
+	int rc = eval_pattern_modifier(e, c, item, pg);
+	if (rc <= 0)
+		return rc;
+	xform t = scene_xform_identity();
+	rc = eval_transform_item(e, NULL, item, &t);
+	if (rc > 0)
+		return eval_pattern_transform(e, pg, &t, item->loc);
+	return rc < 0 ? -1 : 1;
+}
+
+/* normal { [NORMAL_IDENTIFIER] [PATTERN [Amount]] [bump_size Amount]
+ *          [accuracy Accuracy] [PATTERN_MODIFIER...] [TRANSFORMATION...] }:
+ * the pattern perturbs the surface normal where the kernels shade
+ * (pattern_perturb). m is NULL for a camera's normal, which eclat ignores. */
+static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
+{
+	if (!m) {
+		eval_warn_once(e, b->loc, "camera normal", "a camera's 'normal' is not supported yet; ignored");
+		return 0;
+	}
+	struct pattern p = { .kind = -1 };
+	struct cursor c;
+	int err = 0, rc = 0;
+	bool first = true, amount = false;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		value v;
+		if (first && AST_IS_EXPRESSION(item->kind) && !eval_pov_word_item(e, item) &&
+		    (item->kind != AST_IDENT || eval_lookup(e, item->str))) {   /* a declared normal */
+			if ((rc = eval_expect_kind(e, item, V_NORMAL, &v)) == 0 && v.mat.normal >= 0) {
+				p.at = item;
+				p.kind = e->s->pigments[v.mat.normal].kind;
+				p.pg = e->s->pigments[v.mat.normal];
+				p.pg.map = NULL;
+				p.pg.n_map = 0;
+				amount = true;
+			}
+		} else if ((rc = pattern_start(e, item, &p)) <= 0) {
+			amount = false;
+			if (rc == 0 && p.kind > 0) {
+				p.pg.bump_size = 0.5;
+				p.pg.accuracy = 0.02;
+			}
+		} else if (p.at && p.kind > 0 && (rc = normal_item(e, &c, item, &p, &amount)) <= 0) {
+			;
+		} else if ((rc = pattern_word(e, &c, item, &p)) <= 0) {
+			;   /* a pattern eclat does not have (warned below), or another POV-Ray word (warned) */
+		} else if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
+			eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
+			rc = 0;
+		} else if (item->kind == AST_BLOCK && item->kw == KW_NORMAL_MAP) {
+			eval_warn_once(e, item->loc, "normal_map", "'normal_map' is not supported yet; ignored");
+			rc = 0;
+		} else {
+			rc = p.at && p.kind < 0 ? 0 : eval_not_valid(e, item, "a normal");
+		}
+		first = false;
+	}
+	eval_cursor_free(&c);
+	if (rc || err) {
+		free(p.pg.map);
+		return -1;
+	}
+	if (p.at && p.kind < 0)
+		eval_warn_once(e, p.at->loc, p.name, "pattern '%s' is not supported yet in a normal; ignored", p.name);
+	if (p.at && p.kind > 0) {
+		m->normal = scene_add_pigment(e->s, &p.pg);
+	}
 	return 0;
 }
 
@@ -989,7 +1078,7 @@ int eval_material_block(struct eval *e, const ast_node *b, scene_material *m)
 	case KW_TEXTURE: return texture_block(e, b, m);
 	case KW_INTERIOR: return interior_block(e, b, m);
 	case KW_MATERIAL: return material_block(e, b, m);
-	case KW_NORMAL: return normal_block(e, b);
+	case KW_NORMAL: return normal_block(e, b, m);
 	default: return eval_not_valid(e, b, "a texture");
 	}
 }

@@ -162,6 +162,7 @@ scene_material scene_default_material(void)
 	return (scene_material){
 		.pigment = { 0, 0, 0, 0, 0 },
 		.pattern = -1,
+		.normal = -1,
 		.tex_xf = scene_xform_identity(),
 		.ambient = { 0.1f, 0.1f, 0.1f },
 		.diffuse = 0.6f,
@@ -330,6 +331,8 @@ static void material(FILE *out, const scene_material *m)
 	}
 	if (m->pattern >= 0)
 		fprintf(out, " pattern %d", m->pattern);
+	if (m->normal >= 0)
+		fprintf(out, " normal %d", m->normal);
 	fputs(" diffuse ", out);
 	num(out, m->diffuse);
 	double e[3] = { m->emission[0], m->emission[1], m->emission[2] };
@@ -546,6 +549,10 @@ static void dump_pigment(FILE *out, int index, const scene_pigment *pg)
 		num(out, params[i]);
 	}
 	fprintf(out, " wave %d noise_generator %d", pg->wave, pg->noise_generator);
+	if (pg->bump_size != 0 || pg->accuracy != 0) {
+		fnum(out, "bump_size", pg->bump_size);
+		fnum(out, "accuracy", pg->accuracy);
+	}
 	fnum(out, "frequency", pg->frequency);
 	fnum(out, "phase", pg->phase);
 	static const char *const warps[] = { "turbulence", "repeat", "black_hole", "transform" };
@@ -589,11 +596,15 @@ static void dump_pigments(FILE *out, const scene *s)
 	bool *used = calloc(s->n_pigments + 1, sizeof *used);
 	if (!used)
 		return;
-	for (int i = 0; i < s->n_objects; i++)
+	for (int i = 0; i < s->n_objects; i++) {
 		mark_pigment(s, s->objects[i].material.pattern, used);
+		mark_pigment(s, s->objects[i].material.normal, used);
+	}
 	for (int m = 0; m < s->n_meshes; m++)
-		for (int i = 0; i < s->meshes[m].n_mats; i++)
+		for (int i = 0; i < s->meshes[m].n_mats; i++) {
 			mark_pigment(s, s->meshes[m].mats[i].pattern, used);
+			mark_pigment(s, s->meshes[m].mats[i].normal, used);
+		}
 	for (int i = 0; i < s->n_pigments; i++)
 		if (used[i])
 			dump_pigment(out, i, &s->pigments[i]);

@@ -54,6 +54,7 @@ typedef struct {
 	int wave, noise_generator;
 	double frequency, phase, wave_exponent;
 	double params[2][4];     /* by kind, as dev_pattern's */
+	double bump_size, accuracy;  /* a normal's: its amount (0.5) and accuracy (0.02) */
 	scene_warp warps[SCENE_MAX_WARPS];  /* POV-Ray's list: the first applies first; the
 	                          * transformations written in the pigment are among them */
 	int n_warps;
@@ -70,6 +71,7 @@ typedef struct {
 	float pigment[5];        /* red, green, blue, filter, transmit; default black; with a
 	                          * pattern, its average colour */
 	int pattern;             /* the pattern pigment (scene.pigments), or -1: pigment[] */
+	int normal;              /* the normal's pattern (scene.pigments), or -1: none */
 	xform tex_xf;            /* the texture's space to world (to the mesh's space for a
 	                          * mesh's own textures): the transformations written after it */
 	/* finish */
