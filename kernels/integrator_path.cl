@@ -69,10 +69,14 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 		float3 u = (float3)(rng_uniform(key, dim + DIM_LOBE), rng_uniform(key, dim + DIM_LOBE + 1),
 		                    rng_uniform(key, dim + DIM_LOBE + 2));
 		material_sample_t s = material_sample(&m, &lobes, n, wo, sp.entering, u);
-		/* a shading normal can send a reflection below the true surface: lost */
-		if ((s.weight.x <= 0.0f && s.weight.y <= 0.0f && s.weight.z <= 0.0f) ||
-		    (dot(ng, s.wi) > 0.0f) == (bool)s.transmitted)
+		if (s.weight.x <= 0.0f && s.weight.y <= 0.0f && s.weight.z <= 0.0f)
 			break;
+		/* A shading normal (smooth, or tilted by a normal pattern) can send a
+		 * reflection below the true surface, or a transmission above it: mirror
+		 * it back across the surface, keeping its weight, so that bumps neither
+		 * lose nor make energy (the white furnace stays at 1). */
+		if ((dot(ng, s.wi) > 0.0f) == (bool)s.transmitted)
+			s.wi -= 2.0f * dot(s.wi, ng) * ng;
 		beta *= s.weight;
 		last_pdf = s.pdf;
 		reflected = !s.transmitted;

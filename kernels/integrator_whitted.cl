@@ -298,7 +298,7 @@ inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_
 	whitted_point pt;
 	pt.d = ray.d;
 	pt.x = sp.x;
-	pt.n = dot(sp.ns, ray.d) > 0.0f ? -sp.ns : sp.ns;
+	pt.n = sp.ns;
 	pt.eps = sp.eps;
 	pt.object = sp.object;
 	bool entering = sp.entering;

@@ -9,8 +9,8 @@
  * the hashing that decides POV-Ray's exact values is integer, and the rest
  * loses at most a few float roundings against POV-Ray's doubles.
  *
- * Exported: pattern_value, pattern_noise, pattern_dnoise, pattern_turbulence,
- * pattern_dturbulence. */
+ * Exported: pattern_value (= pattern_at after pattern_warp_point),
+ * pattern_noise, pattern_dnoise, pattern_turbulence, pattern_dturbulence. */
 
 #define PATTERN_PI 3.14159265358979323846f
 
@@ -536,15 +536,23 @@ inline float pattern_triangular(float3 p)
 
 /* Waves and ripples share POV-Ray's wave sources: source i is the direction of
  * DNoise at (i, 0, 0), its frequency a draw of POV-Ray's LCG started from
- * -560851967 (Initialize_Waves). */
+ * -560851967 (Initialize_Waves). pattern_wave_source gives source i and
+ * its frequency, taking the sources in order from *r = PATTERN_WAVE_SEED. */
+#define PATTERN_WAVE_SEED ((uint)-560851967)
+inline float3 pattern_wave_source(int i, uint *r, float *wf)
+{
+	*r = *r * 1812433253u + 12345u;
+	*wf = (float)((*r >> 16) & 0x7fff) * 0.000030518509476f + 0.01f;
+	return normalize(pattern_dnoise((float3)((float)i, 0.0f, 0.0f), 0));
+}
+
 inline float pattern_waves(float3 p, int ripples, int n_waves, float frequency, float phase)
 {
-	uint r = (uint)-560851967;
+	uint r = PATTERN_WAVE_SEED;
 	float scalar = 0.0f;
 	for (int i = 0; i < n_waves; i++) {
-		float3 src = normalize(pattern_dnoise((float3)((float)i, 0.0f, 0.0f), 0));
-		r = r * 1812433253u + 12345u;
-		float wf = (float)((r >> 16) & 0x7fff) * 0.000030518509476f + 0.01f;
+		float wf;
+		float3 src = pattern_wave_source(i, &r, &wf);
 		float len = length(p - src);
 		if (len == 0.0f)
 			len = 1.0f;
@@ -608,28 +616,30 @@ inline float pattern_wave(global const dev_pattern *pt, float v)
 	}
 }
 
-/* The value of the pattern pt at p, a point in the pattern's space (pt->rows
- * already applied); n, the unit shading normal, and d, the ray's direction,
- * both in world space, serve only aoi. Continuous patterns give [0, 1] (some,
- * as in POV-Ray, a little beyond: the map clamps); discrete ones (brick,
- * checker, cubic, hexagon, square, triangular) the index of a list entry. */
-float pattern_value(global const dev_pattern *pt, global const dev_warp *warps, float3 p, float3 n, float3 d)
+/* The warps of pt applied in order to p, a point in the pattern's space
+ * (pt->rows already applied): POV-Ray's Warp_EPoint. Marble and wood read
+ * their classic turbulence themselves and never apply it as a warp. */
+float3 pattern_warp_point(global const dev_pattern *pt, global const dev_warp *warps, float3 p)
 {
-	int kind = pt->kind;
-	int generator = pt->noise_generator;
-	if (generator < 1 || generator > 3)
-		generator = 2;
-
-	/* The warps in order; marble and wood read their classic turbulence
-	 * themselves and never apply it as a warp. */
-	int own_turb = kind == PATTERN_MARBLE || kind == PATTERN_WOOD;
+	int own_turb = pt->kind == PATTERN_MARBLE || pt->kind == PATTERN_WOOD;
 	for (int i = 0; i < pt->warp_count; i++) {
 		global const dev_warp *w = &warps[pt->warp_first + i];
 		if (own_turb && w->kind == WARP_TURBULENCE && w->classic)
 			continue;
 		p = pattern_warp(w, p);
 	}
-	p = clamp(p, -1.0e17f, 1.0e17f);
+	return clamp(p, -1.0e17f, 1.0e17f);
+}
+
+/* The value of the pattern pt at p, a point already warped
+ * (pattern_warp_point): POV-Ray's Evaluate_TPat, which normals call at
+ * points around the warped one. n and d as for pattern_value. */
+float pattern_at(global const dev_pattern *pt, global const dev_warp *warps, float3 p, float3 n, float3 d)
+{
+	int kind = pt->kind;
+	int generator = pt->noise_generator;
+	if (generator < 1 || generator > 3)
+		generator = 2;
 
 	/* POV-Ray's Search_For_Turb: the classic turbulence, which is the last warp. */
 	global const dev_warp *turb = 0;
@@ -731,4 +741,14 @@ float pattern_value(global const dev_pattern *pt, global const dev_warp *warps, 
 		return 0.0f;
 	}
 	return pattern_wave(pt, v);
+}
+
+/* The value of the pattern pt at p, a point in the pattern's space (pt->rows
+ * already applied); n, the unit shading normal, and d, the ray's direction,
+ * both in world space, serve only aoi. Continuous patterns give [0, 1] (some,
+ * as in POV-Ray, a little beyond: the map clamps); discrete ones (brick,
+ * checker, cubic, hexagon, square, triangular) the index of a list entry. */
+float pattern_value(global const dev_pattern *pt, global const dev_warp *warps, float3 p, float3 n, float3 d)
+{
+	return pattern_at(pt, warps, pattern_warp_point(pt, warps, p), n, d);
 }

@@ -96,7 +96,8 @@ typedef struct {
 	float4 fade_color;     /* rgb: interior's fade_color */
 	int pattern;           /* the pigment's dev_pattern, or -1: the solid pigment above */
 	int flags;             /* MATERIAL_ */
-	float pad[2];
+	int normal;            /* the normal's dev_pattern (pattern_perturb), or -1: none */
+	float pad;
 } dev_material;
 /* MATERIAL_LOCAL: a mesh's own texture, whose patterns see the mesh's space;
  * MATERIAL_ROUGH: roughness was given, so the path tracer's reflection is rough. */
@@ -152,7 +153,14 @@ typedef struct {
 	int kind, classic, pad1, pad2;
 } dev_warp;
 
-/* A pattern with its modifiers, 144 bytes.
+/* A pattern with its modifiers, 144 bytes. A pigment's pattern (texture.cl)
+ * or a normal's (normal.cl, pattern_perturb: POV-Ray's normal { PATTERN
+ * [Amount] }).
+ * bump_size: a normal's Amount or bump_size (POV-Ray's default 0.5); unused by pigments.
+ * normal: a normal's x: accuracy (POV-Ray's default 0.02); y, z, w: 0.
+ * A normal's map entries are its slope_map (none: map_count 0): value, the
+ *   entry's key; colour.x, the height; colour.y, the slope. normal_map (nested
+ *   normals) is not supported.
  * rows: the affine map from world space to the pattern's space (the inverse of
  *   the transformations written after the pattern and around the texture).
  *   POV-Ray applies them before every warp, except a transformation written
@@ -161,7 +169,7 @@ typedef struct {
  * frequency 0 skips frequency and phase: POV-Ray's default for quilted (and for
  *   the discrete patterns, which ignore frequency, phase and wave anyway).
  *   Marble, wood, spiral1 and spiral2 default to the triangle wave.
- * flags: none yet (0).
+ * flags: PATTERN_NO_BUMP_SCALE (normals: no_bump_scale).
  * params, by kind (POV-Ray's defaults filled in by the host):
  *   agate:     params[0].x agate_turb (1)
  *   brick:     params[0].xyz brick_size (<8, 3, 4.5>), w mortar (0.5)
@@ -171,16 +179,22 @@ typedef struct {
  *   quilted:   params[0].x control0 (1), y control1 (1)
  *   spiral1/2: params[0].x the number of arms
  *   waves, ripples: params[0].x global_settings' number_of_waves (10)
+ *   facets:    params[0].x size (0.1), y coords (0: none, the normal's own facets),
+ *              z metric (2) (a normal only)
  *   granite, leopard, ...: none */
 typedef struct {
 	float4 rows[3];
 	int kind, wave, noise_generator, flags;
-	float frequency, phase, wave_exponent, pad;
+	float frequency, phase, wave_exponent, bump_size;
 	float4 params[2];
 	int warp_first, warp_count;   /* dev_warp entries, applied in order */
 	int map_first, map_count;     /* dev_map_entry entries, by increasing value */
-	float4 pad2;
+	float4 normal;
 } dev_pattern;
+/* PATTERN_NO_BUMP_SCALE: POV-Ray's no_bump_scale: a normal's pattern
+ * transformations scale its bumps (the normal is not made unit length before
+ * and after them). */
+enum { PATTERN_NO_BUMP_SCALE = 1 };
 
 /* An entry of a pattern's map, 32 bytes: a colour, or a nested pigment (a
  * pigment_map, or checker pigment { } pigment { }) when pigment >= 0. */

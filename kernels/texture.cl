@@ -7,7 +7,8 @@
 typedef struct {
 	float3 x;          /* the hit, in world space */
 	float3 object_x;      /* in its instance's space (a mesh's), else x */
-	float3 ng, ns;     /* geometric and shading normals, turned to face the ray */
+	float3 ng, ns;     /* geometric and shading normals, turned to face the ray (the
+	                    * shading one before its normal pattern's tilt) */
 	float3 d;          /* the ray's direction */
 	float t;           /* its distance along the ray */
 	float eps;         /* how far rays leaving the surface start off it */
@@ -33,7 +34,9 @@ inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float
 	sp.entering = dot(s.ng, d) < 0.0f;
 	/* surfaces are two-sided, as in POV-Ray: both normals turn to face the ray */
 	sp.ng = sp.entering ? s.ng : -s.ng;
-	sp.ns = sp.entering ? s.ns : -s.ns;
+	/* the shading normal faces the ray before a normal pattern tilts it, as
+	 * POV-Ray orients it; the tilt may then turn it a little away */
+	sp.ns = dot(s.ns, d) > 0.0f ? -s.ns : s.ns;
 	sp.d = d;
 	sp.t = hit.t;
 	/* a margin relative to the coordinates' magnitude, so that the next ray does
@@ -43,6 +46,10 @@ inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float
 	sp.object = s.object;
 	sp.emitter = s.emitter;
 	sp.m = &sc->materials[s.material];
+	/* the normal's pattern tilts the shading normal (a mesh's own textures'
+	 * normals are not applied yet: lower_texture.c says so) */
+	if (sp.m->normal >= 0 && !(sp.m->flags & MATERIAL_LOCAL))
+		sp.ns = pattern_perturb(&sc->patterns[sp.m->normal], sc->warps, sc->maps, sp.x, sp.ns);
 	return sp;
 }
 

@@ -873,8 +873,7 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	if (AST_IS_EXPRESSION(item->kind) && first) {
 		if (eval_expect_kind(e, item, V_TEXTURE, &v))
 			return -1;
-		copy_pigment(m, &v.mat);
-		copy_finish(m, &v.mat);
+		eval_apply_value(&v, m);
 		return 0;
 	}
 	if (item->kind == AST_BLOCK && (item->kw == KW_PIGMENT || item->kw == KW_FINISH || item->kw == KW_NORMAL))

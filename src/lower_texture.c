@@ -82,6 +82,7 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 		.rows = { row(&inv, 0), row(&inv, 1), row(&inv, 2) },
 		.kind = pg->kind, .wave = pg->wave, .noise_generator = pg->noise_generator,
 		.frequency = (float)pg->frequency, .phase = (float)pg->phase, .wave_exponent = (float)pg->wave_exponent,
+		.bump_size = (float)pg->bump_size, .normal = { (float)pg->accuracy, 0, 0, 0 },
 		.params = { f4v(pg->params[0]), f4v(pg->params[1]) },
 		.warp_first = lt->n_warps, .warp_count = n_warps,
 		.map_first = lt->n_maps, .map_count = pg->n_map,
@@ -133,12 +134,16 @@ dev_material lower_texture(lower_textures *lt, const scene *s, const scene_mater
 		.interior = { m->ior > 0 ? m->ior : 1, m->fade_distance, m->fade_power, m->conserve_energy },
 		.fade_color = { m->fade_color[0], m->fade_color[1], m->fade_color[2], 0 },
 		.pattern = -1,
+		.normal = -1,
 		.flags = (local ? MATERIAL_LOCAL : 0) | (m->roughness_set ? MATERIAL_ROUGH : 0),
 	};
 	if (p[3] != 0 || p[4] != 0)
 		lt->see_through = 1;
 	if (m->pattern >= 0 && m->pattern < s->n_pigments)
 		d.pattern = flatten(lt, s, m->pattern, &m->tex_xf, 0);
+	/* the kernels do not perturb the normals of a mesh's own textures yet */
+	if (m->normal >= 0 && m->normal < s->n_pigments && !local)
+		d.normal = flatten(lt, s, m->normal, &m->tex_xf, 0);
 	return d;
 }
 
