@@ -37,7 +37,7 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 		traverse_hit hit = visibility_closest(sc, o, d, 0.0f, INFINITY, path_skip(depth, reflected),
 		                                      depth == 0 ? RAY_CAMERA : RAY_BOUNCE);
 		if (hit.prim < 0) {
-			radiance += beta * p->background.xyz;
+			radiance += beta * texture_sky(sc, d);
 			break;
 		}
 		if (sigma.x > 0.0f || sigma.y > 0.0f || sigma.z > 0.0f)

@@ -288,7 +288,7 @@ inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_
 	int kind = ray.level == 0 ? RAY_CAMERA : RAY_BOUNCE;
 	traverse_hit hit = visibility_closest(sc, ray.o, ray.d, 0.0f, INFINITY, skip, kind);
 	if (hit.prim < 0) {
-		fr.colour = p->background.xyz;
+		fr.colour = texture_sky(sc, ray.d);
 		return fr;
 	}
 	int level = ray.level + (ray.kind & WRAY_CONTINUED ? 0 : 1);

@@ -125,6 +125,24 @@ inline pigment_colour texture_pigment(const scene_data *sc, const shading_point 
 	return out;
 }
 
+/* What a ray that leaves the scene sees: the background, or the sky_sphere's
+ * pigment at the ray's direction (POV-Ray evaluates it at the point of the
+ * unit sphere the ray points to), through whose filter and transmit the
+ * background shows. */
+inline float3 texture_sky(const scene_data *sc, float3 d)
+{
+	global const dev_params *p = sc->p;
+	if (p->sky < 0)
+		return p->background.xyz;
+	shading_point sp;
+	sp.x = sp.object_x = d;
+	sp.ng = sp.ns = -d;
+	sp.d = d;
+	sp.m = &sc->materials[p->sky];
+	pigment_colour c = texture_pigment(sc, &sp);
+	return c.rgb * (1.0f - c.filter - c.transmit) + p->background.xyz * (c.filter * c.rgb + c.transmit);
+}
+
 /* What the camera ray found first, for the AOVs. */
 typedef struct {
 	float3 albedo, normal;

@@ -523,6 +523,8 @@ static int sky_sphere(struct eval *e, const ast_node *b, value *out)
 		} else if ((rc = eval_transform_item(e, &c, item, &t)) == 0) {
 			rc = eval_not_valid(e, item, "a sky_sphere");
 		} else {
+			if (rc > 0)   /* they turn the sky's pattern */
+				m.tex_xf = scene_xform_then(&m.tex_xf, &t);
 			rc = rc < 0 ? -1 : 0;
 		}
 	}
@@ -745,6 +747,8 @@ static int statement_block(struct eval *e, const ast_node *b)
 		e->s->has_sky = true;
 		for (int i = 0; i < 3; i++)
 			e->s->sky[i] = v.mat.pigment[i];
+		e->s->sky_pattern = v.mat.pattern;
+		e->s->sky_xf = v.mat.tex_xf;
 		eval_value_free(&v);
 		return 0;
 	default:

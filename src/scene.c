@@ -87,6 +87,8 @@ void scene_init(scene *s)
 	s->camera = scene_default_camera();
 	s->adc_bailout = 1.0f / 255.0f;
 	s->film_gamma = 1;
+	s->sky_pattern = -1;
+	s->sky_xf = scene_xform_identity();
 	for (int i = 0; i < 3; i++)
 		s->ambient_light[i] = 1;
 }
