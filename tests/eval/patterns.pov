@@ -18,7 +18,8 @@
 //  [0.0 blue 0.4] [1 red 1 green 0.5] (a value, then a colour of components):
 //    <0.5, 0.25, 0.2>;
 //  average, whose values are weights: [1 rgb x] [3 rgb z] -> <0.25, 0, 0.75>,
-//    and without a warning, since that is what POV-Ray renders.
+//    and without a warning, since that is what POV-Ray renders;
+//  normal { bumps 0.5 }: a normal pattern ("normal N" and its pigment line).
 #version 3.7;
 global_settings { assumed_gamma 1 }
 sphere { 0, 1 pigment { checker rgb <1, 0, 0>, rgb <0, 0, 1> scale 0.2 } }
