@@ -257,9 +257,9 @@ typedef struct {
 	int n_planes, n_emitters, integrator, aov;   /* aov: 1 when the aov buffer is there */
 	float4 classic;     /* the Whitted integrator's: w: adc_bailout */
 	int scene_flags;    /* SCENE_ */
-	int sky;            /* the sky_sphere's material, whose pattern rays that leave
-	                     * the scene see (texture_sky), or -1: background */
-	int pad[2];
+	int sky;            /* the sky_sphere's first material, or -1: the background alone */
+	int sky_layers;     /* its pigments are materials sky .. sky + sky_layers - 1 */
+	int pad;
 } dev_params;
 /* SCENE_SHADOWS_PASS: some surface lets shadow rays through (no_shadow, filter,
  * transmit), so shadow rays look at what they meet instead of stopping at the first. */

@@ -125,22 +125,25 @@ inline pigment_colour texture_pigment(const scene_data *sc, const shading_point 
 	return out;
 }
 
-/* What a ray that leaves the scene sees: the background, or the sky_sphere's
- * pigment at the ray's direction (POV-Ray evaluates it at the point of the
- * unit sphere the ray points to), through whose filter and transmit the
- * background shows. */
+/* What a ray that leaves the scene sees: the sky_sphere's pigments at the
+ * point of the unit sphere the ray points to, the last written on top, each
+ * showing what is below through its filter and transmit, and the background
+ * below them all (POV-Ray 3.7's sky, with its emission in the layers'). */
 inline float3 texture_sky(const scene_data *sc, float3 d)
 {
 	global const dev_params *p = sc->p;
-	if (p->sky < 0)
-		return p->background.xyz;
+	float3 col = (float3)(0.0f), through = (float3)(1.0f);
 	shading_point sp;
 	sp.x = sp.object_x = d;
 	sp.ng = sp.ns = -d;
 	sp.d = d;
-	sp.m = &sc->materials[p->sky];
-	pigment_colour c = texture_pigment(sc, &sp);
-	return c.rgb * (1.0f - c.filter - c.transmit) + p->background.xyz * (c.filter * c.rgb + c.transmit);
+	for (int i = p->sky + p->sky_layers - 1; p->sky >= 0 && i >= p->sky; i--) {
+		sp.m = &sc->materials[i];
+		pigment_colour c = texture_pigment(sc, &sp);
+		col += c.rgb * (1.0f - c.filter - c.transmit) * through * sp.m->emission.xyz;
+		through *= c.filter * c.rgb + c.transmit;
+	}
+	return col + p->background.xyz * through;
 }
 
 /* What the camera ray found first, for the AOVs. */

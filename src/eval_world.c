@@ -496,11 +496,16 @@ static int background(struct eval *e, const ast_node *b)
 
 /* sky_sphere { [SKY_SPHERE_IDENTIFIER] [PIGMENT...] [emission COLOR] [TRANSFORMATIONS...] }:
  * eclat's sky is one colour, the average of the first pigment. */
+/* sky_sphere { [SKY_SPHERE_IDENTIFIER] [PIGMENT...] [emission COLOR]
+ *              [TRANSFORMATION...] }: its layers go to the scene (sky_layers). */
 static int sky_sphere(struct eval *e, const ast_node *b, value *out)
 {
 	struct cursor c;
 	int err = 0, rc = 0, pigments = 0;
+	scene *s = e->s;
 	scene_material m = e->default_mat;
+	xform sky_xf = scene_xform_identity();
+	float emission[3] = { 1, 1, 1 };
 	const ast_node *item;
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
@@ -509,26 +514,43 @@ static int sky_sphere(struct eval *e, const ast_node *b, value *out)
 		if (AST_IS_EXPRESSION(item->kind) && pigments == 0) {
 			if ((rc = eval_expr(e, item, &v)) == 0 && (v.kind != V_OTHER || strcmp(v.str, "sky_sphere") != 0))
 				rc = eval_not_valid(e, item, "a sky_sphere");
-			else if (rc == 0)
-				m = v.mat, pigments++;
+			else if (rc == 0) {   /* the declared sky's layers, then this one's */
+				pigments = s->n_sky_layers;
+				sky_xf = s->n_sky_layers ? s->sky_layers[0].tex_xf : sky_xf;
+				memcpy(emission, s->n_sky_layers ? s->sky_layers[0].emission : emission, sizeof emission);
+			}
 			eval_value_free(&v);
 		} else if (item->kind == AST_BLOCK && item->kw == KW_PIGMENT) {
-			if (pigments++ == 0)
-				rc = eval_material_block(e, item, &m);
-			else
-				eval_warn_once(e, item->loc, "sky_sphere layers",
-				               "the pigments of a sky_sphere after the first are not supported yet; ignored");
+			m = e->default_mat;
+			rc = eval_material_block(e, item, &m);
+			if (rc == 0) {
+				s->sky_layers = eval_xrealloc(pigments ? s->sky_layers : NULL,
+				                              (pigments + 1) * sizeof *s->sky_layers);
+				s->sky_layers[pigments++] = m;
+			}
 		} else if (item->kind == AST_ARG && item->kw == KW_EMISSION) {
-			rc = eval_expect_color(e, item->kids[0], (double[5]){ 0 });
+			double col[5];
+			rc = eval_expect_color(e, item->kids[0], col);
+			for (int i = 0; i < 3; i++)
+				emission[i] = (float)col[i];
 		} else if ((rc = eval_transform_item(e, &c, item, &t)) == 0) {
 			rc = eval_not_valid(e, item, "a sky_sphere");
 		} else {
-			if (rc > 0)   /* they turn the sky's pattern */
-				m.tex_xf = scene_xform_then(&m.tex_xf, &t);
+			if (rc > 0)   /* they turn the sky's patterns */
+				sky_xf = scene_xform_then(&sky_xf, &t);
 			rc = rc < 0 ? -1 : 0;
 		}
 	}
 	eval_cursor_free(&c);
+	if (pigments == 0)
+		free(s->sky_layers), s->sky_layers = NULL;
+	s->n_sky_layers = pigments;
+	for (int i = 0; i < pigments; i++) {
+		s->sky_layers[i].tex_xf = sky_xf;
+		memcpy(s->sky_layers[i].emission, emission, sizeof emission);
+	}
+	if (pigments)
+		m = s->sky_layers[pigments - 1];
 	if (rc || err)
 		return -1;
 	*out = (value){ .kind = V_OTHER, .str = eval_xstrdup("sky_sphere"), .mat = m };
@@ -747,8 +769,6 @@ static int statement_block(struct eval *e, const ast_node *b)
 		e->s->has_sky = true;
 		for (int i = 0; i < 3; i++)
 			e->s->sky[i] = v.mat.pigment[i];
-		e->s->sky_pattern = v.mat.pattern;
-		e->s->sky_xf = v.mat.tex_xf;
 		eval_value_free(&v);
 		return 0;
 	default:

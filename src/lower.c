@@ -666,7 +666,7 @@ static int lower_camera(const scene *s, dev_params *p)
 	p->cam_direction = f4(c->direction, 0);
 	p->cam_right = f4(c->right, 0);
 	p->cam_up = f4(c->up, 0);
-	const float *bg = s->has_sky && s->sky_pattern < 0 ? s->sky : s->background;
+	const float *bg = s->background;
 	p->background = (float4){ bg[0], bg[1], bg[2], 0 };
 	double dl = sqrt(c->direction[0] * c->direction[0] + c->direction[1] * c->direction[1] +
 	                 c->direction[2] * c->direction[2]);
@@ -884,13 +884,11 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	for (int i = 0; i < s->n_lights; i++)
 		if (light_in_range(&s->lights[i]))
 			out->lights[out->n_lights++] = lower_light(&s->lights[i]);
-	out->params.sky = -1;
-	if (s->has_sky && s->sky_pattern >= 0) {   /* the sky's pattern, as a material of its own */
-		scene_material m = scene_default_material();
-		memcpy(m.pigment, s->sky, sizeof s->sky);
-		m.pattern = s->sky_pattern;
-		m.tex_xf = s->sky_xf;
-		out->params.sky = add_material(&lw, &m, 0);
+	out->params.sky = -1;   /* the sky's layers, as materials side by side */
+	for (int i = 0; s->has_sky && i < s->n_sky_layers; i++) {
+		int m = add_material(&lw, &s->sky_layers[i], 0);
+		out->params.sky = i == 0 ? m : out->params.sky;
+		out->params.sky_layers = i + 1;
 	}
 	out->materials = lw.mats;
 	out->n_materials = lw.n_mats;

@@ -87,8 +87,7 @@ void scene_init(scene *s)
 	s->camera = scene_default_camera();
 	s->adc_bailout = 1.0f / 255.0f;
 	s->film_gamma = 1;
-	s->sky_pattern = -1;
-	s->sky_xf = scene_xform_identity();
+
 	for (int i = 0; i < 3; i++)
 		s->ambient_light[i] = 1;
 }
@@ -156,6 +155,7 @@ void scene_free(scene *s)
 	for (int i = 0; i < s->n_pigments; i++)
 		free(s->pigments[i].map);
 	free(s->pigments);
+	free(s->sky_layers);
 	memset(s, 0, sizeof *s);
 }
 

@@ -188,10 +188,11 @@ typedef struct {
 	scene_pigment *pigments;   /* the pattern pigments' pool, scene_material.pattern */
 	int n_pigments, cap_pigments;
 	float background[3];
-	float sky[3];         /* sky_sphere's colour (its pattern's average); used when has_sky */
+	float sky[3];         /* sky_sphere's colour (its top pigment's average); used when has_sky */
 	bool has_sky;
-	int sky_pattern;      /* the sky_sphere's pattern pigment (pigments), or -1 */
-	xform sky_xf;         /* the sky_sphere's transformations */
+	scene_material *sky_layers;  /* the sky_sphere's pigments as written (the last on top),
+	                              * its transformations in tex_xf, its emission in emission */
+	int n_sky_layers;
 	/* global_settings */
 	int max_trace_level;  /* 0 when the scene does not say */
 	float assumed_gamma;  /* 0 when the scene does not say */
