@@ -264,8 +264,8 @@ enum kw_class {
  *   the patterns and pattern modifiers POV-Ray has no keyword token for, in a
  *   pigment: aoi, cubic, square, triangular, noise_generator, metric, form,
  *   offset, solid, control0, control1, and in warp { }: repeat, offset, flip,
- *   black_hole, strength (eval_pattern.c); in normal { }: bump_size, accuracy
- *   (eval_material.c) */
+ *   black_hole, strength (eval_pattern.c); in normal { }: bump_size, accuracy,
+ *   slope_map (eval_material.c) */
 #define AST_WORD_MESH_FILE "file"
 #define AST_WORD_AOI "aoi"
 #define AST_WORD_CUBIC "cubic"
@@ -285,6 +285,7 @@ enum kw_class {
 #define AST_WORD_STRENGTH "strength"
 #define AST_WORD_BUMP_SIZE "bump_size"
 #define AST_WORD_ACCURACY "accuracy"
+#define AST_WORD_SLOPE_MAP "slope_map"
 #define AST_WORD_SPLINE "spline"
 #define AST_WORD_LINEAR_SPLINE "linear_spline"
 #define AST_WORD_QUADRATIC_SPLINE "quadratic_spline"

@@ -1007,6 +1007,34 @@ static int normal_item(struct eval *e, struct cursor *c, const ast_node *item, s
 	return rc < 0 ? -1 : 1;
 }
 
+/* slope_map { [Value <Height, Slope>]... }: the normal pattern's map, whose
+ * entries hold the height in colour[0] and the slope in colour[1]
+ * (kernels/normal.cl). */
+static int slope_map(struct eval *e, const ast_node *b, scene_pigment *pg)
+{
+	struct cursor c;
+	int err = 0, rc = 0;
+	const ast_node *item;
+	free(pg->map);
+	pg->map = NULL;
+	pg->n_map = 0;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		double v, hs[3];
+		if (item->kind != AST_ENTRY || item->n_kids != 2) {
+			rc = eval_not_valid(e, item, "a slope_map (entries are [Value <Height, Slope>])");
+			break;
+		}
+		if ((rc = eval_expect_float(e, item->kids[0], &v)) || (rc = eval_expect_vector(e, item->kids[1], hs)))
+			break;
+		pg->map = eval_xrealloc(pg->map, (pg->n_map + 1) * sizeof *pg->map);
+		pg->map[pg->n_map++] = (scene_map_entry){ .value = v, .colour = { (float)hs[0], (float)hs[1] },
+		                                          .pigment = -1 };
+	}
+	eval_cursor_free(&c);
+	return rc || err ? -1 : 0;
+}
+
 /* normal { [NORMAL_IDENTIFIER] [PATTERN [Amount]] [bump_size Amount]
  *          [accuracy Accuracy] [PATTERN_MODIFIER...] [TRANSFORMATION...] }:
  * the pattern perturbs the surface normal where the kernels shade
@@ -1030,9 +1058,11 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 			if ((rc = eval_expect_kind(e, item, V_NORMAL, &v)) == 0 && v.mat.normal >= 0) {
 				p.at = item;
 				p.kind = e->s->pigments[v.mat.normal].kind;
-				p.pg = e->s->pigments[v.mat.normal];
-				p.pg.map = NULL;
-				p.pg.n_map = 0;
+				const scene_pigment *base = &e->s->pigments[v.mat.normal];
+				p.pg = *base;   /* its slope_map too */
+				p.pg.map = base->n_map ? eval_xrealloc(NULL, base->n_map * sizeof *base->map) : NULL;
+				if (base->n_map)
+					memcpy(p.pg.map, base->map, base->n_map * sizeof *base->map);
 				amount = true;
 			}
 		} else if ((rc = pattern_start(e, item, &p)) <= 0) {
@@ -1043,6 +1073,9 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 			}
 		} else if (p.at && p.kind > 0 && (rc = normal_item(e, &c, item, &p, &amount)) <= 0) {
 			;
+		} else if (p.at && p.kind > 0 && item->kind == AST_BLOCK && item->kw == KW_UNKNOWN &&
+		           strcmp(item->str, AST_WORD_SLOPE_MAP) == 0) {
+			rc = slope_map(e, item, &p.pg);
 		} else if ((rc = pattern_word(e, &c, item, &p)) <= 0) {
 			;   /* a pattern eclat does not have (warned below), or another POV-Ray word (warned) */
 		} else if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
@@ -1063,9 +1096,10 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 	}
 	if (p.at && p.kind < 0)
 		eval_warn_once(e, p.at->loc, p.name, "pattern '%s' is not supported yet in a normal; ignored", p.name);
-	if (p.at && p.kind > 0) {
+	if (p.at && p.kind > 0)
 		m->normal = scene_add_pigment(e->s, &p.pg);
-	}
+	else
+		free(p.pg.map);
 	return 0;
 }
 
