@@ -86,17 +86,24 @@ void eval_warning(struct eval *e, src_loc loc, const char *fmt, ...)
 	va_start(ap, fmt);
 	vsnprintf(msg, sizeof msg, fmt, ap);
 	va_end(ap);
+	if (e->deferring) {
+		e->pending = eval_xrealloc(e->pending, (e->n_pending + 1) * sizeof *e->pending);
+		e->pending[e->n_pending++] = (struct eval_warning){ loc, eval_xstrdup(msg) };
+		return;
+	}
 	diag_warning(loc, "%s", msg);
 	context_notes(e);
 }
 
 void eval_warn_once(struct eval *e, src_loc loc, const char *key, const char *fmt, ...)
 {
+	char place[160];
+	snprintf(place, sizeof place, "%d:%d:%d %s", loc.file, loc.line, loc.col, key);
 	for (int i = 0; i < e->n_warned; i++)
-		if (strcmp(e->warned[i], key) == 0)
+		if (strcmp(e->warned[i], place) == 0)
 			return;
 	e->warned = eval_xrealloc(e->warned, (e->n_warned + 1) * sizeof *e->warned);
-	e->warned[e->n_warned++] = eval_xstrdup(key);
+	e->warned[e->n_warned++] = eval_xstrdup(place);
 	char msg[1024];
 	va_list ap;
 	va_start(ap, fmt);
@@ -110,6 +117,8 @@ void eval_warn_once(struct eval *e, src_loc loc, const char *key, const char *fm
 struct symbol {
 	char *name;
 	value val;
+	struct eval_warning *warnings;   /* waiting until the scene uses it (eval_used) */
+	int n_warnings;
 	struct symbol *ref;   /* a macro parameter given a declared identifier: that one */
 	bool undefined;       /* #undef: kept, so that a parameter referring to it stays valid */
 	struct symbol *next;
@@ -144,6 +153,9 @@ static void scope_free(struct scope *s)
 		for (struct symbol *y = s->bucket[i], *next; y; y = next) {
 			next = y->next;
 			eval_value_free(&y->val);
+			for (int k = 0; k < y->n_warnings; k++)
+				free(y->warnings[k].msg);
+			free(y->warnings);
 			free(y->name);
 			free(y);
 		}
@@ -205,6 +217,39 @@ static struct symbol *visible(struct eval *e, const char *name)
 			return resolve(y)->undefined ? NULL : resolve(y);
 	}
 	return NULL;
+}
+
+void eval_used(struct eval *e, const char *name, src_loc loc)
+{
+	struct symbol *y = visible(e, name);
+	if (!y || y->n_warnings == 0)
+		return;
+	struct eval_warning *w = y->warnings;
+	int n = y->n_warnings;
+	y->warnings = NULL;
+	y->n_warnings = 0;
+	for (int i = 0; i < n; i++) {
+		eval_warning(e, w[i].loc, "%s", w[i].msg);
+		if (!e->deferring)
+			diag_note(loc, "where '%s' is used", name);
+		free(w[i].msg);
+	}
+	free(w);
+}
+
+/* The warnings that waited while a declaration was evaluated go to its symbol. */
+static void keep_warnings(struct eval *e, const char *name, int from)
+{
+	struct symbol *y = e->n_pending > from ? visible(e, name) : NULL;
+	for (int i = from; i < e->n_pending; i++) {
+		if (y) {
+			y->warnings = eval_xrealloc(y->warnings, (y->n_warnings + 1) * sizeof *y->warnings);
+			y->warnings[y->n_warnings++] = e->pending[i];
+		} else {
+			free(e->pending[i].msg);
+		}
+	}
+	e->n_pending = from;
 }
 
 value *eval_lookup(struct eval *e, const char *name)
@@ -839,15 +884,19 @@ static void run_declare(struct eval *e, const ast_node *d)
 {
 	const ast_node *rhs = d->kids[0];
 	value v;
+	/* an include file's declarations warn when the scene uses them */
+	bool defer = e->include_depth > 0 && d->n_kids == 1;
+	int from = e->n_pending;
+	e->deferring += defer;
 	int rc = AST_IS_EXPRESSION(rhs->kind) ? eval_expr(e, rhs, &v) :
 	         rhs->kind == AST_INCLUDE ? include_value(e, rhs, &v) : eval_block_value(e, rhs, &v);
-	if (rc)
-		return;
-	if (d->n_kids > 1) {
+	e->deferring -= defer;
+	if (rc == 0 && d->n_kids > 1)
 		array_target(e, d, v);
-		return;
-	}
-	eval_assign(e, d->str, v, d->op == 'l');
+	else if (rc == 0)
+		eval_assign(e, d->str, v, d->op == 'l');
+	if (defer)
+		keep_warnings(e, rc == 0 ? d->str : "", from);
 }
 
 /* #declare A[I][J] = V: the element must exist. */
@@ -1095,6 +1144,9 @@ static void eval_free(struct eval *e)
 	for (int i = 0; i < e->n_warned; i++)
 		free(e->warned[i]);
 	free(e->warned);
+	for (int i = 0; i < e->n_pending; i++)
+		free(e->pending[i].msg);
+	free(e->pending);
 	free(e->rng.state);
 }
 

@@ -58,6 +58,7 @@ static void undeclared(struct eval *e, const ast_node *n, const char *what)
 
 static int identifier(struct eval *e, const ast_node *n, value *out)
 {
+	eval_used(e, n->str, n->loc);
 	const value *v = eval_lookup(e, n->str);
 	if (!v) {
 		undeclared(e, n, "identifier");
@@ -120,6 +121,7 @@ value *eval_reference(struct eval *e, const ast_node *n, int *err)
 		return element(e, n, err);
 	if (n->kind != AST_IDENT)
 		return NULL;
+	eval_used(e, n->str, n->loc);
 	value *v = eval_lookup(e, n->str);
 	if (!v) {
 		undeclared(e, n, "identifier");

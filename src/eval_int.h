@@ -118,8 +118,11 @@ struct eval {
 	struct rng rng;
 	ast_node **trees;        /* included files, kept while their macros may run */
 	int n_trees;
-	char **warned;           /* the kinds of constructs already warned about */
+	char **warned;           /* the constructs already warned about, with their place */
 	int n_warned;
+	int deferring;           /* inside a declaration of an include file: warnings wait */
+	struct eval_warning *pending;  /* the warnings waiting, for the declaration's symbol */
+	int n_pending;
 	struct eval_file *files; /* #fopen's open files (eval_fileio.c) */
 	int n_files;
 };
@@ -127,7 +130,18 @@ struct eval {
 /* Errors and warnings with the chain of includes and macro calls as notes. */
 void eval_error(struct eval *e, src_loc loc, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 void eval_warning(struct eval *e, src_loc loc, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
-/* A warning printed once per key for the whole scene ("pattern marble"). */
+/* A warning inside a declaration of an include file waits in the declared
+ * identifier until the scene uses it: textures.inc's unused textures say
+ * nothing. */
+struct eval_warning {
+	src_loc loc;
+	char *msg;
+};
+/* The identifier name is used at loc: its waiting warnings are printed, once,
+ * with a note that points there. */
+void eval_used(struct eval *e, const char *name, src_loc loc);
+/* A warning printed once per key and place ("pattern marble" at 3:12): a
+ * construct in a loop or a macro warns once, and each place that uses it does. */
 void eval_warn_once(struct eval *e, src_loc loc, const char *key, const char *fmt, ...)
 	__attribute__((format(printf, 4, 5)));
 
