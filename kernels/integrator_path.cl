@@ -115,36 +115,16 @@ kernel void render_pass(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, g
 	uint counts[COUNT_N] = { 0 };
 	scene_data sc = { SCENE_BUFFERS(SCENE_FIELD) p, counts };
 	float4 acc = film[pixel];
-	float4 a0 = 0.0f, a1 = 0.0f, a2 = 0.0f;
-	if (p->aov) {
-		a0 = aov[AOV_FLOAT4S * pixel];
-		a1 = aov[AOV_FLOAT4S * pixel + 1];
-		a2 = aov[AOV_FLOAT4S * pixel + 2];
-	}
 	for (int s = 0; s < p->samples_per_pass; s++) {
 		uint key = rng_key((uint)pixel, (uint)(p->sample_base + s), (uint)p->seed);
 		uint tests = path_tests(counts);
 		first_hit first = { (float3)(0.0f), (float3)(0.0f), 0.0f, -1 };
-		float3 l = path_radiance(&sc, px, py, key, &first);
-		if (first.object >= 0) {
-			a0 += (float4)(first.albedo, 1.0f);
-			a1 += (float4)(first.normal, 0.0f);
-			a2.x += first.depth;
-		}
-		if (p->sample_base + s == 0)
-			a2.y = (float)first.object;
-		/* one bad sample (a NaN from a degenerate hit) must not blacken the pixel */
-		if (!(isfinite(l.x) && isfinite(l.y) && isfinite(l.z)))
-			l = (float3)(0.0f);
+		float3 l = film_finite(path_radiance(&sc, px, py, key, &first));
+		if (p->aov)
+			film_add_aov(aov, pixel, &first, p->sample_base + s);
 		/* sample by sample, so the sums do not depend on how samples group into passes */
 		acc += (float4)(l, (float)(path_tests(counts) - tests));
 	}
 	film[pixel] = acc;
-	if (p->aov) {
-		aov[AOV_FLOAT4S * pixel] = a0;
-		aov[AOV_FLOAT4S * pixel + 1] = a1;
-		aov[AOV_FLOAT4S * pixel + 2] = a2;
-	}
-	for (int i = 0; i < COUNT_N; i++)
-		atomic_add(&counters[i], counts[i]);
+	film_add_counts(counters, counts);
 }

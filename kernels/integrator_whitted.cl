@@ -388,20 +388,10 @@ kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p
 	whitted_ray camera = whitted_child(p->cam_location.xyz, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE);
 	first_hit first = { (float3)(0.0f), (float3)(0.0f), 0.0f, -1 };
 	counts[COUNT_RAYS + RAY_CAMERA]++;
-	float3 l = whitted_radiance(&sc, camera, &first);
-	if (!(isfinite(l.x) && isfinite(l.y) && isfinite(l.z)))
-		l = (float3)(0.0f);
+	float3 l = film_finite(whitted_radiance(&sc, camera, &first));
 	/* every pass adds the same deterministic colour, so the film's average is it */
 	film[pixel] += (float4)(l, (float)(counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA]));
-	if (p->aov) {
-		if (first.object >= 0) {
-			aov[AOV_FLOAT4S * pixel] += (float4)(first.albedo, 1.0f);
-			aov[AOV_FLOAT4S * pixel + 1] += (float4)(first.normal, 0.0f);
-			aov[AOV_FLOAT4S * pixel + 2].x += first.depth;
-		}
-		if (p->sample_base == 0)
-			aov[AOV_FLOAT4S * pixel + 2].y = (float)first.object;
-	}
-	for (int i = 0; i < COUNT_N; i++)
-		atomic_add(&counters[i], counts[i]);
+	if (p->aov)
+		film_add_aov(aov, pixel, &first, p->sample_base);
+	film_add_counts(counters, counts);
 }

@@ -146,13 +146,6 @@ inline float3 texture_sky(const scene_data *sc, float3 d)
 	return col + p->background.xyz * through;
 }
 
-/* What the camera ray found first, for the AOVs. */
-typedef struct {
-	float3 albedo, normal;
-	float depth;
-	int object;    /* -1: nothing */
-} first_hit;
-
 inline void texture_first_hit(first_hit *first, const shading_point *sp, float3 albedo)
 {
 	if (first->object >= 0)

@@ -1,0 +1,37 @@
+/* film.cl: what a render kernel writes for its pixel, the same for every
+ * integrator: the radiance of each sample (a bad one, NaN or infinite from a
+ * degenerate hit, counts as black rather than blackening the pixel), the
+ * first surface the camera ray met for the AOVs, and the pass's counters. */
+
+/* What the camera ray found first, for the AOVs (texture_first_hit fills it). */
+typedef struct {
+	float3 albedo, normal;
+	float depth;
+	int object;    /* -1: nothing */
+} first_hit;
+
+inline float3 film_finite(float3 l)
+{
+	return isfinite(l.x) && isfinite(l.y) && isfinite(l.z) ? l : (float3)(0.0f);
+}
+
+/* The aov buffer's sums (shared.h, AOV_FLOAT4S): albedo, normal and depth of
+ * the samples that hit, and the object of the pixel's sample 0. */
+inline void film_add_aov(global float4 *aov, int pixel, const first_hit *f, int sample)
+{
+	global float4 *a = aov + AOV_FLOAT4S * pixel;
+	if (f->object >= 0) {
+		a[0] += (float4)(f->albedo, 1.0f);
+		a[1] += (float4)(f->normal, 0.0f);
+		a[2].x += f->depth;
+	}
+	if (sample == 0)
+		a[2].y = (float)f->object;
+}
+
+/* The work item's ray and test counters into the pass's. */
+inline void film_add_counts(global uint *counters, const uint *counts)
+{
+	for (int i = 0; i < COUNT_N; i++)
+		atomic_add(&counters[i], counts[i]);
+}
