@@ -364,7 +364,8 @@ static int test_mesh(device_ctx *dev, cl_program prog, const char *dir, const ch
 	snprintf(path, sizeof path, "%s/%s", dir, name);
 	scene_mesh m;
 	if (mesh_io_load(path, MESH_IO_DEFAULT_TIME_LIMIT, &m, err, sizeof err)) {
-		check(0, "%s loads: %s%g%g", path, 0, 0);
+		printf("FAIL: %s does not load: %s\n", path, err);
+		failures++;
 		return -1;
 	}
 	xform id = scene_xform_identity();
