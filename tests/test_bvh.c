@@ -2,8 +2,9 @@
  *
  *   test_bvh              random triangle soups (with degenerate triangles)
  *   test_bvh mesh.obj     also a Wavefront OBJ mesh (v and f lines)
- *   test_bvh --property MESH_DIR   a million random rays each on bunny.obj,
- *                         dragon.obj and a soup (tests/bvh_property.test)
+ *   test_bvh --property [FILE.obj=BRUTE]...   a million random rays each on
+ *                         every OBJ mesh FILE (brute force on the first BRUTE)
+ *                         and a soup (tests/bvh_property.test names the meshes)
  *
  * The core check: for every ray, the closest hit found by traversing the BVH
  * equals the closest hit found by testing every triangle, using the same
@@ -12,6 +13,7 @@
  * is the reference the OpenCL kernel mirrors (see slab and traverse).
  * Exit status 0 = pass. Build with -I$(top_srcdir)/src -I$(top_srcdir)/kernels. */
 #include "bvh.h"
+#include "mesh_arg.h"
 
 #include <float.h>
 #include <math.h>
@@ -1327,19 +1329,23 @@ static void property_case(const char *name, rng *r, const tri *tris, int n, int 
 	free(boxes);
 }
 
-static int property_test(const char *dir, rng *r)
+static int property_test(int n_files, char **files, rng *r)
 {
-	static const char *names[2] = { "bunny.obj", "dragon.obj" };
 	enum { N_PROPERTY_RAYS = 1000000 };
+	char path[4096];
+	int n_brute;
+	for (int i = 0; i < n_files; i++)   /* all of them well formed before the first case */
+		if (mesh_arg(files[i], path, sizeof path, &n_brute))
+			return 2;
 	printf("property: %d random rays each\n", N_PROPERTY_RAYS);
-	for (int i = 0; i < 2; i++) {
-		char path[4096];
+	for (int i = 0; i < n_files; i++) {
 		mesh m = { 0 };
-		snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+		mesh_arg(files[i], path, sizeof path, &n_brute);
+		const char *name = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
 		if (load_obj(path, &m) != 0 || m.n_t == 0)
 			fail("%s: no triangles loaded", path);
 		else
-			property_case(names[i], r, m.t, m.n_t, N_PROPERTY_RAYS, i == 0 ? 2000 : 200);
+			property_case(name, r, m.t, m.n_t, N_PROPERTY_RAYS, n_brute);
 		free(m.v);
 		free(m.t);
 	}
@@ -1359,8 +1365,8 @@ static int property_test(const char *dir, rng *r)
 int main(int argc, char **argv)
 {
 	rng r = { SEED };
-	if (argc == 3 && strcmp(argv[1], "--property") == 0)
-		return property_test(argv[2], &r);
+	if (argc >= 2 && strcmp(argv[1], "--property") == 0)
+		return property_test(argc - 2, argv + 2, &r);
 	printf("test_bvh: seed 0x%016llx, BVH_MAX_LEAF %d\n", (unsigned long long)SEED, BVH_MAX_LEAF);
 	check_slab();
 	printf("tiny trees:\n");
