@@ -1035,6 +1035,16 @@ static int slope_map(struct eval *e, const ast_node *b, scene_pigment *pg)
 	return rc || err ? -1 : 0;
 }
 
+/* What goes with a normal's pattern that eclat does not have (bump_map,
+ * pigment_pattern...): its amount, modifiers, transformations and blocks,
+ * ignored with it. */
+static bool ignored_item(struct eval *e, const ast_node *item)
+{
+	xform t = scene_xform_identity();
+	return AST_IS_EXPRESSION(item->kind) || is_pattern_modifier(item) || item->kind == AST_BLOCK ||
+	       item->kind == AST_FLAG || eval_transform_item(e, NULL, item, &t) > 0;
+}
+
 /* normal { [NORMAL_IDENTIFIER] [PATTERN [Amount]] [bump_size Amount]
  *          [accuracy Accuracy] [PATTERN_MODIFIER...] [TRANSFORMATION...] }:
  * the pattern perturbs the surface normal where the kernels shade
@@ -1081,11 +1091,18 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		} else if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
 			eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
 			rc = 0;
-		} else if (item->kind == AST_BLOCK && item->kw == KW_NORMAL_MAP) {
-			eval_warn_once(e, item->loc, "normal_map", "'normal_map' is not supported yet; ignored");
+		} else if (item->kind == AST_BLOCK && (item->kw == KW_NORMAL_MAP || item->kw == KW_NORMAL)) {
+			eval_warn_once(e, item->loc, "normal_map", "normals of normals (%s) are not supported yet; "
+			               "this normal is ignored", item->kw == KW_NORMAL ? "checker normal { } normal { }"
+			                                                            : "normal_map");
+			p.kind = -1;   /* the pattern alone would be the wrong bumps */
+			p.at = p.at ? p.at : item;
+			snprintf(p.name, sizeof p.name, "%s", "");
 			rc = 0;
+		} else if (!(p.at && p.kind > 0) && ignored_item(e, item)) {
+			rc = 0;   /* it goes with a pattern eclat does not have, warned about */
 		} else {
-			rc = p.at && p.kind < 0 ? 0 : eval_not_valid(e, item, "a normal");
+			rc = eval_not_valid(e, item, "a normal");
 		}
 		first = false;
 	}
@@ -1094,7 +1111,7 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		free(p.pg.map);
 		return -1;
 	}
-	if (p.at && p.kind < 0)
+	if (p.at && p.kind < 0 && p.name[0])
 		eval_warn_once(e, p.at->loc, p.name, "pattern '%s' is not supported yet in a normal; ignored", p.name);
 	if (p.at && p.kind > 0)
 		m->normal = scene_add_pigment(e->s, &p.pg);
