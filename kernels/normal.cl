@@ -75,9 +75,7 @@ inline float3 normal_facets(float4 prm, float3 p, float3 v)
 				if ((abs(ax) == 2) + (abs(ay) == 2) + (abs(az) == 2) > 1)
 					continue;
 				int cx = fx + ax, cy = fy + ay, cz = fz + az;
-				int seed = pattern_hash3(cx, cy, cz);
-				float3 c = (float3)((float)cx + pattern_rands[seed], (float)cy + pattern_rands[seed + 1],
-				                    (float)cz + pattern_rands[seed + 2]);
+				float3 c = pattern_cell_point(cx, cy, cz);
 				float3 d = c - tv;
 				float sum;
 				if (metric == 2.0f)

@@ -116,6 +116,31 @@ inline float pattern_solid_noise(float3 p)
 	return mix(c, d, s.z);
 }
 
+/* The lattice cell of p that POV-Ray's Noise and DNoise both start from:
+ * the offsets from its two corners, the smoothstep weights, the hashes of its
+ * four columns and its z index. */
+typedef struct {
+	float3 f0, f1, s, t;
+	int h00, h10, h01, h11, iz;
+} pattern_cell_corners;
+
+inline pattern_cell_corners pattern_corners(float3 p)
+{
+	pattern_cell_corners c;
+	float3 fl = floor(p);
+	c.f0 = p - fl;
+	c.f1 = c.f0 - 1.0f;
+	int ix = pattern_lattice(fl.x), iy = pattern_lattice(fl.y);
+	c.iz = pattern_lattice(fl.z);
+	c.s = c.f0 * c.f0 * (3.0f - 2.0f * c.f0);
+	c.t = 1.0f - c.s;
+	c.h00 = pattern_hash[(pattern_hash[ix] ^ iy) & 0xfff];
+	c.h10 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ iy) & 0xfff];
+	c.h01 = pattern_hash[(pattern_hash[ix] ^ (iy + 1)) & 0xfff];
+	c.h11 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ (iy + 1)) & 0xfff];
+	return c;
+}
+
 /* POV-Ray's Noise: a value in [0, 1]. Generator 1 is the original lattice
  * noise (centred on 0.5, clipped), 2 the same stretched to fill [0, 1] better
  * (POV-Ray 3.7's default), 3 Perlin's gradient noise rescaled. */
@@ -123,15 +148,9 @@ float pattern_noise(float3 p, int generator)
 {
 	if (generator == 3)
 		return clamp(0.5f * (1.59f * pattern_solid_noise(p) + 0.985f), 0.0f, 1.0f);
-	float3 fl = floor(p);
-	float3 f0 = p - fl, f1 = f0 - 1.0f;
-	int ix = pattern_lattice(fl.x), iy = pattern_lattice(fl.y), iz = pattern_lattice(fl.z);
-	float3 s = f0 * f0 * (3.0f - 2.0f * f0);
-	float3 t = 1.0f - s;
-	int h00 = pattern_hash[(pattern_hash[ix] ^ iy) & 0xfff];
-	int h10 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ iy) & 0xfff];
-	int h01 = pattern_hash[(pattern_hash[ix] ^ (iy + 1)) & 0xfff];
-	int h11 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ (iy + 1)) & 0xfff];
+	pattern_cell_corners cc = pattern_corners(p);
+	float3 f0 = cc.f0, f1 = cc.f1, s = cc.s, t = cc.t;
+	int h00 = cc.h00, h10 = cc.h10, h01 = cc.h01, h11 = cc.h11, iz = cc.iz;
 	float sum = pattern_incr(pattern_corner(h00, iz), t.x * t.y * t.z, f0.x, f0.y, f0.z)
 	          + pattern_incr(pattern_corner(h10, iz), s.x * t.y * t.z, f1.x, f0.y, f0.z)
 	          + pattern_incr(pattern_corner(h01, iz), t.x * s.y * t.z, f0.x, f1.y, f0.z)
@@ -162,15 +181,9 @@ inline float3 pattern_dincr(int k, float s, float x, float y, float z)
 float3 pattern_dnoise(float3 p, int generator)
 {
 	(void)generator;
-	float3 fl = floor(p);
-	float3 f0 = p - fl, f1 = f0 - 1.0f;
-	int ix = pattern_lattice(fl.x), iy = pattern_lattice(fl.y), iz = pattern_lattice(fl.z);
-	float3 s = f0 * f0 * (3.0f - 2.0f * f0);
-	float3 t = 1.0f - s;
-	int h00 = pattern_hash[(pattern_hash[ix] ^ iy) & 0xfff];
-	int h10 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ iy) & 0xfff];
-	int h01 = pattern_hash[(pattern_hash[ix] ^ (iy + 1)) & 0xfff];
-	int h11 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ (iy + 1)) & 0xfff];
+	pattern_cell_corners cc = pattern_corners(p);
+	float3 f0 = cc.f0, f1 = cc.f1, s = cc.s, t = cc.t;
+	int h00 = cc.h00, h10 = cc.h10, h01 = cc.h01, h11 = cc.h11, iz = cc.iz;
 	return pattern_dincr(pattern_corner(h00, iz), t.x * t.y * t.z, f0.x, f0.y, f0.z)
 	     + pattern_dincr(pattern_corner(h10, iz), s.x * t.y * t.z, f1.x, f0.y, f0.z)
 	     + pattern_dincr(pattern_corner(h11, iz), s.x * s.y * t.z, f1.x, f1.y, f0.z)
@@ -327,6 +340,15 @@ inline float3 pattern_cell(float3 p)
 	return floor(p + eps);
 }
 
+/* The random point of POV-Ray's crackle and facets in the unit cell
+ * (cx, cy, cz). */
+inline float3 pattern_cell_point(int cx, int cy, int cz)
+{
+	int seed = pattern_hash3(cx, cy, cz);
+	return (float3)((float)cx + pattern_rands[seed], (float)cy + pattern_rands[seed + 1],
+	                (float)cz + pattern_rands[seed + 2]);
+}
+
 inline float pattern_cells(float3 p)
 {
 	float3 c = pattern_cell(p);
@@ -368,9 +390,7 @@ inline float pattern_crackle(float3 p, float4 form_metric, float4 offset_solid, 
 				if ((abs(ax) == 2) + (abs(ay) == 2) + (abs(az) == 2) > 1)
 					continue;
 				int cx = fx + ax, cy = fy + ay, cz = fz + az;
-				int seed = pattern_hash3(cx, cy, cz);
-				float3 c = (float3)((float)cx + pattern_rands[seed], (float)cy + pattern_rands[seed + 1],
-				                    (float)cz + pattern_rands[seed + 2]);
+				float3 c = pattern_cell_point(cx, cy, cz);
 				float d = pattern_metric(c - p, metric);
 				/* POV-Ray sorts its first three, then keeps the three
 				 * smallest; strict comparisons keep its choice on ties. */
