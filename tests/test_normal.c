@@ -20,18 +20,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "device.h"
-#include "shared.h"
+#include "povray_plane.h"
 
-#define W 160
-#define H 120
-#define MAX_WARPS 3
+#define W PLANE_W
+#define H PLANE_H
 #define MAX_SLOPES 4
-
-struct warp {
-	int kind, classic;
-	float a[4], b[4], c[4];
-};
 
 struct ncase {
 	const char *name;
@@ -40,14 +33,14 @@ struct ncase {
 	float freq, phase;      /* freq 0: 1 (POV-Ray's default) */
 	float amount, accuracy; /* 0: POV-Ray's defaults, 0.5 and 0.02 */
 	float p0[4], p1[4];
-	struct warp warps[MAX_WARPS];
+	struct plane_warp warps[PLANE_MAX_WARPS];
 	int n_warps;
 	float scale[3], rotate[3], translate[3];   /* written after the pattern; scale 0: none */
 	float slopes[MAX_SLOPES][3];                /* slope_map: value, height, slope */
 	int n_slopes, flags;
 };
 
-#define TURB(t, classic) { WARP_TURBULENCE, classic, { t, t, t, 0.5f }, { 2, 6 }, { 0 } }
+#define TURB(t, classic) PLANE_TURB(t, classic)
 
 static const struct ncase cases[] = {
 	/* POV-Ray's own normal functions */
@@ -140,88 +133,20 @@ static const double light_dir[3][3] = { { 1, 0, -1 }, { 0, 1, -1 }, { 0, 0, -1 }
 
 /* ---- the scene ---- */
 
-static int write_scene(const char *dir, const struct ncase *c)
+static int write_scene(const char *dir, int i, const char **name)
 {
-	char path[4096];
-	snprintf(path, sizeof path, "%s/%s.pov", dir, c->name);
-	FILE *f = fopen(path, "w");
-	if (!f) {
-		perror(path);
+	const struct ncase *c = &cases[i];
+	FILE *f = plane_scene_open(dir, c->name, 0);
+	if (!f)
 		return -1;
-	}
-	fprintf(f, "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n");
-	fprintf(f, "camera { orthographic location <0, 0, -10> look_at 0 right x * 8 up y * 6 }\n");
 	static const char *colours[3] = { "<1, 0, 0>", "<0, 1, 0>", "<0, 0, 1>" };
 	for (int k = 0; k < 3; k++)
 		fprintf(f, "light_source { <%g, %g, %g> color rgb %s parallel point_at <0, 0, 0> shadowless }\n",
 		        10 * light_dir[k][0], 10 * light_dir[k][1], 10 * light_dir[k][2], colours[k]);
 	fprintf(f, "plane { z, 0 texture { pigment { rgb 1 } normal { %s } finish { ambient 0 diffuse 1 } } }\n",
 	        c->pov);
+	*name = c->name;
 	return fclose(f);
-}
-
-static void rotate_axis(double p[3], int axis, double degrees)
-{
-	double a = degrees * M_PI / 180, cs = cos(a), sn = sin(a);
-	int u = (axis + 1) % 3, v = (axis + 2) % 3;
-	double pu = p[u] * cs - p[v] * sn, pv = p[u] * sn + p[v] * cs;
-	p[u] = pu, p[v] = pv;
-}
-
-/* World to the pattern's space: POV-Ray's scale, rotate (x, then y, then z)
- * and translate, undone in reverse order. */
-static void to_pattern(const struct ncase *c, double p[3], int with_translation)
-{
-	if (with_translation)
-		for (int k = 0; k < 3; k++)
-			p[k] -= c->translate[k];
-	for (int axis = 2; axis >= 0; axis--)
-		if (c->rotate[axis] != 0)
-			rotate_axis(p, axis, -c->rotate[axis]);
-	if (c->scale[0] != 0)
-		for (int k = 0; k < 3; k++)
-			p[k] /= c->scale[k];
-}
-
-/* ---- POV-Ray's image: a binary PPM, 16 bits a channel ---- */
-
-static int ppm_token(FILE *f)
-{
-	int ch;
-	for (;;) {
-		ch = getc(f);
-		if (ch == '#')
-			while (ch != '\n' && ch != EOF)
-				ch = getc(f);
-		else if (ch != ' ' && ch != '\t' && ch != '\n' && ch != '\r')
-			break;
-	}
-	int v = 0;
-	while (ch >= '0' && ch <= '9') {
-		v = v * 10 + (ch - '0');
-		ch = getc(f);
-	}
-	return v;
-}
-
-static int read_ppm(const char *path, float *rgb)
-{
-	FILE *f = fopen(path, "rb");
-	if (!f)
-		return -1;
-	int ok = getc(f) == 'P' && getc(f) == '6';
-	int w = ppm_token(f), h = ppm_token(f), max = ppm_token(f);
-	ok = ok && w == W && h == H && max > 0;
-	int bytes = max > 255 ? 2 : 1;
-	for (int i = 0; ok && i < 3 * W * H; i++) {
-		unsigned char px[2];
-		if (fread(px, 1, bytes, f) != (size_t)bytes)
-			ok = 0;
-		else
-			rgb[i] = (bytes == 2 ? px[0] << 8 | px[1] : px[0]) / (float)max;
-	}
-	fclose(f);
-	return ok ? 0 : -1;
 }
 
 /* ---- the device ---- */
@@ -235,81 +160,31 @@ static const char *test_kernel =
 	"	out[i] = (float4)(pattern_perturb(pt, warps, maps, points[i].xyz, (float3)(0.0f, 0.0f, -1.0f)), 0.0f);\n"
 	"}\n";
 
-static cl_program build(device_ctx *d)
-{
-	static const char *wanted[] = { "kernels/shared.h", "kernels/pattern_tables.cl", "kernels/pattern.cl",
-	                                "kernels/normal.cl" };
-	const char *texts[8];
-	int n = 0;
-	for (int k = 0; k < 4; k++)
-		for (int i = 0; device_sources[i].name; i++)
-			if (!strcmp(device_sources[i].name, wanted[k]))
-				texts[n++] = device_sources[i].text;
-	if (n != 4) {
-		fprintf(stderr, "test_normal: the embedded kernels lack normal.cl, pattern.cl or its tables\n");
-		return NULL;
-	}
-	texts[n++] = test_kernel;
-	cl_int err;
-	cl_program prog = clCreateProgramWithSource(d->context, n, texts, NULL, &err);
-	if (!prog) {
-		device_fail("clCreateProgramWithSource", err);
-		return NULL;
-	}
-	err = clBuildProgram(prog, 1, &d->device, "-cl-std=CL1.2", NULL, NULL);
-	if (err != CL_SUCCESS) {
-		char log[16384];
-		clGetProgramBuildInfo(prog, d->device, CL_PROGRAM_BUILD_LOG, sizeof log, log, NULL);
-		fprintf(stderr, "test_normal: build failed:\n%s\n", log);
-		clReleaseProgram(prog);
-		return NULL;
-	}
-	return prog;
-}
+static const char *const kernel_files[] = { "kernels/shared.h", "kernels/pattern_tables.cl", "kernels/pattern.cl",
+                                            "kernels/normal.cl" };
 
 static void fill_pattern(const struct ncase *c, dev_pattern *pt, dev_warp *warps, dev_map_entry *maps)
 {
-	memset(pt, 0, sizeof *pt);
-	pt->kind = c->kind;
-	pt->wave = c->wave;
-	pt->noise_generator = c->gen ? c->gen : 2;
+	plane_fill_pattern(pt, warps, c->kind, c->wave, c->gen, c->p0, c->p1, c->warps, c->n_warps);
 	pt->frequency = c->freq != 0 ? c->freq : 1;
 	pt->phase = c->phase;
 	pt->wave_exponent = 1;
 	pt->bump_size = c->amount != 0 ? c->amount : 0.5f;
 	pt->normal.x = c->accuracy != 0 ? c->accuracy : 0.02f;
 	pt->flags = c->flags;
-	memcpy(&pt->params[0], c->p0, sizeof c->p0);
-	memcpy(&pt->params[1], c->p1, sizeof c->p1);
-	if (c->kind == PATTERN_GRADIENT) {   /* POV-Ray normalizes the axis */
-		float *a = &pt->params[0].x;
-		float len = sqrtf(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-		for (int k = 0; k < 3; k++)
-			a[k] /= len;
-	}
 	/* rows: world to the pattern's space, column by column */
 	double o[3] = { 0, 0, 0 };
-	to_pattern(c, o, 1);
+	plane_to_pattern(c->scale, c->rotate, c->translate, o);
 	float *rows[3] = { &pt->rows[0].x, &pt->rows[1].x, &pt->rows[2].x };
 	for (int j = 0; j < 3; j++) {
 		double e[3] = { 0, 0, 0 };
 		e[j] = 1;
-		to_pattern(c, e, 0);
+		plane_to_pattern(c->scale, c->rotate, NULL, e);
 		for (int k = 0; k < 3; k++)
 			rows[k][j] = (float)e[k];
 	}
 	for (int k = 0; k < 3; k++)
 		rows[k][3] = (float)o[k];
-	pt->warp_first = 0;
-	pt->warp_count = c->n_warps;
-	memset(warps, 0, MAX_WARPS * sizeof *warps);
-	for (int i = 0; i < c->n_warps; i++) {
-		warps[i].kind = c->warps[i].kind;
-		warps[i].classic = c->warps[i].classic;
-		memcpy(&warps[i].a, c->warps[i].a, sizeof warps[i].a);
-		memcpy(&warps[i].b, c->warps[i].b, sizeof warps[i].b);
-		memcpy(&warps[i].c, c->warps[i].c, sizeof warps[i].c);
-	}
 	pt->map_first = 0;
 	pt->map_count = c->n_slopes;
 	memset(maps, 0, MAX_SLOPES * sizeof *maps);
@@ -321,41 +196,26 @@ static void fill_pattern(const struct ncase *c, dev_pattern *pt, dev_warp *warps
 	}
 }
 
-static int evaluate(device_ctx *d, cl_kernel k, const struct ncase *c, float4 *out)
+static int evaluate(struct plane_device *pd, const struct ncase *c, float4 *out)
 {
 	static float4 points[W * H];
 	dev_pattern pt;
-	dev_warp warps[MAX_WARPS];
+	dev_warp warps[PLANE_MAX_WARPS];
 	dev_map_entry maps[MAX_SLOPES];
 	fill_pattern(c, &pt, warps, maps);
 	for (int j = 0; j < H; j++)
 		for (int i = 0; i < W; i++) {
-			double sx = (i + 0.5) / W - 0.5, sy = 0.5 - (j + 0.5) / H;
-			points[j * W + i] = (float4){ (float)(sx * 8), (float)(sy * 6), 0, 0 };
+			double p[3], dir[3];
+			plane_camera_hit(0, i, j, p, dir);
+			points[j * W + i] = (float4){ (float)p[0], (float)p[1], (float)p[2], 0 };
 		}
-	cl_int err;
-	cl_mem bp = clCreateBuffer(d->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof pt, &pt, &err);
-	cl_mem bw = clCreateBuffer(d->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof warps, warps, &err);
-	cl_mem bm = clCreateBuffer(d->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof maps, maps, &err);
-	cl_mem bpts = clCreateBuffer(d->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof points, points, &err);
-	cl_mem bout = clCreateBuffer(d->context, CL_MEM_WRITE_ONLY, W * H * sizeof(float4), NULL, &err);
-	if (!bp || !bw || !bm || !bpts || !bout)
-		return device_fail("clCreateBuffer", err);
-	clSetKernelArg(k, 0, sizeof bp, &bp);
-	clSetKernelArg(k, 1, sizeof bw, &bw);
-	clSetKernelArg(k, 2, sizeof bm, &bm);
-	clSetKernelArg(k, 3, sizeof bpts, &bpts);
-	clSetKernelArg(k, 4, sizeof bout, &bout);
-	size_t global = W * H;
-	err = clEnqueueNDRangeKernel(d->queue, k, 1, NULL, &global, NULL, 0, NULL, NULL);
-	if (err == CL_SUCCESS)
-		err = clEnqueueReadBuffer(d->queue, bout, CL_TRUE, 0, W * H * sizeof(float4), out, 0, NULL, NULL);
-	clReleaseMemObject(bp);
-	clReleaseMemObject(bw);
-	clReleaseMemObject(bm);
-	clReleaseMemObject(bpts);
-	clReleaseMemObject(bout);
-	return err == CL_SUCCESS ? 0 : device_fail("normal_test", err);
+	const struct plane_arg args[] = {
+		{ &pt, sizeof pt, 0 },
+		{ warps, sizeof warps, 0 },
+		{ maps, sizeof maps, 0 },
+		{ points, sizeof points, 0 },
+	};
+	return plane_run(pd, args, 4, out, W * H * sizeof(float4));
 }
 
 /* POV-Ray's diffuse from the three lights: max(0, N.L), one light a channel. */
@@ -371,27 +231,17 @@ static void shade(float4 n, double rgb[3])
 
 static int compare(const char *dir)
 {
-	device_ctx d;
-	if (device_open(&d, -1) != 0)
+	struct plane_device pd;
+	if (plane_open(&pd, kernel_files, 4, test_kernel, "normal_test", "test_normal") != 0)
 		return 1;
-	cl_program prog = build(&d);
-	if (!prog)
-		return 1;
-	cl_int err;
-	cl_kernel k = clCreateKernel(prog, "normal_test", &err);
-	if (!k)
-		return device_fail("clCreateKernel", err) ? 1 : 1;
 	int failures = 0;
 	static float4 normal[W * H];
 	static float pov[3 * W * H];
 	for (int ci = 0; ci < N_CASES; ci++) {
 		const struct ncase *c = &cases[ci];
-		if (evaluate(&d, k, c, normal) != 0)
+		if (evaluate(&pd, c, normal) != 0)
 			return 1;
-		char path[4096];
-		snprintf(path, sizeof path, "%s/%s.ppm", dir, c->name);
-		if (read_ppm(path, pov) != 0) {
-			printf("FAIL: %s: no image from POV-Ray (%s)\n", c->name, path);
+		if (plane_read_case(dir, c->name, pov, 3) != 0) {
 			failures++;
 			continue;
 		}
@@ -416,31 +266,11 @@ static int compare(const char *dir)
 		       worst_rgb[2], pov[3 * worst], pov[3 * worst + 1], pov[3 * worst + 2]);
 		failures += !ok;
 	}
-	clReleaseKernel(k);
-	clReleaseProgram(prog);
-	device_close(&d);
+	plane_close(&pd);
 	return failures != 0;
 }
 
 int main(int argc, char **argv)
 {
-	if (argc == 3 && !strcmp(argv[1], "write")) {
-		char path[4096];
-		snprintf(path, sizeof path, "%s/cases", argv[2]);
-		FILE *list = fopen(path, "w");
-		if (!list) {
-			perror(path);
-			return 1;
-		}
-		for (int i = 0; i < N_CASES; i++) {
-			if (write_scene(argv[2], &cases[i]) != 0)
-				return 1;
-			fprintf(list, "%s\n", cases[i].name);
-		}
-		return fclose(list) != 0;
-	}
-	if (argc == 3 && !strcmp(argv[1], "compare"))
-		return compare(argv[2]);
-	fprintf(stderr, "usage: test_normal write|compare DIR\n");
-	return 2;
+	return plane_main(argc, argv, "test_normal", N_CASES, write_scene, compare);
 }

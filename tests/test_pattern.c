@@ -18,17 +18,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "device.h"
-#include "shared.h"
+#include "povray_plane.h"
 
-#define W 160
-#define H 120
-#define MAX_WARPS 3
-
-struct warp {
-	int kind, classic;
-	float a[4], b[4], c[4];
-};
+#define W PLANE_W
+#define H PLANE_H
 
 struct pcase {
 	const char *name;
@@ -37,14 +30,14 @@ struct pcase {
 	int kind, wave, gen;   /* gen 0: POV-Ray's default, 2 */
 	float freq, phase, exponent;
 	float p0[4], p1[4];
-	struct warp warps[MAX_WARPS];
+	struct plane_warp warps[PLANE_MAX_WARPS];
 	int n_warps;
 	float scale[3], rotate[3], translate[3];   /* written after the pattern; scale 0: none */
 	int perspective;
 };
 
 /* The turbulence modifiers' defaults: octaves 6, omega 0.5, lambda 2. */
-#define TURB(t, classic) { WARP_TURBULENCE, classic, { t, t, t, 0.5f }, { 2, 6 }, { 0 } }
+#define TURB(t, classic) PLANE_TURB(t, classic)
 #define TURB_FULL(tx, ty, tz, omega, lambda, octaves, classic) \
 	{ WARP_TURBULENCE, classic, { tx, ty, tz, omega }, { lambda, octaves }, { 0 } }
 
@@ -205,104 +198,21 @@ static void transform_text(const struct pcase *c, char *out, size_t n)
 		         c->translate[2]);
 }
 
-static int write_scene(const char *dir, const struct pcase *c)
+/* A case without POV-Ray's pattern has no scene. */
+static int write_scene(const char *dir, int i, const char **name)
 {
-	char path[4096], xf[256];
-	snprintf(path, sizeof path, "%s/%s.pov", dir, c->name);
-	FILE *f = fopen(path, "w");
-	if (!f) {
-		perror(path);
-		return -1;
-	}
-	transform_text(c, xf, sizeof xf);
-	fprintf(f, "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n");
-	if (c->perspective)
-		fprintf(f, "camera { perspective location <0, 0, -10> direction z right x * 4/3 up y }\n");
-	else
-		fprintf(f, "camera { orthographic location <0, 0, -10> look_at 0 right x * 8 up y * 6 }\n");
-	fprintf(f, "plane { z, 0 pigment { %s%s%s } finish { ambient 1 diffuse 0 } }\n", c->pov,
-	        c->list ? "" : " color_map { [0 rgb 0] [1 rgb 1] }", xf);
-	return fclose(f);
-}
-
-/* The point on the plane z = 0 seen through pixel (i, j)'s centre, and the
- * ray's direction. */
-static void camera_hit(const struct pcase *c, int i, int j, double p[3], double d[3])
-{
-	double sx = (i + 0.5) / W - 0.5, sy = 0.5 - (j + 0.5) / H;
-	if (c->perspective) {
-		d[0] = sx * 4.0 / 3.0, d[1] = sy, d[2] = 1;
-		double len = sqrt(d[0] * d[0] + d[1] * d[1] + 1);
-		p[0] = 10 * d[0], p[1] = 10 * d[1], p[2] = 0;
-		for (int k = 0; k < 3; k++)
-			d[k] /= len;
-	} else {
-		p[0] = sx * 8, p[1] = sy * 6, p[2] = 0;
-		d[0] = 0, d[1] = 0, d[2] = 1;
-	}
-}
-
-static void rotate_axis(double p[3], int axis, double degrees)
-{
-	double a = degrees * M_PI / 180, cs = cos(a), sn = sin(a);
-	int u = (axis + 1) % 3, v = (axis + 2) % 3;
-	double pu = p[u] * cs - p[v] * sn, pv = p[u] * sn + p[v] * cs;
-	p[u] = pu, p[v] = pv;
-}
-
-/* World to the pattern's space: POV-Ray's scale, rotate (x, then y, then z)
- * and translate, undone in reverse order. */
-static void to_pattern(const struct pcase *c, double p[3])
-{
-	for (int k = 0; k < 3; k++)
-		p[k] -= c->translate[k];
-	for (int axis = 2; axis >= 0; axis--)
-		if (c->rotate[axis] != 0)
-			rotate_axis(p, axis, -c->rotate[axis]);
-	if (c->scale[0] != 0)
-		for (int k = 0; k < 3; k++)
-			p[k] /= c->scale[k];
-}
-
-/* ---- POV-Ray's image: a binary PPM, 16 bits a channel ---- */
-
-static int ppm_token(FILE *f)
-{
-	int ch;
-	for (;;) {
-		ch = getc(f);
-		if (ch == '#')
-			while (ch != '\n' && ch != EOF)
-				ch = getc(f);
-		else if (ch != ' ' && ch != '\t' && ch != '\n' && ch != '\r')
-			break;
-	}
-	int v = 0;
-	while (ch >= '0' && ch <= '9') {
-		v = v * 10 + (ch - '0');
-		ch = getc(f);
-	}
-	return v;
-}
-
-static int read_ppm(const char *path, float *grey)
-{
-	FILE *f = fopen(path, "rb");
+	const struct pcase *c = &cases[i];
+	if (!c->pov)
+		return 0;
+	char xf[256];
+	FILE *f = plane_scene_open(dir, c->name, c->perspective);
 	if (!f)
 		return -1;
-	int ok = getc(f) == 'P' && getc(f) == '6';
-	int w = ppm_token(f), h = ppm_token(f), max = ppm_token(f);
-	ok = ok && w == W && h == H && max > 0;
-	for (int i = 0; ok && i < W * H; i++) {
-		unsigned char px[6];
-		int bytes = max > 255 ? 6 : 3;
-		if (fread(px, 1, bytes, f) != (size_t)bytes)
-			ok = 0;
-		else
-			grey[i] = (bytes == 6 ? px[0] << 8 | px[1] : px[0]) / (float)max;   /* red: all are equal */
-	}
-	fclose(f);
-	return ok ? 0 : -1;
+	transform_text(c, xf, sizeof xf);
+	fprintf(f, "plane { z, 0 pigment { %s%s%s } finish { ambient 1 diffuse 0 } }\n", c->pov,
+	        c->list ? "" : " color_map { [0 rgb 0] [1 rgb 1] }", xf);
+	*name = c->name;
+	return fclose(f);
 }
 
 /* ---- the device ---- */
@@ -316,125 +226,52 @@ static const char *test_kernel =
 	"	out[i] = pattern_value(pt, warps, points[i].xyz, normal.xyz, dirs[i].xyz);\n"
 	"}\n";
 
-static cl_program build(device_ctx *d)
-{
-	const char *texts[8];
-	int n = 0;
-	for (int i = 0; device_sources[i].name; i++)
-		if (!strcmp(device_sources[i].name, "kernels/shared.h") ||
-		    !strcmp(device_sources[i].name, "kernels/pattern_tables.cl") ||
-		    !strcmp(device_sources[i].name, "kernels/pattern.cl"))
-			texts[n++] = device_sources[i].text;
-	if (n != 3) {
-		fprintf(stderr, "test_pattern: the embedded kernels lack pattern.cl or its tables\n");
-		return NULL;
-	}
-	texts[n++] = test_kernel;
-	cl_int err;
-	cl_program prog = clCreateProgramWithSource(d->context, n, texts, NULL, &err);
-	if (!prog) {
-		device_fail("clCreateProgramWithSource", err);
-		return NULL;
-	}
-	err = clBuildProgram(prog, 1, &d->device, "-cl-std=CL1.2", NULL, NULL);
-	if (err != CL_SUCCESS) {
-		char log[16384];
-		clGetProgramBuildInfo(prog, d->device, CL_PROGRAM_BUILD_LOG, sizeof log, log, NULL);
-		fprintf(stderr, "test_pattern: build failed:\n%s\n", log);
-		clReleaseProgram(prog);
-		return NULL;
-	}
-	return prog;
-}
+static const char *const kernel_files[] = { "kernels/shared.h", "kernels/pattern_tables.cl", "kernels/pattern.cl" };
 
 static void fill_pattern(const struct pcase *c, dev_pattern *pt, dev_warp *warps)
 {
-	memset(pt, 0, sizeof *pt);
-	pt->kind = c->kind;
-	pt->wave = c->wave;
-	pt->noise_generator = c->gen ? c->gen : 2;
+	plane_fill_pattern(pt, warps, c->kind, c->wave, c->gen, c->p0, c->p1, c->warps, c->n_warps);
 	pt->frequency = c->freq;
 	pt->phase = c->phase;
 	pt->wave_exponent = c->exponent;
-	memcpy(&pt->params[0], c->p0, sizeof c->p0);
-	memcpy(&pt->params[1], c->p1, sizeof c->p1);
-	if (c->kind == PATTERN_GRADIENT) {   /* POV-Ray normalizes the axis */
-		float *a = &pt->params[0].x;
-		float len = sqrtf(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-		for (int k = 0; k < 3; k++)
-			a[k] /= len;
-	}
-	pt->warp_first = 0;
-	pt->warp_count = c->n_warps;
-	memset(warps, 0, MAX_WARPS * sizeof *warps);
-	for (int i = 0; i < c->n_warps; i++) {
-		warps[i].kind = c->warps[i].kind;
-		warps[i].classic = c->warps[i].classic;
-		memcpy(&warps[i].a, c->warps[i].a, sizeof warps[i].a);
-		memcpy(&warps[i].b, c->warps[i].b, sizeof warps[i].b);
-		memcpy(&warps[i].c, c->warps[i].c, sizeof warps[i].c);
-	}
 }
 
-static int evaluate(device_ctx *d, cl_kernel k, const struct pcase *c, float *out)
+static int evaluate(struct plane_device *pd, const struct pcase *c, float *out)
 {
 	static float4 points[W * H], dirs[W * H];
 	dev_pattern pt;
-	dev_warp warps[MAX_WARPS];
+	dev_warp warps[PLANE_MAX_WARPS];
 	fill_pattern(c, &pt, warps);
 	for (int j = 0; j < H; j++)
 		for (int i = 0; i < W; i++) {
 			double p[3], dir[3];
-			camera_hit(c, i, j, p, dir);
-			to_pattern(c, p);
+			plane_camera_hit(c->perspective, i, j, p, dir);
+			plane_to_pattern(c->scale, c->rotate, c->translate, p);
 			points[j * W + i] = (float4){ (float)p[0], (float)p[1], (float)p[2], 0 };
 			dirs[j * W + i] = (float4){ (float)dir[0], (float)dir[1], (float)dir[2], 0 };
 		}
 	/* The plane's normal as POV-Ray's aoi sees it: facing the camera. */
 	float4 normal = { 0, 0, -1, 0 };
-	cl_int err;
-	cl_mem bp = clCreateBuffer(d->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof pt, &pt, &err);
-	cl_mem bw = clCreateBuffer(d->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof warps, warps, &err);
-	cl_mem bpts = clCreateBuffer(d->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof points, points, &err);
-	cl_mem bdir = clCreateBuffer(d->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof dirs, dirs, &err);
-	cl_mem bout = clCreateBuffer(d->context, CL_MEM_WRITE_ONLY, W * H * sizeof(float), NULL, &err);
-	if (!bp || !bw || !bpts || !bdir || !bout)
-		return device_fail("clCreateBuffer", err);
-	clSetKernelArg(k, 0, sizeof bp, &bp);
-	clSetKernelArg(k, 1, sizeof bw, &bw);
-	clSetKernelArg(k, 2, sizeof bpts, &bpts);
-	clSetKernelArg(k, 3, sizeof bdir, &bdir);
-	clSetKernelArg(k, 4, sizeof normal, &normal);
-	clSetKernelArg(k, 5, sizeof bout, &bout);
-	size_t global = W * H;
-	err = clEnqueueNDRangeKernel(d->queue, k, 1, NULL, &global, NULL, 0, NULL, NULL);
-	if (err == CL_SUCCESS)
-		err = clEnqueueReadBuffer(d->queue, bout, CL_TRUE, 0, W * H * sizeof(float), out, 0, NULL, NULL);
-	clReleaseMemObject(bp);
-	clReleaseMemObject(bw);
-	clReleaseMemObject(bpts);
-	clReleaseMemObject(bdir);
-	clReleaseMemObject(bout);
-	return err == CL_SUCCESS ? 0 : device_fail("pattern_test", err);
+	const struct plane_arg args[] = {
+		{ &pt, sizeof pt, 0 },
+		{ warps, sizeof warps, 0 },
+		{ points, sizeof points, 0 },
+		{ dirs, sizeof dirs, 0 },
+		{ &normal, sizeof normal, 1 },
+	};
+	return plane_run(pd, args, 5, out, W * H * sizeof(float));
 }
 
 static int compare(const char *dir)
 {
-	device_ctx d;
-	if (device_open(&d, -1) != 0)
+	struct plane_device pd;
+	if (plane_open(&pd, kernel_files, 3, test_kernel, "pattern_test", "test_pattern") != 0)
 		return 1;
-	cl_program prog = build(&d);
-	if (!prog)
-		return 1;
-	cl_int err;
-	cl_kernel k = clCreateKernel(prog, "pattern_test", &err);
-	if (!k)
-		return device_fail("clCreateKernel", err) ? 1 : 1;
 	int failures = 0;
 	static float value[W * H], pov[W * H];
 	for (int ci = 0; ci < N_CASES; ci++) {
 		const struct pcase *c = &cases[ci];
-		if (evaluate(&d, k, c, value) != 0)
+		if (evaluate(&pd, c, value) != 0)
 			return 1;
 		if (!c->pov) {   /* no POV-Ray reference: a pigment of facets is 0 */
 			int zeros = 0;
@@ -446,10 +283,7 @@ static int compare(const char *dir)
 			failures += !ok;
 			continue;
 		}
-		char path[4096];
-		snprintf(path, sizeof path, "%s/%s.ppm", dir, c->name);
-		if (read_ppm(path, pov) != 0) {
-			printf("FAIL: %s: no image from POV-Ray (%s)\n", c->name, path);
+		if (plane_read_case(dir, c->name, pov, 1) != 0) {   /* red: all are equal */
 			failures++;
 			continue;
 		}
@@ -470,32 +304,11 @@ static int compare(const char *dir)
 		       c->list ? value[worst] / (c->list - 1) : value[worst], pov[worst]);
 		failures += !ok;
 	}
-	clReleaseKernel(k);
-	clReleaseProgram(prog);
-	device_close(&d);
+	plane_close(&pd);
 	return failures != 0;
 }
 
 int main(int argc, char **argv)
 {
-	if (argc == 3 && !strcmp(argv[1], "write")) {
-		char path[4096];
-		snprintf(path, sizeof path, "%s/cases", argv[2]);
-		FILE *list = fopen(path, "w");
-		if (!list) {
-			perror(path);
-			return 1;
-		}
-		for (int i = 0; i < N_CASES; i++)
-			if (cases[i].pov) {
-				if (write_scene(argv[2], &cases[i]) != 0)
-					return 1;
-				fprintf(list, "%s\n", cases[i].name);
-			}
-		return fclose(list) != 0;
-	}
-	if (argc == 3 && !strcmp(argv[1], "compare"))
-		return compare(argv[2]);
-	fprintf(stderr, "usage: test_pattern write|compare DIR\n");
-	return 2;
+	return plane_main(argc, argv, "test_pattern", N_CASES, write_scene, compare);
 }
