@@ -140,6 +140,11 @@ inline pigment_colour texture_image(const scene_data *sc, global const dev_patte
 		u = -theta * w;
 		v = phi / (2.0f * PATTERN_PI) * h;
 	}
+	/* POV-Ray adds 1e-10 texels, which in double puts a point that rounding
+	 * left a hair before an edge of the image (a box's face at 0) after it;
+	 * float's rounding needs 2e-6 of the image */
+	u += 2e-6f * w;
+	v += 2e-6f * h;
 	if (once && (u >= w || v >= h || u < 0.0f || v < 0.0f))
 		return out;
 	float x = texture_wrap(u, w), y = texture_wrap(-v, h);   /* the image's rows go down */
