@@ -120,6 +120,7 @@ enum {                       /* ORDER: the names in src/eval_pattern.c */
 	PATTERN_QUILTED, PATTERN_RADIAL, PATTERN_RIPPLES, PATTERN_SPHERICAL, PATTERN_SPIRAL1,
 	PATTERN_SPIRAL2, PATTERN_SPOTTED, PATTERN_SQUARE, PATTERN_TRIANGULAR, PATTERN_WAVES,
 	PATTERN_WOOD, PATTERN_WRINKLES,
+	PATTERN_IMAGE_MAP,   /* a colour, not a value: texture.cl's texture_image */
 	PATTERN_COUNT
 };
 /* POV-Ray's wave types, applied to a continuous pattern's value. */
@@ -181,6 +182,10 @@ typedef struct {
  *   waves, ripples: params[0].x global_settings' number_of_waves (10)
  *   facets:    params[0].x size (0.1), y coords (0: none, the normal's own facets),
  *              z metric (2) (a normal only)
+ *   image_map: params[0].x the image (dev_image), y map_type (0 planar,
+ *              1 spherical, 2 cylindrical, 5 torus), z interpolate (0 none,
+ *              2 bilinear, 4 normalized distance), w 1 for once;
+ *              params[1].x filter all, y transmit all; no map
  *   granite, leopard, ...: none */
 typedef struct {
 	float4 rows[3];
@@ -203,6 +208,17 @@ typedef struct {
 	float transmit, value;
 	int pigment, pad;
 } dev_map_entry;
+
+/* An image of an image_map, 16 bytes: its texels are texels[first ..
+ * first + width * height - 1], top row first, rgb in the scene's working
+ * gamma (POV-Ray's file gamma rules applied on the host, lower_texture.c) and
+ * w the alpha; IMAGE_PREMULTIPLIED: rgb is multiplied by alpha (OpenEXR's),
+ * and lookups unmultiply after interpolating, as POV-Ray does. However many
+ * pigments use a file, it is there once. */
+typedef struct {
+	int width, height, first, flags;
+} dev_image;
+enum { IMAGE_PREMULTIPLIED = 1 };
 
 /* The objects buffer: one int of POV-Ray's object flags per scene object (the
  * values of scene.h's OBJ_ flags), indexed by dev_prim.object. */
@@ -279,7 +295,9 @@ enum { SCENE_SHADOWS_PASS = 1 };
 	X(int, objects) \
 	X(dev_pattern, patterns) \
 	X(dev_warp, warps) \
-	X(dev_map_entry, maps)
+	X(dev_map_entry, maps) \
+	X(dev_image, images) \
+	X(float4, texels)
 
 /* The aov buffer, when asked for: three float4 a pixel, sums over its samples.
  * [0] rgb: albedo of the first surface; w: samples that hit a surface

@@ -265,7 +265,10 @@ enum kw_class {
  *   pigment: aoi, cubic, square, triangular, noise_generator, metric, form,
  *   offset, solid, control0, control1, and in warp { }: repeat, offset, flip,
  *   black_hole, strength (eval_pattern.c); in normal { }: bump_size, accuracy,
- *   slope_map (eval_material.c) */
+ *   slope_map (eval_material.c); in image_map { }: image_map itself, the file
+ *   formats (png, jpeg, tiff, exr, hdr, gif, tga, ppm, sys), map_type,
+ *   interpolate, gamma, premultiplied, all, use_color, use_colour, use_index
+ *   (eval_pattern.c) */
 #define AST_WORD_MESH_FILE "file"
 #define AST_WORD_AOI "aoi"
 #define AST_WORD_CUBIC "cubic"
@@ -291,6 +294,24 @@ enum kw_class {
 #define AST_WORD_QUADRATIC_SPLINE "quadratic_spline"
 #define AST_WORD_CUBIC_SPLINE "cubic_spline"
 #define AST_WORD_NATURAL_SPLINE "natural_spline"
+#define AST_WORD_IMAGE_MAP "image_map"
+#define AST_WORD_MAP_TYPE "map_type"
+#define AST_WORD_INTERPOLATE "interpolate"
+#define AST_WORD_GAMMA "gamma"
+#define AST_WORD_PREMULTIPLIED "premultiplied"
+#define AST_WORD_ALL "all"
+#define AST_WORD_USE_COLOR "use_color"
+#define AST_WORD_USE_COLOUR "use_colour"
+#define AST_WORD_USE_INDEX "use_index"
+#define AST_WORD_PNG "png"
+#define AST_WORD_JPEG "jpeg"
+#define AST_WORD_TIFF "tiff"
+#define AST_WORD_EXR "exr"
+#define AST_WORD_HDR "hdr"
+#define AST_WORD_GIF "gif"
+#define AST_WORD_TGA "tga"
+#define AST_WORD_PPM "ppm"
+#define AST_WORD_SYS "sys"
 
 enum ast_keyword {
 	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */

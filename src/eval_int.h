@@ -208,6 +208,11 @@ int eval_pattern_transform(struct eval *e, scene_pigment *pg, const xform *t, sr
 /* The argument of a pattern keyword: gradient's vector, spiral's arms. */
 int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *pg);
 
+/* image_map { ... }: pg (an image_map pattern) gets its image, read into the
+ * scene's images once per file and gamma, its options and a one-entry map of
+ * its average colour. -1 after an error. */
+int eval_image_map(struct eval *e, const ast_node *b, scene_pigment *pg);
+
 /* ---- #fopen, #read, #write, #fclose (eval_fileio.c) ---- */
 void eval_file_io(struct eval *e, const ast_node *d);
 void eval_files_close(struct eval *e);

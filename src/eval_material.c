@@ -402,6 +402,8 @@ struct pattern {
 static void pattern_map(struct eval *e, struct pattern *p)
 {
 	scene_pigment *pg = &p->pg;
+	if (pg->kind == PATTERN_IMAGE_MAP)
+		return;   /* a colour of its own at each point: its map is its average */
 	const scene_pigment *from = p->has_map && p->map_pigment >= 0 ? &e->s->pigments[p->map_pigment] : NULL;
 	free(pg->map);
 	pg->map = NULL;
@@ -605,6 +607,15 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 		return -1;   /* a pigment's transformations move its pattern only */
 	if (rc != 0 || is_pattern_modifier(item))
 		return rc < 0 ? -1 : 0;
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_IMAGE_MAP) == 0) {
+		start_pattern(p, item, AST_WORD_IMAGE_MAP);
+		if (eval_image_map(e, item, &p->pg))
+			return -1;
+		p->has_map = true;   /* its average, for what needs one colour */
+		for (int k = 0; k < 5; k++)
+			p->map[k] = p->pg.map[0].colour[k];
+		return 0;
+	}
 	if ((item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) ||
 	    item->kind == AST_FUNCTION || (item->kind == AST_BLOCK && item->kw == KW_OBJECT)) {
 		const char *name = item->kind == AST_FUNCTION ? "function" : item->kw == KW_OBJECT ? "object" : item->str;

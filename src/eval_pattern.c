@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "eval_int.h"
+#include "image.h"
 
 int eval_pattern_kind(const char *name)
 {
@@ -373,4 +374,234 @@ int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *p
 		return 0;
 	}
 	return arg_float(e, item, &pg->params[0][0]);
+}
+
+/* ---- image_map ---- */
+
+/* POV-Ray 3.7's file gamma when the scene gives none: PNG's own (its gAMA
+ * chunk, else sRGB); sRGB for JPEG, GIF, TGA, BMP and the rest; none for TIFF
+ * and PPM (the values are taken as they are); OpenEXR and HDR linear. */
+static void image_decode(scene_image *im, const image_data *d)
+{
+	const char *f = d->format;
+	im->decode = SCENE_DECODE_SRGB;
+	if (strcmp(f, "png") == 0 && d->encoding == IMAGE_GAMMA_POWER && d->gamma > 0) {
+		im->decode = SCENE_DECODE_POWER;
+		im->gamma = d->gamma;
+	} else if (strcmp(f, "png") == 0 && d->encoding == IMAGE_GAMMA_LINEAR) {
+		im->decode = SCENE_DECODE_LINEAR;
+	} else if (strcmp(f, "tiff") == 0 || strcmp(f, "pnm") == 0) {
+		im->decode = SCENE_DECODE_NONE;
+	} else if (strcmp(f, "openexr") == 0 || strcmp(f, "hdr") == 0 || d->encoding == IMAGE_GAMMA_LINEAR) {
+		im->decode = SCENE_DECODE_LINEAR;
+	}
+}
+
+#define IMAGE_MAX_TEXELS (1L << 26)
+
+/* The image at name (looked for as #include looks), with gamma G (0: the
+ * file's), read once per path and gamma. -1 after an error at loc. */
+static int image_load(struct eval *e, const char *name, double gamma, int premul, src_loc loc)
+{
+	scene *s = e->s;
+	char *path = eval_find_file(e, loc.file, name);
+	const char *use = path ? path : name;
+	char key[4200];
+	snprintf(key, sizeof key, "%s\t%g\t%d", use, gamma, premul);
+	for (int i = 0; i < s->n_images; i++)
+		if (strcmp(s->images[i].key, key) == 0) {
+			free(path);
+			return i;
+		}
+	image_data d;
+	char why[512];
+	if (image_read(use, IMAGE_MAX_TEXELS, &d, why, sizeof why)) {
+		eval_error(e, loc, "cannot read image '%s': %s", name, why);
+		free(path);
+		return -1;
+	}
+	free(path);
+	scene_image im = { .key = eval_xstrdup(key), .rgba = d.rgba, .width = d.width, .height = d.height,
+	                   .premultiplied = premul >= 0 ? premul != 0 : d.premultiplied != 0, .loc = loc };
+	image_decode(&im, &d);
+	if (gamma > 0) {
+		im.decode = SCENE_DECODE_POWER;
+		im.gamma = (float)gamma;
+		im.gamma_given = true;
+	}
+	double sum[4] = { 0 };
+	long n = (long)d.width * d.height;
+	for (long i = 0; i < n; i++)
+		for (int k = 0; k < 4; k++)
+			sum[k] += d.rgba[4 * i + k];
+	for (int k = 0; k < 4; k++)
+		im.average[k] = (float)(sum[k] / n);
+	return scene_add_image(s, &im);
+}
+
+/* What an image_map's item is waiting for. */
+enum { IM_ANY, IM_FILE, IM_MAP_TYPE, IM_INTERPOLATE, IM_GAMMA, IM_PREMUL, IM_FT, IM_FT_VALUE };
+
+struct image_map_read {
+	int want;                 /* IM_ */
+	int ft;                   /* KW_FILTER or KW_TRANSMIT being read */
+	bool ft_all;
+	char *file;
+	src_loc file_loc;
+	double gamma;             /* 0: the file's */
+	int premul;               /* -1: the file's */
+	scene_pigment *pg;
+};
+
+static int image_map_item(struct eval *e, const ast_node *n, struct image_map_read *r);
+
+/* filter and transmit are colour components to the parser: "0.3 transmit all"
+ * comes as one node. Its parts are read in the order they were written. */
+static int image_map_component(struct eval *e, const ast_node *n, struct image_map_read *r)
+{
+	if (n->n_kids == 2 && image_map_item(e, n->kids[0], r))
+		return -1;
+	if (r->want != IM_ANY) {
+		eval_error(e, n->loc, "expected a value before '%s'", ast_keyword_name(n->kw));
+		return -1;
+	}
+	r->want = IM_FT;
+	r->ft = n->kw;
+	return image_map_item(e, n->kids[n->n_kids - 1], r);
+}
+
+static int image_map_item(struct eval *e, const ast_node *n, struct image_map_read *r)
+{
+	if (n->kind == AST_COLOR && (n->kw == KW_FILTER || n->kw == KW_TRANSMIT))
+		return image_map_component(e, n, r);
+	const char *name = word(e, n);
+	double v;
+	switch (r->want) {
+	case IM_FILE:
+	case IM_ANY:
+		if (r->want == IM_ANY && r->file && name) {
+			static const char *const words[] = { AST_WORD_MAP_TYPE, AST_WORD_INTERPOLATE, AST_WORD_GAMMA,
+			                                     AST_WORD_PREMULTIPLIED };
+			static const int wants[] = { IM_MAP_TYPE, IM_INTERPOLATE, IM_GAMMA, IM_PREMUL };
+			for (int i = 0; i < 4; i++)
+				if (strcmp(name, words[i]) == 0) {
+					r->want = wants[i];
+					return 0;
+				}
+			if (strcmp(name, AST_WORD_USE_COLOR) == 0 || strcmp(name, AST_WORD_USE_COLOUR) == 0 ||
+			    strcmp(name, AST_WORD_USE_INDEX) == 0)
+				return 0;   /* which of colour and index: a pigment's image_map uses the colour */
+		}
+		if (r->want == IM_ANY && n->kind == AST_FLAG && n->kw == KW_ONCE && r->file) {
+			r->pg->params[0][3] = 1;
+			return 0;
+		}
+		if (!r->file && name) {
+			static const char *const formats[] = { "png", "jpeg", "tiff", "exr", "hdr", "gif", "tga", "ppm",
+			                                       "pgm", "bmp", "iff", "sys" };
+			for (size_t i = 0; i < sizeof formats / sizeof *formats; i++)
+				if (strcmp(name, formats[i]) == 0 && r->want == IM_ANY) {
+					r->want = IM_FILE;
+					return 0;
+				}
+		}
+		if (!r->file) {
+			r->want = IM_ANY;
+			r->file_loc = n->loc;
+			return eval_expect_string(e, n, &r->file);
+		}
+		return eval_not_valid(e, n, "an image_map");
+	case IM_MAP_TYPE:
+		if (eval_expect_float(e, n, &v))
+			return -1;
+		if (v != 0 && v != 1 && v != 2 && v != 5) {
+			eval_error(e, n->loc, "map_type is 0 (planar), 1 (spherical), 2 (cylindrical) or 5 (torus)");
+			return -1;
+		}
+		r->pg->params[0][1] = v;
+		break;
+	case IM_INTERPOLATE:
+		if (eval_expect_float(e, n, &v))
+			return -1;
+		if ((int)v != 2 && (int)v != 3 && (int)v != 4) {
+			eval_error(e, n->loc, "interpolate is 2 (bilinear), 3 (bicubic) or 4 (normalized distance)");
+			return -1;
+		}
+		if ((int)v == 3)
+			eval_warn_once(e, n->loc, "interpolate 3", "interpolate 3 (bicubic) is not supported yet; "
+			               "using 2 (bilinear)");
+		r->pg->params[0][2] = (int)v == 3 ? 2 : (int)v;
+		break;
+	case IM_GAMMA:
+		if (eval_expect_float(e, n, &r->gamma))
+			return -1;
+		if (r->gamma <= 0) {
+			eval_error(e, n->loc, "gamma value must be positive");
+			return -1;
+		}
+		break;
+	case IM_PREMUL:
+		if (eval_expect_float(e, n, &v))
+			return -1;
+		r->premul = (int)v != 0;
+		break;
+	case IM_FT:
+		if (name && strcmp(name, AST_WORD_ALL) == 0) {
+			r->ft_all = true;
+			r->want = IM_FT_VALUE;
+			return 0;
+		}
+		if (eval_expect_float(e, n, &v))
+			return -1;
+		eval_warn_once(e, n->loc, "image_map index", "%s of one palette index is not supported; "
+		               "it is ignored", ast_keyword_name(r->ft));
+		r->ft_all = false;
+		r->want = IM_FT_VALUE;
+		return 0;
+	case IM_FT_VALUE:
+		if (eval_expect_float(e, n, &v))
+			return -1;
+		if (r->ft_all)
+			r->pg->params[1][r->ft == KW_FILTER ? 0 : 1] = v;
+		break;
+	}
+	r->want = IM_ANY;
+	return 0;
+}
+
+/* image_map { [FORMAT] "File" [gamma G] [premultiplied B] [map_type N]
+ * [interpolate N] [once] [filter all F] [transmit all T] }: pg becomes the
+ * image's pattern, with a one-entry map of its average colour. */
+int eval_image_map(struct eval *e, const ast_node *b, scene_pigment *pg)
+{
+	struct image_map_read r = { .premul = -1, .pg = pg };
+	pg->params[0][0] = -1;
+	struct cursor c;
+	int err = 0, rc = 0;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL)
+		rc = image_map_item(e, item, &r);
+	eval_cursor_free(&c);
+	if (!rc && !err && r.want != IM_ANY) {
+		eval_error(e, b->loc, "the image_map ends before a value it needs");
+		rc = -1;
+	}
+	if (!rc && !err && !r.file) {
+		eval_error(e, b->loc, "an image_map needs a file name");
+		rc = -1;
+	}
+	int at = rc || err ? -1 : image_load(e, r.file, r.gamma, r.premul, r.file_loc);
+	free(r.file);
+	if (at < 0)
+		return -1;
+	pg->params[0][0] = at;
+	const scene_image *im = &e->s->images[at];
+	pg->map = eval_xrealloc(pg->map, sizeof *pg->map);
+	pg->map[0] = (scene_map_entry){ .colour = { im->average[0], im->average[1], im->average[2],
+	                                            (float)pg->params[1][0],
+	                                            1 - im->average[3] + (float)pg->params[1][1] },
+	                                .pigment = -1 };
+	pg->n_map = 1;
+	return 0;
 }

@@ -28,6 +28,28 @@ int image_write(const char *path, const float *rgb, int width, int height, const
 int image_write_heat(const char *path, const float *heat, int width, int height, const image_meta *meta,
                      double *mean, char *err, size_t errlen);
 
+/* An image read for a pigment's image_map: RGBA floats, top row first, as the
+ * file stores them (no colour conversion; alpha 1 where the file has none; a
+ * grey image's value in r, g and b). What the file says of its encoding:
+ * IMAGE_GAMMA_SRGB (OpenImageIO names it sRGB), IMAGE_GAMMA_POWER (a gamma
+ * gamma, PNG's gAMA), IMAGE_GAMMA_LINEAR (float formats), IMAGE_GAMMA_UNKNOWN.
+ * format: OpenImageIO's name for it ("png", "openexr"...); premultiplied: the
+ * file's alpha is associated (OpenEXR's). */
+enum { IMAGE_GAMMA_UNKNOWN, IMAGE_GAMMA_SRGB, IMAGE_GAMMA_POWER, IMAGE_GAMMA_LINEAR };
+typedef struct {
+	float *rgba;
+	int width, height;
+	int encoding;        /* IMAGE_GAMMA_ */
+	float gamma;         /* IMAGE_GAMMA_POWER's: 2.2 */
+	int premultiplied;
+	char format[32];
+} image_data;
+
+/* Reads path; refuses an image of more than max_texels pixels, saying so with
+ * the numbers. Returns 0, or -1 with OpenImageIO's reason in err. Free the
+ * pixels with free(). */
+int image_read(const char *path, long max_texels, image_data *out, char *err, size_t errlen);
+
 /* 1 when the extension of path names a format OpenImageIO can write. */
 int image_format_known(const char *path);
 

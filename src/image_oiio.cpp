@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <cstdio>
 #include <string>
@@ -89,6 +90,58 @@ extern "C" int image_write(const char *path, const float *rgb, int width, int he
                            const image_meta *meta, char *err, size_t errlen)
 {
 	return write_atomic(path, rgb, width, height, 3, true, meta, err, errlen);
+}
+
+extern "C" int image_read(const char *path, long max_texels, image_data *out, char *err, size_t errlen)
+{
+	std::string p(path);
+	*out = image_data();
+	auto in = ImageInput::open(p);
+	if (!in) {
+		std::string why = OIIO::geterror();
+		return fail(err, errlen, why.empty() ? "no image format reads it" : why);
+	}
+	const ImageSpec &spec = in->spec();
+	long texels = (long)spec.width * spec.height;
+	if (spec.width <= 0 || spec.height <= 0 || texels > max_texels) {
+		char msg[160];
+		std::snprintf(msg, sizeof msg, "it is %d x %d pixels, more than the %ld pixels an image may have",
+		              spec.width, spec.height, max_texels);
+		return fail(err, errlen, msg);
+	}
+	int nc = spec.nchannels;
+	std::vector<float> px((size_t)texels * nc);
+	if (!in->read_image(0, 0, 0, nc, TypeDesc::FLOAT, px.data())) {
+		std::string why = in->geterror();
+		return fail(err, errlen, why.empty() ? "it could not be decoded" : why);
+	}
+	float *rgba = (float *)std::malloc((size_t)texels * 4 * sizeof(float));
+	if (!rgba)
+		return fail(err, errlen, "out of memory");
+	int alpha = spec.alpha_channel >= 0 ? spec.alpha_channel : nc == 2 || nc == 4 ? nc - 1 : -1;
+	for (long i = 0; i < texels; i++) {
+		const float *s = &px[(size_t)i * nc];
+		float *d = &rgba[(size_t)i * 4];
+		bool grey = nc < 3;
+		d[0] = s[0];
+		d[1] = grey ? s[0] : s[1];
+		d[2] = grey ? s[0] : s[2];
+		d[3] = alpha >= 0 ? s[alpha] : 1.0f;
+	}
+	out->rgba = rgba;
+	out->width = spec.width;
+	out->height = spec.height;
+	std::string cs = Strutil::lower(spec.get_string_attribute("oiio:ColorSpace"));
+	float g = spec.get_float_attribute("oiio:Gamma", 0.0f);
+	bool is_float = spec.format.basetype == TypeDesc::FLOAT || spec.format.basetype == TypeDesc::HALF;
+	out->encoding = cs == "srgb" ? IMAGE_GAMMA_SRGB : g > 0 && Strutil::starts_with(cs, "gamma") ? IMAGE_GAMMA_POWER
+	              : cs == "linear" || is_float ? IMAGE_GAMMA_LINEAR : IMAGE_GAMMA_UNKNOWN;
+	out->gamma = g;
+	out->premultiplied = alpha >= 0 && !spec.get_int_attribute("oiio:UnassociatedAlpha", 0) &&
+	                     std::strcmp(in->format_name(), "openexr") == 0;
+	std::snprintf(out->format, sizeof out->format, "%s", in->format_name());
+	in->close();
+	return 0;
 }
 
 /* A round number at or above v, for the legend's scale: 1, 2, 5 times a power of ten. */

@@ -24,6 +24,7 @@ _Static_assert(offsetof(dev_light, cos_falloff) == 80, "dev_light scalars at 80"
 _Static_assert(sizeof(dev_warp) == 64, "dev_warp is 64 bytes");
 _Static_assert(sizeof(dev_pattern) == 144 && offsetof(dev_pattern, params) == 80, "dev_pattern layout");
 _Static_assert(sizeof(dev_map_entry) == 32, "dev_map_entry is 32 bytes");
+_Static_assert(sizeof(dev_image) == 16, "dev_image is 16 bytes");
 _Static_assert(sizeof(dev_emitter) == 16, "dev_emitter is 16 bytes");
 _Static_assert(sizeof(dev_params) == 176, "dev_params is 176 bytes");
 _Static_assert((int)OBJECT_NO_SHADOW == (int)OBJ_NO_SHADOW && (int)OBJECT_NO_IMAGE == (int)OBJ_NO_IMAGE &&

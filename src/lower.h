@@ -44,6 +44,10 @@ typedef struct {
 	int n_warps, cap_warps;
 	dev_map_entry *maps;
 	int n_maps, cap_maps;
+	dev_image *images;        /* the scene's images (scene.images, in its order) */
+	int n_images;
+	float4 *texels;           /* theirs, in the working gamma */
+	long n_texels;
 	int see_through;          /* some colour has filter or transmit */
 } lower_textures;
 

@@ -6,6 +6,7 @@
  * mesh's textures) straight into its own space: the kernel applies one affine
  * map per pattern, however deep the pigment sits in maps. */
 #include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -55,6 +56,58 @@ static xform inverse_or_identity(const xform *t, src_loc loc)
 		return inv;
 	diag_warning(loc, "a pattern with a singular transformation (a scale of 0?) is left untransformed");
 	return scene_xform_identity();
+}
+
+static float decode(const scene_image *im, float c)
+{
+	switch (im->decode) {
+	case SCENE_DECODE_SRGB: return c <= 0.04045f ? c / 12.92f : powf((c + 0.055f) / 1.055f, 2.4f);
+	case SCENE_DECODE_POWER: return c > 0 ? powf(c, im->gamma) : c;
+	default: return c;
+	}
+}
+
+/* The scene's images into the texels buffer, in the working gamma: each file's
+ * values decoded by its gamma (POV-Ray 3.7's rules, eval_pattern.c) and
+ * encoded by film_gamma; with gamma correction off (film_gamma 0) the values
+ * stay as they are unless the image_map gave a gamma, which decodes them. */
+static void lower_images(lower_textures *lt, const scene *s)
+{
+	if (lt->images || s->n_images == 0)
+		return;
+	long total = 0;
+	for (int i = 0; i < s->n_images; i++)
+		total += (long)s->images[i].width * s->images[i].height;
+	if (total <= 0)
+		return;
+	lt->images = calloc(s->n_images, sizeof *lt->images);
+	lt->texels = malloc((size_t)total * sizeof *lt->texels);
+	if (!lt->images || !lt->texels) {
+		fprintf(stderr, "eclat: out of memory\n");
+		exit(1);
+	}
+	float g = s->film_gamma;
+	for (int i = 0; i < s->n_images; i++) {
+		const scene_image *im = &s->images[i];
+		long n = (long)im->width * im->height;
+		lt->images[i] = (dev_image){ .width = im->width, .height = im->height, .first = (int)lt->n_texels,
+		                             .flags = im->premultiplied ? IMAGE_PREMULTIPLIED : 0 };
+		bool transcode = im->decode != SCENE_DECODE_NONE && (g > 0 || im->gamma_given);
+		for (long k = 0; k < n; k++) {
+			const float *c = &im->rgba[4 * k];
+			float a = c[3], rgb[3] = { c[0], c[1], c[2] };
+			for (int j = 0; j < 3 && transcode; j++) {
+				float v = im->premultiplied && a > 0 ? rgb[j] / a : rgb[j];
+				v = decode(im, v);
+				if (g > 0 && g != 1)
+					v = v > 0 ? powf(v, 1 / g) : v;
+				rgb[j] = im->premultiplied && a > 0 ? v * a : v;
+			}
+			lt->texels[lt->n_texels + k] = (float4){ rgb[0], rgb[1], rgb[2], a };
+		}
+		lt->n_texels += n;
+	}
+	lt->n_images = s->n_images;
 }
 
 /* The pigment s->pigments[node] placed by to_world (the transformations
@@ -113,6 +166,13 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 		if (e->colour[3] != 0 || e->colour[4] != 0)
 			lt->see_through = 1;
 	}
+	if (pg->kind == PATTERN_IMAGE_MAP) {
+		/* its one map entry is its average; texture_image reads the image */
+		lower_images(lt, s);
+		const scene_image *im = &s->images[(int)pg->params[0][0]];
+		if (pg->params[0][3] != 0 || pg->params[1][0] != 0 || pg->params[1][1] != 0 || im->average[3] < 1)
+			lt->see_through = 1;   /* once's outside, filter all, transmit all, alpha */
+	}
 	lt->patterns[at] = d;
 	return at;
 }
@@ -152,5 +212,7 @@ void lower_textures_free(lower_textures *lt)
 	free(lt->patterns);
 	free(lt->warps);
 	free(lt->maps);
+	free(lt->images);
+	free(lt->texels);
 	memset(lt, 0, sizeof *lt);
 }

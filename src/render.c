@@ -21,6 +21,8 @@
 #define HOST_patterns(LR) (LR)->textures.patterns, (LR)->textures.n_patterns * sizeof(dev_pattern)
 #define HOST_warps(LR) (LR)->textures.warps, (LR)->textures.n_warps * sizeof(dev_warp)
 #define HOST_maps(LR) (LR)->textures.maps, (LR)->textures.n_maps * sizeof(dev_map_entry)
+#define HOST_images(LR) (LR)->textures.images, (LR)->textures.n_images * sizeof(dev_image)
+#define HOST_texels(LR) (LR)->textures.texels, (LR)->textures.n_texels * sizeof(float4)
 
 /* The kernels' buffers in argument order: the scene's, from shared.h's list,
  * then the parameters and the film's. */

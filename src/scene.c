@@ -133,6 +133,14 @@ int scene_add_pigment(scene *s, const scene_pigment *p)
 	return s->n_pigments++;
 }
 
+int scene_add_image(scene *s, const scene_image *im)
+{
+	if (s->n_images == s->cap_images)
+		s->images = grow(s->images, &s->cap_images, sizeof *im);
+	s->images[s->n_images] = *im;
+	return s->n_images++;
+}
+
 void scene_mesh_free(scene_mesh *m)
 {
 	free(m->v);
@@ -156,6 +164,11 @@ void scene_free(scene *s)
 		free(s->pigments[i].map);
 	free(s->pigments);
 	free(s->sky_layers);
+	for (int i = 0; i < s->n_images; i++) {
+		free(s->images[i].key);
+		free(s->images[i].rgba);
+	}
+	free(s->images);
 	memset(s, 0, sizeof *s);
 }
 
@@ -521,7 +534,7 @@ static const char *const pattern_names[] = {
 	"solid", "agate", "aoi", "boxed", "bozo", "brick", "bumps", "cells", "checker", "crackle", "cubic",
 	"cylindrical", "dents", "facets", "gradient", "granite", "hexagon", "leopard", "marble", "onion",
 	"planar", "quilted", "radial", "ripples", "spherical", "spiral1", "spiral2", "spotted", "square",
-	"triangular", "waves", "wood", "wrinkles",
+	"triangular", "waves", "wood", "wrinkles", "image_map",
 };
 _Static_assert(sizeof pattern_names / sizeof *pattern_names == PATTERN_COUNT, "a name for each pattern");
 

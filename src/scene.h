@@ -63,6 +63,23 @@ typedef struct {
 	src_loc loc;
 } scene_pigment;
 
+/* An image of an image_map, read once however many pigments use it (keyed by
+ * its resolved path and its gamma): the file's values, RGBA, top row first, and
+ * how POV-Ray 3.7 decodes them (eval_pattern.c); lowering turns them into the
+ * working gamma, which is known only at the scene's end. */
+enum { SCENE_DECODE_NONE, SCENE_DECODE_SRGB, SCENE_DECODE_POWER, SCENE_DECODE_LINEAR };
+typedef struct {
+	char *key;               /* the resolved path, a tab, the gamma written ("" when none) */
+	float *rgba;
+	int width, height;
+	int decode;              /* SCENE_DECODE_: NONE, the values are the working gamma's already */
+	float gamma;             /* SCENE_DECODE_POWER's */
+	bool gamma_given;        /* gamma written: decoded even with gamma correction off */
+	bool premultiplied;      /* rgb is multiplied by alpha */
+	float average[4];        /* rgb and alpha, as the file has them */
+	src_loc loc;
+} scene_image;
+
 /* A POV-Ray texture and interior, with POV-Ray 3.7's defaults
  * (scene_default_material). The path tracer turns these into a physically based
  * material (lower.c, documented in eclat-scene(5)); the Whitted integrator uses
@@ -187,6 +204,8 @@ typedef struct {
 	int n_meshes, cap_meshes;
 	scene_pigment *pigments;   /* the pattern pigments' pool, scene_material.pattern */
 	int n_pigments, cap_pigments;
+	scene_image *images;       /* the image_maps' images, params[0][0] of their pigments */
+	int n_images, cap_images;
 	float background[3];
 	float sky[3];         /* sky_sphere's colour (its top pigment's average); used when has_sky */
 	bool has_sky;
@@ -210,6 +229,8 @@ void scene_add_object(scene *s, const scene_object *o);
 void scene_add_light(scene *s, const scene_light *l);
 /* Takes ownership of p's map; returns its index. */
 int scene_add_pigment(scene *s, const scene_pigment *p);
+/* Takes ownership of im's key and pixels; returns its index. */
+int scene_add_image(scene *s, const scene_image *im);
 /* Takes ownership of m's arrays; returns its index. */
 int scene_add_mesh(scene *s, scene_mesh *m);
 void scene_free(scene *s);
