@@ -503,7 +503,7 @@ static int sky_sphere(struct eval *e, const ast_node *b, value *out)
 	struct cursor c;
 	int err = 0, rc = 0, pigments = 0;
 	scene *s = e->s;
-	scene_material m = e->default_mat;
+	scene_material m = e->default_mat, *layers = NULL;
 	xform sky_xf = scene_xform_identity();
 	float emission[3] = { 1, 1, 1 };
 	const ast_node *item;
@@ -514,19 +514,20 @@ static int sky_sphere(struct eval *e, const ast_node *b, value *out)
 		if (AST_IS_EXPRESSION(item->kind) && pigments == 0) {
 			if ((rc = eval_expr(e, item, &v)) == 0 && (v.kind != V_OTHER || strcmp(v.str, "sky_sphere") != 0))
 				rc = eval_not_valid(e, item, "a sky_sphere");
-			else if (rc == 0) {   /* the declared sky's layers, then this one's */
+			else if (rc == 0 && s->n_sky_layers) {   /* the declared sky's layers, then this one's */
 				pigments = s->n_sky_layers;
-				sky_xf = s->n_sky_layers ? s->sky_layers[0].tex_xf : sky_xf;
-				memcpy(emission, s->n_sky_layers ? s->sky_layers[0].emission : emission, sizeof emission);
+				layers = eval_xrealloc(NULL, pigments * sizeof *layers);
+				memcpy(layers, s->sky_layers, pigments * sizeof *layers);
+				sky_xf = layers[0].tex_xf;
+				memcpy(emission, layers[0].emission, sizeof emission);
 			}
 			eval_value_free(&v);
 		} else if (item->kind == AST_BLOCK && item->kw == KW_PIGMENT) {
 			m = e->default_mat;
 			rc = eval_material_block(e, item, &m);
 			if (rc == 0) {
-				s->sky_layers = eval_xrealloc(pigments ? s->sky_layers : NULL,
-				                              (pigments + 1) * sizeof *s->sky_layers);
-				s->sky_layers[pigments++] = m;
+				layers = eval_xrealloc(layers, (pigments + 1) * sizeof *layers);
+				layers[pigments++] = m;
 			}
 		} else if (item->kind == AST_ARG && item->kw == KW_EMISSION) {
 			double col[5];
@@ -542,8 +543,12 @@ static int sky_sphere(struct eval *e, const ast_node *b, value *out)
 		}
 	}
 	eval_cursor_free(&c);
-	if (pigments == 0)
-		free(s->sky_layers), s->sky_layers = NULL;
+	if (rc || err) {
+		free(layers);
+		return -1;
+	}
+	free(s->sky_layers);   /* the last sky_sphere evaluated holds the scene's layers */
+	s->sky_layers = layers;
 	s->n_sky_layers = pigments;
 	for (int i = 0; i < pigments; i++) {
 		s->sky_layers[i].tex_xf = sky_xf;
@@ -551,8 +556,6 @@ static int sky_sphere(struct eval *e, const ast_node *b, value *out)
 	}
 	if (pigments)
 		m = s->sky_layers[pigments - 1];
-	if (rc || err)
-		return -1;
 	*out = (value){ .kind = V_OTHER, .str = eval_xstrdup("sky_sphere"), .mat = m };
 	return 0;
 }
