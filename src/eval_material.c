@@ -639,8 +639,10 @@ static int pigment_block(struct eval *e, const ast_node *b, scene_material *m, c
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL)
 		rc = pigment_item(e, &c, item, &p, m);
 	eval_cursor_free(&c);
-	if (rc || err)
+	if (rc || err) {
+		free(p.pg.map);   /* an inherited pattern's copy of its map */
 		return -1;
+	}
 	if (p.at) {
 		double col[5];
 		pattern_result(e, &p, col, &m->pattern);
