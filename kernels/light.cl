@@ -162,7 +162,7 @@ inline float3 light_emitters(const scene_data *sc, const bsdf *m, const material
 		float3 t, b, w = axis * rsqrt(d2);
 		material_basis(w, &t, &b);
 		wi = normalize(sin_t * cos(2.0f * M_PI_F * u2) * t + sin_t * sin(2.0f * M_PI_F * u2) * b + cos_t * w);
-		float th = intersect_sphere(x, wi, prim, 0.0f, INFINITY);
+		float th = sphere_intersect(x, wi, sc->prims, prim, 0.0f, INFINITY);
 		if (th == INFINITY)
 			return (float3)(0.0f);
 		pos = x + th * wi;

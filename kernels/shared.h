@@ -50,9 +50,24 @@ typedef struct {
 #define BVH_WIDE_LEAF_MAX 31
 #define BVH_WIDE_FIRST_BITS 26
 
+/* The device's shapes, one row each: X(NAME, name) makes PRIM_NAME and calls
+ * name_intersect, name_normal and name_inside, which kernels/shape_*.cl define
+ * (kernels/shape.cl dispatches on the row; src/shape.h says how a new shape is
+ * added). The order is the numbering; the kinds after the table are not shapes
+ * a ray meets by itself. */
+#define PRIM_SHAPES(X) \
+	X(TRIANGLE, triangle) \
+	X(SPHERE, sphere) \
+	X(PLANE, plane) \
+	X(ELLIPSOID, ellipsoid) \
+	X(SMOOTH_TRIANGLE, smooth_triangle) \
+	X(BOX, box)
+#define PRIM_ENUM_ROW(NAME, name) PRIM_##NAME,
 enum {
-	PRIM_TRIANGLE = 0, PRIM_SPHERE = 1, PRIM_PLANE = 2, PRIM_ELLIPSOID = 3,
-	PRIM_SMOOTH_TRIANGLE = 4, PRIM_INSTANCE = 5,
+	PRIM_SHAPES(PRIM_ENUM_ROW)
+	PRIM_INSTANCE,   /* a placed mesh: traverse.cl walks the mesh's BVH */
+	PRIM_CSG,        /* a CSG object: kernels/csg.cl classifies its leaves' hits */
+	PRIM_DATA,       /* numbers of the record before it, never hit by itself */
 };
 
 /* A primitive, 64 bytes. The BVH is two-level: the top level holds the scene's
@@ -66,15 +81,30 @@ enum {
  * Sphere: a.xyz = centre, a.w = radius; link as for a triangle.
  * Plane: a.xyz = unit normal, a.w = distance along it; planes are unbounded, so
  *   they sit after the top level's primitives and every ray tests them all.
- * Ellipsoid (a sphere scaled unevenly) and instance: a, b, c are the rows of the
- *   affine map from world space to the unit sphere's or the mesh's space; for an
- *   instance, link is the root node of the mesh's BVH.
+ * Shapes in a space of their own (ellipsoid: the unit sphere; box: the cube
+ *   [-1, 1]^3; the others as their kernel file says) and instances: a, b, c are
+ *   the rows of the affine map from world space to that space (for an instance,
+ *   the mesh's); the ray keeps its parameter t there. For such a shape, link is
+ *   its PRIM_DATA record (its own numbers in a), or -1 when it needs none; for an
+ *   instance, the root node of the mesh's BVH.
+ * CSG: a.x, a.y (ints): its first leaf and how many; a.z, a.w (ints): its
+ *   program's first record and its length in ops (kernels/csg.cl). The leaves
+ *   and the program's records (PRIM_DATA, 16 ints each) are after every BVH's
+ *   primitives, where no BVH points.
  * material: -1 in a mesh's triangle without a texture of its own: the instance's.
  * object: the scene object's number (-1 in a mesh: the instance's). */
 typedef struct {
 	float4 a, b, c;
 	int type, material, object, link;
 } dev_prim;
+
+/* A CSG program's ops (kernels/csg.cl): each an int, the op in the top 8 bits
+ * and its operand below. CSG_LEAF k pushes whether the point is inside leaf k;
+ * CSG_NOT inverts the top; CSG_AND n, CSG_OR n (merge) and CSG_UNION n (a union,
+ * which keeps its parts' inner surfaces) combine the top n. */
+enum { CSG_LEAF = 1, CSG_NOT = 2, CSG_AND = 3, CSG_OR = 4, CSG_UNION = 5 };
+#define CSG_OP_SHIFT 24
+#define CSG_STACK 32   /* the deepest a program may nest; lowering checks it */
 
 /* A surface's material, 160 bytes, one per texture: POV-Ray's finish and
  * interior as the scene gives them (lower.c changes nothing but ambient, which

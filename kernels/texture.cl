@@ -29,7 +29,7 @@ inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float
 {
 	shading_point sp;
 	sp.x = o + hit.t * d;
-	intersect_surface s = intersect_surface_at(sc->prims, sc->normals, hit.prim, hit.inst, sp.x);
+	intersect_surface s = intersect_surface_at(sc->prims, sc->normals, hit.prim, hit.inst, hit.flip, sp.x);
 	sp.object_x = s.object_x;
 	sp.entering = dot(s.ng, d) < 0.0f;
 	/* surfaces are two-sided, as in POV-Ray: both normals turn to face the ray */

@@ -52,6 +52,7 @@ typedef struct {
 	float t;
 	int prim;      /* -1: no hit */
 	int inst;      /* the instance the primitive was found through, or -1 */
+	bool flip;     /* a CSG leaf's surface, the CSG's inside on its outside (csg.cl) */
 } traverse_hit;
 
 /* The traversal loop of one BVH from root, written once and made into a function
@@ -65,7 +66,7 @@ inline traverse_hit NAME(global const bvh_node *nodes, global const dev_prim *pr
                          float3 o, float3 d, float tmin, float tmax, bool any, uint *counts,     \
                          int kind)                                                              \
 {                                                                                               \
-	traverse_hit hit = { tmax, -1, -1 };                                                        \
+	traverse_hit hit = { tmax, -1, -1, false };                                                        \
 	traverse_ray r = traverse_setup(o, d);                                                      \
 	int stack[BVH_STACK_SIZE], sp = 0, node = root;                                             \
 	counts[COUNT_NODES + kind]++;                                                               \
@@ -147,7 +148,7 @@ inline traverse_hit NAME(global const bvh_node *nodes_, global const dev_prim *p
                          int kind)                                                              \
 {                                                                                               \
 	global const bvh_wnode *nodes = (global const bvh_wnode *)nodes_;                           \
-	traverse_hit hit = { tmax, -1, -1 };                                                        \
+	traverse_hit hit = { tmax, -1, -1, false };                                                        \
 	traverse_ray r = traverse_setup(o, d);                                                      \
 	int stack[BVH_STACK_SIZE], sp = 0, ref = root;                                              \
 	float tstack[BVH_STACK_SIZE];                                                               \
@@ -213,7 +214,7 @@ inline traverse_hit NAME(global const bvh_node *nodes_, global const dev_prim *p
 
 /* A mesh's BVH, in the mesh's space: its primitives are triangles. */
 TRAVERSE_FUNCTION(traverse_mesh, {
-	float t = intersect_prim(o, d, &prims[i], tmin, hit.t);
+	float t = shape_intersect(o, d, prims, &prims[i], tmin, hit.t);
 	if (t < hit.t) {
 		hit.t = t;
 		hit.prim = i;
@@ -232,12 +233,25 @@ TRAVERSE_FUNCTION(traverse_top, {
 			hit.t = h.t;
 			hit.prim = h.prim;
 			hit.inst = i;
+			hit.flip = false;
+		}
+	} else if (q->type == PRIM_CSG) {
+		int leaf;
+		bool flip;
+		float t = csg_intersect(o, d, prims, q, tmin, hit.t, &leaf, &flip);
+		if (t < hit.t) {
+			hit.t = t;
+			hit.prim = leaf;
+			hit.inst = -1;
+			hit.flip = flip;
 		}
 	} else {
-		float t = intersect_prim(o, d, q, tmin, hit.t);
+		float t = shape_intersect(o, d, prims, q, tmin, hit.t);
 		if (t < hit.t) {
 			hit.t = t;
 			hit.prim = i;
+			hit.inst = -1;
+			hit.flip = false;
 		}
 	}
 })
@@ -248,12 +262,13 @@ inline traverse_hit traverse_planes(global const dev_prim *prims, int n_prims, i
                                     int kind)
 {
 	for (int i = n_prims; i < n_prims + n_planes; i++) {
-		float t = intersect_plane(o, d, &prims[i], tmin, hit.t);
+		float t = plane_intersect(o, d, prims, &prims[i], tmin, hit.t);
 		counts[COUNT_PRIMS + kind]++;
 		if (t < hit.t) {
 			hit.t = t;
 			hit.prim = i;
 			hit.inst = -1;
+			hit.flip = false;
 		}
 	}
 	return hit;
@@ -264,7 +279,7 @@ inline traverse_hit traverse_closest(global const bvh_node *nodes, global const 
                                      int n_prims, int n_planes, float3 o, float3 d, float tmin,
                                      float tmax, uint *counts, int kind)
 {
-	traverse_hit hit = { tmax, -1, -1 };
+	traverse_hit hit = { tmax, -1, -1, false };
 	if (n_prims > 0)
 		hit = traverse_top(nodes, prims, 0, o, d, tmin, tmax, false, counts, kind);
 	return traverse_planes(prims, n_prims, n_planes, o, d, tmin, hit, counts, kind);
@@ -274,7 +289,7 @@ inline traverse_hit traverse_closest(global const bvh_node *nodes, global const 
 inline bool traverse_any(global const bvh_node *nodes, global const dev_prim *prims, int n_prims,
                          int n_planes, float3 o, float3 d, float tmin, float tmax, uint *counts)
 {
-	traverse_hit none = { tmax, -1, -1 };
+	traverse_hit none = { tmax, -1, -1, false };
 	if (traverse_planes(prims, n_prims, n_planes, o, d, tmin, none, counts, RAY_SHADOW).prim >= 0)
 		return true;
 	return n_prims > 0 &&

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "eval_int.h"
+#include "shape.h"
 #include "mesh_io.h"
 
 /* "a sphere", "an object": for the messages. */
@@ -290,6 +291,24 @@ static bool is_material_kw(int kw)
 	       kw == KW_MATERIAL;
 }
 
+/* open and sturm, for the shapes whose class takes them (POV-Ray ignores sturm
+ * where it means nothing, and so does eclat); 1 when item is neither. */
+static int shape_flag(struct eval *e, const ast_node *item, struct objval *o)
+{
+	if (item->kind != AST_IDENT || eval_lookup(e, item->str))
+		return 1;
+	int flag = strcmp(item->str, "open") == 0 ? SHAPE_OPEN : strcmp(item->str, "sturm") == 0 ? SHAPE_STURM : 0;
+	if (!flag)
+		return 1;
+	bool taken = flag == SHAPE_STURM;
+	for (int i = 0; i < o->n_objs; i++)
+		if (shape_of(&o->objs[i])->flags & flag) {
+			o->objs[i].shape_flags |= flag;
+			taken = true;
+		}
+	return taken ? 0 : 1;
+}
+
 /* The items every object accepts after its own: transformations, textures,
  * flags; bounded_by and clipped_by are read and left out. */
 static int object_modifier(struct eval *e, struct cursor *c, const ast_node *item, struct objval *o,
@@ -308,6 +327,8 @@ static int object_modifier(struct eval *e, struct cursor *c, const ast_node *ite
 		return rc;
 	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING)
 		return 0;
+	if ((rc = shape_flag(e, item, o)) <= 0)
+		return rc;
 	if ((rc = eval_skip_pov_word(e, c, item)) <= 0)
 		return rc;
 	if (item->kind == AST_BLOCK && (item->kw == KW_BOUNDED_BY || item->kw == KW_CLIPPED_BY)) {
@@ -336,23 +357,34 @@ static int modifiers(struct eval *e, struct cursor *c, struct objval *o, const c
 
 /* ---- shapes ---- */
 
-/* The positional arguments of a shape: 'v' a vector, 'f' a float. */
-static int arguments(struct eval *e, struct cursor *c, const ast_node *b, const char *kinds, scene_object *o,
-                     double (*vecs)[3], const char *needs)
+/* The positional arguments of a shape, as its class writes them (shape.h):
+ * 'v' a corner or centre (p), 'n' a normal (n), 'f' a float (radius, then
+ * param); after '|', the rest may be left out. */
+static int arguments(struct eval *e, struct cursor *c, const ast_node *b, const shape_class *k, scene_object *o)
 {
-	int err = 0, nv = 0;
-	for (const char *k = kinds; *k; k++) {
+	int err = 0, np = 0, nn = 0, nf = 0;
+	bool optional = false;
+	for (const char *a = k->args; *a; a++) {
+		if (*a == '|') {
+			optional = true;
+			continue;
+		}
 		const ast_node *arg = eval_next_expr(c, &err);
 		if (!arg && err)
 			return -1;
+		if (!arg && optional)
+			return 0;
 		if (!arg) {
 			const ast_node *next = eval_next(c, &err);
-			char a[40];
-			eval_error(e, next ? next->loc : b->loc, "%s needs %s",
-			           with_article(ast_keyword_name(b->kw), a, sizeof a), needs);
+			char an[40];
+			eval_error(e, next ? next->loc : b->loc, "%s needs %s", with_article(k->name, an, sizeof an), k->needs);
 			return -1;
 		}
-		int rc = *k == 'f' ? eval_expect_float(e, arg, &o->radius) : eval_expect_vector(e, arg, vecs[nv++]);
+		int rc;
+		if (*a == 'f')
+			rc = eval_expect_float(e, arg, nf == 0 ? &o->radius : &o->param[nf - 1]), nf++;
+		else
+			rc = eval_expect_vector(e, arg, *a == 'n' ? o->n[nn++] : o->p[np++]);
 		if (rc)
 			return -1;
 	}
@@ -365,37 +397,33 @@ static scene_object new_object(struct eval *e, scene_shape shape, src_loc loc)
 	                       .mesh = -1, .loc = loc };
 }
 
-/* sphere { <Center>, Radius }  box { <Corner1>, <Corner2> }  plane { <Normal>, Distance }
- * triangle { <A>, <B>, <C> }  smooth_triangle { <A>, <NA>, <B>, <NB>, <C>, <NC> }
- * each followed by [OBJECT_MODIFIERS...] */
+/* The shape's keyword: a keyword of the lexer's, or a word it does not know. */
+static const char *block_name(const ast_node *b)
+{
+	return b->kw == KW_UNKNOWN ? b->str : ast_keyword_name(b->kw);
+}
+
+/* SHAPE { ARGUMENTS [OBJECT_MODIFIERS...] }, the arguments as the shape's class
+ * says (src/shape_*.c): sphere { <Center>, Radius }, box { <Corner1>, <Corner2> }... */
 static int shape(struct eval *e, const ast_node *b, value *out)
 {
-	static const struct { int kw; scene_shape shape; const char *args, *needs; } shapes[] = {
-		{ KW_SPHERE, SHAPE_SPHERE, "vf", "a centre and a radius" },
-		{ KW_BOX, SHAPE_BOX, "vv", "two corners" },
-		{ KW_PLANE, SHAPE_PLANE, "vf", "a normal and a distance" },
-		{ KW_TRIANGLE, SHAPE_TRIANGLE, "vvv", "three corners" },
-		{ KW_SMOOTH_TRIANGLE, SHAPE_SMOOTH_TRIANGLE, "vvvvvv", "three corners, each with a normal" },
-	};
-	size_t k = 0;
-	while (shapes[k].kw != b->kw)
-		k++;
-	scene_object o = new_object(e, shapes[k].shape, b->loc);
-	double v[6][3];
+	const char *name = block_name(b);
+	scene_shape kind;
+	const shape_class *k = shape_named(name, &kind);
+	scene_object o = new_object(e, kind, b->loc);
 	struct cursor c;
 	eval_cursor_init(&c, e, b);
-	int rc = arguments(e, &c, b, shapes[k].args, &o, v, shapes[k].needs);
+	int rc = arguments(e, &c, b, k, &o);
+	const char *bad = rc == 0 && k->check ? k->check(&o) : NULL;
+	if (bad) {
+		eval_error(e, b->loc, "%s", bad);
+		rc = -1;
+	}
 	if (rc == 0) {
-		bool smooth = b->kw == KW_SMOOTH_TRIANGLE;
-		int n_vec = (int)strspn(shapes[k].args, "v");
-		for (int i = 0; i < (smooth ? 3 : n_vec); i++)
-			memcpy(o.p[i], v[smooth ? 2 * i : i], sizeof o.p[i]);
-		for (int i = 0; smooth && i < 3; i++)
-			memcpy(o.n[i], v[2 * i + 1], sizeof o.n[i]);
 		*out = (value){ .kind = V_OBJECT, .obj = eval_objval_new(b->loc) };
 		eval_objval_add(out->obj, &o);
 		char a[40];
-		rc = modifiers(e, &c, out->obj, with_article(ast_keyword_name(b->kw), a, sizeof a));
+		rc = modifiers(e, &c, out->obj, with_article(name, a, sizeof a));
 		if (rc)
 			eval_value_free(out);
 	}
@@ -660,17 +688,14 @@ static int mesh_tri_item(struct eval *e, struct cursor *c, const ast_node *item,
 static int mesh_triangle(struct eval *e, const ast_node *b, struct mesh_build *mb)
 {
 	struct mesh_tri t = { .smooth = b->kw == KW_SMOOTH_TRIANGLE };
-	scene_object o;
-	double v[6][3];
+	scene_object o = { 0 };
 	struct cursor c;
 	int err = 0;
 	eval_cursor_init(&c, e, b);
-	int rc = arguments(e, &c, b, t.smooth ? "vvvvvv" : "vvv", &o, v,
-	                   t.smooth ? "three corners, each with a normal" : "three corners");
+	int rc = arguments(e, &c, b, t.smooth ? &shape_smooth_triangle : &shape_triangle, &o);
 	for (int k = 0; rc == 0 && k < 3; k++) {
-		memcpy(t.p[k], v[t.smooth ? 2 * k : k], sizeof t.p[k]);
-		if (t.smooth)
-			memcpy(t.n[k], v[2 * k + 1], sizeof t.n[k]);
+		memcpy(t.p[k], o.p[k], sizeof t.p[k]);
+		memcpy(t.n[k], o.n[k], sizeof t.n[k]);
 	}
 	const ast_node *item;
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL)
@@ -1127,15 +1152,14 @@ bool eval_is_object_block(const ast_node *b)
 	if (b->kind != AST_BLOCK)
 		return false;
 	switch (b->kw) {
-	case KW_SPHERE: case KW_BOX: case KW_PLANE: case KW_TRIANGLE: case KW_SMOOTH_TRIANGLE:
 	case KW_MESH: case KW_MESH2: case KW_UNION: case KW_OBJECT: case KW_LIGHT_SOURCE:
 		return true;
 	case KW_UNKNOWN: {
 		const char *w = eval_pov_word(b->str);
-		return w && strcmp(w, "object") == 0;
+		return shape_named(b->str, NULL) || (w && strcmp(w, "object") == 0);
 	}
 	default:
-		return false;
+		return shape_named(ast_keyword_name(b->kw), NULL) != NULL;
 	}
 }
 
@@ -1158,8 +1182,7 @@ int eval_object(struct eval *e, const ast_node *b, value *out)
 	case KW_MESH: return mesh(e, b, out);
 	case KW_MESH2: return mesh2(e, b, out);
 	case KW_LIGHT_SOURCE: return eval_light(e, b, out);
-	case KW_UNKNOWN: return unsupported(e, b, out);
-	default: return shape(e, b, out);
+	default: return shape_named(block_name(b), NULL) ? shape(e, b, out) : unsupported(e, b, out);
 	}
 }
 

@@ -9,6 +9,7 @@
 #include <time.h>
 
 #include "lower.h"
+#include "shape.h"
 
 /* The device reads these structs byte for byte: the layouts must not drift. */
 _Static_assert(sizeof(float4) == 16, "float4 is 16 bytes");
@@ -33,9 +34,11 @@ _Static_assert((int)OBJECT_NO_SHADOW == (int)OBJ_NO_SHADOW && (int)OBJECT_NO_IMA
                "the kernels' object flags are scene.h's");
 _Static_assert(offsetof(dev_params, width) == 96, "dev_params ints at 96");
 
-/* A growing array of primitives. */
+/* A growing array of primitives, and for the top level their world boxes
+ * (box is NULL in a mesh's list, whose triangles' corners give theirs). */
 struct prim_list {
 	dev_prim *p;
+	bvh_box *box;
 	int n, cap;
 };
 
@@ -53,6 +56,10 @@ struct lowering {
 	const lower_options *opt;
 	const scene *s;
 	struct prim_list top, planes;
+	/* Records no BVH holds: PRIM_DATA, CSG leaves and programs; their indices
+	 * are relative to this list until join puts it after every BVH's. */
+	struct prim_list data;
+	struct prim_list *target;   /* where shapes go: &top, or a CSG's leaves in data */
 	dev_material *mats;
 	int n_mats, cap_mats;
 	lower_textures textures;
@@ -137,12 +144,71 @@ static void push_prim(struct prim_list *l, dev_prim p)
 	l->p[l->n++] = p;
 }
 
-static void add_prim(struct lowering *lw, dev_prim p, int material, int object)
+static bvh_box triangle_box(const dev_prim *p);
+
+/* The top level's list keeps each primitive's box beside it for the builder. */
+static void push_prim_box(struct prim_list *l, dev_prim p, const bvh_box *b)
+{
+	if (l->n == l->cap) {
+		int cap = l->cap;
+		l->p = grow(l->p, &cap, sizeof p);
+		l->box = grow(l->box, &l->cap, sizeof *l->box);
+	}
+	l->box[l->n] = b ? *b : triangle_box(&p);
+	l->p[l->n++] = p;
+}
+
+/* A double box rounded outward to floats. */
+static bvh_box float_box(const double lo[3], const double hi[3])
+{
+	bvh_box b;
+	for (int k = 0; k < 3; k++) {
+		b.min[k] = nextafterf((float)lo[k], -INFINITY);
+		b.max[k] = nextafterf((float)hi[k], INFINITY);
+	}
+	return b;
+}
+
+void lower_add_prim(struct lowering *lw, dev_prim p, int material, int object, const double lo[3],
+                    const double hi[3])
 {
 	p.material = material;
 	p.object = object;
-	p.link = -1;
-	push_prim(p.type == PRIM_PLANE ? &lw->planes : &lw->top, p);
+	if (lw->target != &lw->top) {
+		push_prim(lw->target, p);
+		return;
+	}
+	if (p.type == PRIM_PLANE) {
+		push_prim(&lw->planes, p);
+		return;
+	}
+	bvh_box b;
+	if (lo)
+		b = float_box(lo, hi);
+	push_prim_box(&lw->top, p, lo ? &b : NULL);
+}
+
+int lower_add_data(struct lowering *lw, float4 a)
+{
+	push_prim(&lw->data, (dev_prim){ .a = a, .type = PRIM_DATA, .material = -1, .object = -1, .link = -1 });
+	return lw->data.n - 1;
+}
+
+bool lower_in_csg(const struct lowering *lw)
+{
+	return lw->target != &lw->top;
+}
+
+int lower_local_rows(const xform *local_to_world, dev_prim *p)
+{
+	xform to_local;
+	if (lower_invert(local_to_world, &to_local))
+		return -1;
+	float4 *rows[3] = { &p->a, &p->b, &p->c };
+	for (int i = 0; i < 3; i++)
+		*rows[i] = (float4){ (float)to_local.m[i][0], (float)to_local.m[i][1], (float)to_local.m[i][2],
+		                     (float)to_local.m[i][3] };
+	return 0;
 }
 
 /* Three shading normals; returns the index of the first, for a smooth triangle's link. */
@@ -178,13 +244,16 @@ static void add_triangle_to(struct lowering *lw, struct prim_list *list, const d
 		p.type = PRIM_SMOOTH_TRIANGLE;
 		p.link = add_normals(lw, normals);
 	}
-	push_prim(list, p);
+	if (list == &lw->top)
+		push_prim_box(list, p, NULL);
+	else
+		push_prim(list, p);
 }
 
-static void add_triangle(struct lowering *lw, const double v[3][3], int material, int object,
-                         src_loc loc)
+void lower_add_triangle(struct lowering *lw, const double v[3][3], const double (*normals)[3], int material,
+                        int object, src_loc loc)
 {
-	add_triangle_to(lw, &lw->top, v, NULL, material, object, loc);
+	add_triangle_to(lw, lw->target, v, normals, material, object, loc);
 }
 
 static double det3(const xform *t)
@@ -211,110 +280,6 @@ int lower_invert(const xform *t, xform *inv)
 	return 0;
 }
 
-/* The uniform scale of a similarity transform, or -1 when it stretches unevenly. */
-static double uniform_scale(const xform *t)
-{
-	double len[3], dots[3];
-	for (int j = 0; j < 3; j++)
-		len[j] = sqrt(t->m[0][j] * t->m[0][j] + t->m[1][j] * t->m[1][j] + t->m[2][j] * t->m[2][j]);
-	for (int j = 0; j < 3; j++) {
-		int k = (j + 1) % 3;
-		dots[j] = t->m[0][j] * t->m[0][k] + t->m[1][j] * t->m[1][k] + t->m[2][j] * t->m[2][k];
-	}
-	for (int j = 0; j < 3; j++)
-		if (fabs(len[j] - len[0]) > 1e-9 * len[0] || fabs(dots[j]) > 1e-9 * len[0] * len[0])
-			return -1;
-	return len[0];
-}
-
-/* A sphere moved by a similarity stays a sphere; any other transform makes an
- * ellipsoid, kept as the map from world space to the unit sphere. */
-static int lower_sphere(struct lowering *lw, const scene_object *o, int mat, int id)
-{
-	if (!(o->radius > 0) || !isfinite(o->radius)) {
-		diag_warning(o->loc, "sphere of radius %g skipped", o->radius);
-		return 0;
-	}
-	double s = uniform_scale(&o->xf), c[3];
-	if (s > 0) {
-		scene_xform_point(&o->xf, o->p[0], c);
-		add_prim(lw, (dev_prim){ .a = f4(c, o->radius * s), .type = PRIM_SPHERE }, mat, id);
-		return 0;
-	}
-	double r[3] = { o->radius, o->radius, o->radius };
-	xform unit = scene_xform_scale(r), to_world, to_unit;
-	xform move = scene_xform_translate(o->p[0]);
-	unit = scene_xform_then(&unit, &move);
-	to_world = scene_xform_then(&unit, &o->xf);
-	if (lower_invert(&to_world, &to_unit)) {
-		diag_warning(o->loc, "sphere with a singular transform (a scale of 0?) skipped");
-		return 0;
-	}
-	dev_prim p = { .type = PRIM_ELLIPSOID };
-	float4 *rows[3] = { &p.a, &p.b, &p.c };
-	for (int i = 0; i < 3; i++)
-		*rows[i] = (float4){ (float)to_unit.m[i][0], (float)to_unit.m[i][1], (float)to_unit.m[i][2],
-		                     (float)to_unit.m[i][3] };
-	add_prim(lw, p, mat, id);
-	return 0;
-}
-
-/* POV-Ray's box as its twelve triangles, wound so their normals face out (the
- * dielectric needs to know which side is inside). */
-static void lower_box(struct lowering *lw, const scene_object *o, int mat, int id)
-{
-	/* corners by bits (x 1, y 2, z 4); each face in the order that makes the cross
-	 * product of its first two edges point out of the box */
-	static const int faces[6][4] = {
-		{ 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 },
-	};
-	double lo[3], hi[3], corner[8][3];
-	for (int k = 0; k < 3; k++) {
-		lo[k] = fmin(o->p[0][k], o->p[1][k]);
-		hi[k] = fmax(o->p[0][k], o->p[1][k]);
-	}
-	for (int c = 0; c < 8; c++) {
-		double p[3] = { c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2] };
-		scene_xform_point(&o->xf, p, corner[c]);
-	}
-	int flip = det3(&o->xf) < 0;   /* a mirroring transform turns the winding over */
-	for (int f = 0; f < 6; f++) {
-		const int *q = faces[f];
-		int order[2][3] = { { q[0], q[1], q[2] }, { q[0], q[2], q[3] } };
-		for (int t = 0; t < 2; t++) {
-			double v[3][3];
-			for (int k = 0; k < 3; k++)
-				memcpy(v[flip ? 2 - k : k], corner[order[t][k]], sizeof v[0]);
-			add_triangle(lw, v, mat, id, o->loc);
-		}
-	}
-}
-
-/* plane { <Normal>, Distance }: the points p with p . n = Distance, n unit length. */
-static int lower_plane(struct lowering *lw, const scene_object *o, int mat, int id)
-{
-	double n[3] = { o->p[0][0], o->p[0][1], o->p[0][2] }, len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-	xform inv;
-	if (len == 0) {
-		diag_error(o->loc, "a plane needs a normal that is not zero");
-		return -1;
-	}
-	if (lower_invert(&o->xf, &inv)) {
-		diag_warning(o->loc, "plane with a singular transform (a scale of 0?) skipped");
-		return 0;
-	}
-	double p0[3] = { n[0] / len * o->radius, n[1] / len * o->radius, n[2] / len * o->radius }, w[3], wn[3];
-	scene_xform_point(&o->xf, p0, w);
-	for (int i = 0; i < 3; i++)   /* normals map by the transposed inverse */
-		wn[i] = inv.m[0][i] * n[0] + inv.m[1][i] * n[1] + inv.m[2][i] * n[2];
-	double wl = sqrt(wn[0] * wn[0] + wn[1] * wn[1] + wn[2] * wn[2]);
-	for (int i = 0; i < 3; i++)
-		wn[i] /= wl;
-	add_prim(lw, (dev_prim){ .a = f4(wn, wn[0] * w[0] + wn[1] * w[1] + wn[2] * w[2]), .type = PRIM_PLANE },
-	         mat, id);
-	return 0;
-}
-
 static double ms_since(const struct timespec *t0)
 {
 	struct timespec t1;
@@ -322,17 +287,12 @@ static double ms_since(const struct timespec *t0)
 	return (t1.tv_sec - t0->tv_sec) * 1e3 + (t1.tv_nsec - t0->tv_nsec) * 1e-6;
 }
 
-static bvh_box prim_box(const struct lowering *lw, const dev_prim *p);
-
-struct box_ctx {
-	const struct lowering *lw;
-	const dev_prim *p;
-};
-
+/* A primitive's box: the one kept beside it in the top level's list, else
+ * (a mesh's triangle) its corners'. */
 static void box_of_prim(const void *ctx, int i, bvh_box *out)
 {
-	const struct box_ctx *c = ctx;
-	*out = prim_box(c->lw, &c->p[i]);
+	const struct prim_list *l = ctx;
+	*out = l->box ? l->box[i] : triangle_box(&l->p[i]);
 }
 
 /* Puts p into the tree's leaf order, p[i] = old p[index[i]], in place by
@@ -368,13 +328,14 @@ static int build_tree(struct lowering *lw, struct prim_list *list, bvh_tree *t, 
 		if (!boxes)
 			return -1;
 		for (int i = 0; i < list->n; i++)
-			boxes[i] = prim_box(lw, &list->p[i]);
+			box_of_prim(list, i, &boxes[i]);
 		rc = bvh_build_median(boxes, list->n, lw->opt->median_depth, t);
 		free(boxes);
 	} else {
-		struct box_ctx ctx = { lw, list->p };
-		rc = bvh_build_fn(box_of_prim, &ctx, list->n, t);
+		rc = bvh_build_fn(box_of_prim, list, list->n, t);
 	}
+	free(list->box);   /* the builder was their last reader */
+	list->box = NULL;
 	if (rc)
 		return -1;
 	/* A copy in leaf order, or with no memory for one, the slower permutation
@@ -403,19 +364,16 @@ static int build_tree(struct lowering *lw, struct prim_list *list, bvh_tree *t, 
 /* Whether the kernels can intersect p in single precision: a triangle's
  * corners (a NaN corner would not show in its box), or its box and, for the
  * kinds that hold a map to their own space, the map's entries. */
-static int in_range(const struct lowering *lw, const dev_prim *p)
+static int in_range(const dev_prim *p, const bvh_box *b)
 {
 	const float *f = (const float *)&p->a;   /* a, b, c: twelve floats */
 	if (p->type == PRIM_TRIANGLE || p->type == PRIM_SMOOTH_TRIANGLE)
 		return all_in_range(f, 3) && all_in_range(f + 4, 3) && all_in_range(f + 8, 3);
-	int rows = p->type == PRIM_ELLIPSOID || p->type == PRIM_INSTANCE || p->type == PRIM_PLANE;
-	if (rows && !all_in_range(f, 12))
+	int rows = p->type != PRIM_SPHERE && p->type != PRIM_DATA && p->type != PRIM_CSG;
+	if (!all_in_range(f, rows ? 12 : 4))
 		return 0;
-	if (p->type == PRIM_PLANE)
-		return 1;
-	bvh_box b = prim_box(lw, p);
-	for (int k = 0; k < 3; k++)
-		if (!within_range(b.min[k]) || !within_range(b.max[k]))
+	for (int k = 0; b && k < 3; k++)
+		if (!within_range(b->min[k]) || !within_range(b->max[k]))
 			return 0;
 	return 1;
 }
@@ -455,7 +413,7 @@ static int lower_mesh_once(struct lowering *lw, const scene *s, int index)
 		return 1;
 	}
 	for (int i = 0; i < lm->prims.n; i++)   /* rays cross the mesh in its own space */
-		if (!in_range(lw, &lm->prims.p[i])) {
+		if (!in_range(&lm->prims.p[i], NULL)) {
 			diag_warning(m->loc, "mesh skipped: a vertex is not a number or lies past %g units, "
 			             "too far for the device's single precision", LOWER_FAR);
 			lm->done = -2;
@@ -474,75 +432,29 @@ static int lower_mesh_once(struct lowering *lw, const scene *s, int index)
 	return 0;
 }
 
+static bvh_box world_box(const dev_prim *inst, const float box[2][3]);
+
 /* A placed mesh: an instance in the top level, the world-to-mesh map in its rows;
- * link holds the mesh's index until the node arrays are joined. */
-static int lower_instance(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id)
+ * link holds the mesh's index until the node arrays are joined. Its box is the
+ * mesh's tree's, moved. */
+int lower_mesh_instance(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id)
 {
+	if (lower_in_csg(lw)) {
+		diag_error(o->loc, "a mesh in CSG is not supported yet");
+		return -1;
+	}
 	int once = lower_mesh_once(lw, s, o->mesh);
 	if (once)
 		return once < 0 ? -1 : 0;
-	xform to_mesh;
-	if (lower_invert(&o->xf, &to_mesh)) {
+	dev_prim p = { .type = PRIM_INSTANCE, .material = mat, .object = id, .link = o->mesh };
+	if (lower_local_rows(&o->xf, &p)) {
 		diag_warning(o->loc, "mesh with a singular transform (a scale of 0?) skipped");
 		return 0;
 	}
-	dev_prim p = { .type = PRIM_INSTANCE, .material = mat, .object = id, .link = o->mesh };
-	float4 *rows[3] = { &p.a, &p.b, &p.c };
-	for (int i = 0; i < 3; i++)
-		*rows[i] = (float4){ (float)to_mesh.m[i][0], (float)to_mesh.m[i][1], (float)to_mesh.m[i][2],
-		                     (float)to_mesh.m[i][3] };
-	push_prim(&lw->top, p);
+	bvh_box b = world_box(&p, lw->meshes[o->mesh].box);
+	push_prim_box(&lw->top, p, &b);
 	return 0;
 }
-
-/* Its corners and normals in world space: normals map by the transposed inverse. */
-static int lower_smooth_triangle(struct lowering *lw, const scene_object *o, int mat, int id)
-{
-	xform inv;
-	double v[3][3], n[3][3];
-	if (lower_invert(&o->xf, &inv)) {
-		diag_warning(o->loc, "smooth_triangle with a singular transform (a scale of 0?) skipped");
-		return 0;
-	}
-	for (int i = 0; i < 3; i++) {
-		scene_xform_point(&o->xf, o->p[i], v[i]);
-		for (int k = 0; k < 3; k++)
-			n[i][k] = inv.m[0][k] * o->n[i][0] + inv.m[1][k] * o->n[i][1] + inv.m[2][k] * o->n[i][2];
-	}
-	add_triangle_to(lw, &lw->top, v, (const double (*)[3])n, mat, id, o->loc);
-	return 0;
-}
-
-static int lower_shape(struct lowering *lw, const scene *s, int id)
-{
-	const scene_object *o = &s->objects[id];
-	int mat = add_material(lw, &o->material, 0);
-	double v[3][3];
-	switch (o->shape) {
-	case SHAPE_SPHERE:
-		return lower_sphere(lw, o, mat, id);
-	case SHAPE_TRIANGLE:
-		for (int i = 0; i < 3; i++)
-			scene_xform_point(&o->xf, o->p[i], v[i]);
-		add_triangle(lw, v, mat, id, o->loc);
-		return 0;
-	case SHAPE_SMOOTH_TRIANGLE:
-		return lower_smooth_triangle(lw, o, mat, id);
-	case SHAPE_BOX:
-		lower_box(lw, o, mat, id);
-		return 0;
-	case SHAPE_PLANE:
-		return lower_plane(lw, o, mat, id);
-	case SHAPE_MESH:
-		return lower_instance(lw, s, o, mat, id);
-	}
-	return 0;
-}
-
-static const char *const shape_names[] = {
-	[SHAPE_SPHERE] = "sphere", [SHAPE_TRIANGLE] = "triangle", [SHAPE_SMOOTH_TRIANGLE] = "smooth_triangle",
-	[SHAPE_BOX] = "box", [SHAPE_PLANE] = "plane", [SHAPE_MESH] = "mesh",
-};
 
 /* One scene object into primitives. One whose numbers the device's single
  * precision cannot hold (a coordinate past LOWER_FAR, which squares past
@@ -551,22 +463,22 @@ static const char *const shape_names[] = {
 static int lower_object(struct lowering *lw, const scene *s, int id)
 {
 	const scene_object *o = &s->objects[id];
+	const char *name = shape_of(o)->name;
 	if (!material_in_range(&o->material)) {
 		diag_warning(o->loc, "%s skipped: its colour passes %g, too much for the device's single "
-		             "precision", shape_names[o->shape], LOWER_FAR);
+		             "precision", name, LOWER_FAR);
 		return 0;
 	}
 	int top = lw->top.n, planes = lw->planes.n;
-	int rc = lower_shape(lw, s, id);
+	int rc = shape_of(o)->lower(lw, s, o, add_material(lw, &o->material, 0), id);
 	int ok = 1;
 	for (int i = top; ok && i < lw->top.n; i++)
-		ok = in_range(lw, &lw->top.p[i]);
+		ok = in_range(&lw->top.p[i], &lw->top.box[i]);
 	for (int i = planes; ok && i < lw->planes.n; i++)
-		ok = in_range(lw, &lw->planes.p[i]);
+		ok = in_range(&lw->planes.p[i], NULL);
 	if (!ok) {
 		diag_warning(o->loc, "%s skipped: too far from the origin, too large or too thin for the "
-		             "device's single precision (a coordinate or scale past %g)", shape_names[o->shape],
-		             LOWER_FAR);
+		             "device's single precision (a coordinate or scale past %g)", name, LOWER_FAR);
 		lw->top.n = top;
 		lw->planes.n = planes;
 	}
@@ -706,29 +618,9 @@ static bvh_box world_box(const dev_prim *inst, const float box[2][3])
 	return b;
 }
 
-static bvh_box prim_box(const struct lowering *lw, const dev_prim *p)
+static bvh_box triangle_box(const dev_prim *p)
 {
 	bvh_box b;
-	if (p->type == PRIM_SPHERE) {
-		float c[3] = { p->a.x, p->a.y, p->a.z };
-		for (int k = 0; k < 3; k++) {
-			b.min[k] = c[k] - p->a.w;
-			b.max[k] = c[k] + p->a.w;
-		}
-		return b;
-	}
-	if (p->type == PRIM_INSTANCE)   /* link is still the mesh's index here */
-		return world_box(p, lw->meshes[p->link].box);
-	if (p->type == PRIM_ELLIPSOID) {   /* the box of the image of the unit sphere */
-		xform to_world = local_to_world(p);
-		for (int k = 0; k < 3; k++) {
-			double h = sqrt(to_world.m[k][0] * to_world.m[k][0] + to_world.m[k][1] * to_world.m[k][1] +
-			                to_world.m[k][2] * to_world.m[k][2]) * (1 + 1e-5);
-			b.min[k] = (float)(to_world.m[k][3] - h);
-			b.max[k] = (float)(to_world.m[k][3] + h);
-		}
-		return b;
-	}
 	float v[3][3] = { { p->a.x, p->a.y, p->a.z },
 	                  { p->b.x, p->b.y, p->b.z },
 	                  { p->c.x, p->c.y, p->c.z } };
@@ -741,6 +633,28 @@ static bvh_box prim_box(const struct lowering *lw, const dev_prim *p)
 		b.max[k] = v[2][k] > hi ? v[2][k] : hi;
 	}
 	return b;
+}
+
+/* A record's indices into the data list made absolute: a shape's link to its
+ * PRIM_DATA record, a CSG's first leaf and program. */
+static void relocate(dev_prim *p, int base)
+{
+	switch (p->type) {
+	case PRIM_TRIANGLE: case PRIM_SMOOTH_TRIANGLE: case PRIM_SPHERE: case PRIM_PLANE: case PRIM_INSTANCE:
+	case PRIM_DATA:
+		return;   /* their links are emitters, normals or roots */
+	case PRIM_CSG: {
+		int v[4];
+		memcpy(v, &p->a, sizeof v);
+		v[0] += base;
+		v[2] += base;
+		memcpy(&p->a, v, sizeof v);
+		return;
+	}
+	default:
+		if (p->link >= 0)
+			p->link += base;
+	}
 }
 
 /* The top level's BVH, then one node array and one primitive array for all:
@@ -770,7 +684,7 @@ static int join(struct lowering *lw, const scene *s, lower_result *out)
 		}
 	}
 	out->nodes = xmalloc(n_nodes * sizeof *out->nodes);
-	out->prims = xmalloc(n_prims * sizeof *out->prims);
+	out->prims = xmalloc((n_prims + lw->data.n) * sizeof *out->prims);
 	memcpy(out->nodes, top.nodes, top.n_nodes * sizeof *top.nodes);
 	if (lw->top.n)      /* an empty list's p is NULL, which memcpy must not get */
 		memcpy(out->prims, lw->top.p, lw->top.n * sizeof *lw->top.p);
@@ -790,6 +704,14 @@ static int join(struct lowering *lw, const scene *s, lower_result *out)
 	for (int i = 0; i < lw->top.n; i++)
 		if (out->prims[i].type == PRIM_INSTANCE)
 			out->prims[i].link = node_base[out->prims[i].link];
+	int data_base = n_prims;
+	if (lw->data.n)
+		memcpy(out->prims + data_base, lw->data.p, lw->data.n * sizeof *lw->data.p);
+	n_prims += lw->data.n;
+	for (int i = 0; i < lw->top.n + lw->planes.n; i++)
+		relocate(&out->prims[i], data_base);
+	for (int i = data_base; i < n_prims; i++)
+		relocate(&out->prims[i], data_base);
 	out->n_nodes = n_nodes;
 	out->n_prims = lw->top.n;
 	out->n_planes = lw->planes.n;
@@ -871,6 +793,7 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	memset(out, 0, sizeof *out);
 	static const lower_options defaults = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_DEFAULT };
 	struct lowering lw = { .opt = opt ? opt : &defaults, .s = s };
+	lw.target = &lw.top;
 	lw.meshes = calloc(s->n_meshes + 1, sizeof *lw.meshes);
 	if (!lw.meshes)
 		return -1;
@@ -923,7 +846,9 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	}
 	free(lw.meshes);
 	free(lw.top.p);
+	free(lw.top.box);
 	free(lw.planes.p);
+	free(lw.data.p);
 	return rc;
 }
 

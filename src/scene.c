@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "scene.h"
+#include "shape.h"
 
 xform scene_xform_identity(void)
 {
@@ -380,82 +381,26 @@ static void flags(FILE *out, int f)
 			fprintf(out, " %s", names[i]);
 }
 
-/* A normal's image: the inverse transpose of the transform, normalized. */
-static void xform_normal(const xform *t, const double n[3], double out[3])
+void scene_dump_num(FILE *out, double v)
 {
-	const double (*m)[4] = t->m;
-	double c[3][3];
-	for (int i = 0; i < 3; i++)
-		for (int j = 0; j < 3; j++) {
-			int a = (i + 1) % 3, b = (i + 2) % 3, p = (j + 1) % 3, q = (j + 2) % 3;
-			c[i][j] = m[a][p] * m[b][q] - m[a][q] * m[b][p];   /* cofactors: the inverse transpose times det */
-		}
-	double det = m[0][0] * c[0][0] + m[0][1] * c[0][1] + m[0][2] * c[0][2], r[3], l = 0;
-	for (int i = 0; i < 3; i++) {
-		r[i] = c[i][0] * n[0] + c[i][1] * n[1] + c[i][2] * n[2];
-		l += r[i] * r[i];
-	}
-	l = det < 0 ? -sqrt(l) : sqrt(l);
-	for (int i = 0; i < 3; i++)
-		out[i] = l > 0 ? r[i] / l : 0;
+	num(out, v);
 }
 
-static void dump_shape(FILE *out, const scene_object *o)
+void scene_dump_vec(FILE *out, const char *label, const double v[3])
 {
-	double w[3];
-	switch (o->shape) {
-	case SHAPE_BOX:
-		fputs("box", out);
-		vec(out, "", o->p[0]);
-		vec(out, "", o->p[1]);
-		break;
-	case SHAPE_PLANE:
-		fputs("plane", out);
-		vec(out, "normal", o->p[0]);
-		fnum(out, "distance", o->radius);
-		break;
-	case SHAPE_MESH:
-		fprintf(out, "mesh %d", o->mesh);
-		break;
-	default:
-		fputs("smooth_triangle", out);
-		for (int i = 0; i < 3; i++) {
-			scene_xform_point(&o->xf, o->p[i], w);
-			vec(out, "", w);
-			xform_normal(&o->xf, o->n[i], w);
-			vec(out, "normal", w);
-		}
-		return;
-	}
-	if (!identity(&o->xf))
-		matrix(out, &o->xf);
+	vec(out, label, v);
+}
+
+void scene_dump_xform(FILE *out, const xform *t)
+{
+	if (!identity(t))
+		matrix(out, t);
 }
 
 static void dump_object(FILE *out, const scene_object *o)
 {
 	fprintf(out, "%s:%d:%d: ", diag_source_name(o->loc.file), o->loc.line, o->loc.col);
-	if (o->shape == SHAPE_SPHERE) {
-		double c[3], axis[3][3];
-		scene_xform_point(&o->xf, o->p[0], c);
-		fputs("sphere", out);
-		vec(out, "centre", c);
-		fputs(" radius ", out);
-		num(out, o->radius);
-		for (int i = 0; i < 3; i++) {   /* the images of the radius along x, y, z */
-			double v[3] = { i == 0 ? o->radius : 0, i == 1 ? o->radius : 0, i == 2 ? o->radius : 0 };
-			scene_xform_vector(&o->xf, v, axis[i]);
-			vec(out, i == 0 ? "x" : i == 1 ? "y" : "z", axis[i]);
-		}
-	} else if (o->shape == SHAPE_TRIANGLE) {
-		fputs("triangle", out);
-		for (int i = 0; i < 3; i++) {
-			double w[3];
-			scene_xform_point(&o->xf, o->p[i], w);
-			vec(out, "", w);
-		}
-	} else {
-		dump_shape(out, o);
-	}
+	shape_of(o)->dump(out, o);
 	material(out, &o->material);
 	flags(out, o->flags);
 	fputc('\n', out);
@@ -664,53 +609,7 @@ void scene_dump(const scene *s, FILE *out)
 	dump_pigments(out, s);
 }
 
-static void grow_box(double lo[3], double hi[3], const double p[3])
-{
-	for (int k = 0; k < 3; k++) {
-		lo[k] = fmin(lo[k], p[k]);
-		hi[k] = fmax(hi[k], p[k]);
-	}
-}
-
 void scene_object_bounds(const scene *s, const scene_object *o, double lo[3], double hi[3])
 {
-	double w[3];
-	switch (o->shape) {
-	case SHAPE_SPHERE:   /* the box of the image of a ball: per axis, the row's length */
-		for (int k = 0; k < 3; k++) {
-			double c = o->xf.m[k][0] * o->p[0][0] + o->xf.m[k][1] * o->p[0][1] + o->xf.m[k][2] * o->p[0][2] +
-			           o->xf.m[k][3];
-			double h = o->radius * sqrt(o->xf.m[k][0] * o->xf.m[k][0] + o->xf.m[k][1] * o->xf.m[k][1] +
-			                            o->xf.m[k][2] * o->xf.m[k][2]);
-			lo[k] = fmin(lo[k], c - h);
-			hi[k] = fmax(hi[k], c + h);
-		}
-		return;
-	case SHAPE_TRIANGLE:
-	case SHAPE_SMOOTH_TRIANGLE:
-		for (int i = 0; i < 3; i++) {
-			scene_xform_point(&o->xf, o->p[i], w);
-			grow_box(lo, hi, w);
-		}
-		return;
-	case SHAPE_BOX:
-		for (int c = 0; c < 8; c++) {
-			double p[3] = { o->p[c & 1][0], o->p[(c >> 1) & 1][1], o->p[(c >> 2) & 1][2] };
-			scene_xform_point(&o->xf, p, w);
-			grow_box(lo, hi, w);
-		}
-		return;
-	case SHAPE_MESH:
-		for (int v = 0; v < s->meshes[o->mesh].n_v; v++) {
-			scene_xform_point(&o->xf, s->meshes[o->mesh].v[v], w);
-			grow_box(lo, hi, w);
-		}
-		return;
-	case SHAPE_PLANE:   /* unbounded, as POV-Ray says */
-		for (int k = 0; k < 3; k++) {
-			lo[k] = -1e10;
-			hi[k] = 1e10;
-		}
-		return;
-	}
+	shape_of(o)->bounds(s, o, lo, hi);
 }

@@ -114,14 +114,26 @@ typedef struct {
 	float fade_color[3];     /* 0 */
 } scene_material;
 
-typedef enum {
-	SHAPE_SPHERE,          /* p[0] centre, radius */
-	SHAPE_TRIANGLE,        /* p[0..2] corners */
-	SHAPE_SMOOTH_TRIANGLE, /* p[0..2] corners, n[0..2] normals */
-	SHAPE_BOX,             /* p[0], p[1] opposite corners */
-	SHAPE_PLANE,           /* p[0] normal, radius = distance along it */
-	SHAPE_MESH,            /* mesh: index into scene.meshes, shared by every copy */
-} scene_shape;
+/* The shapes of the scene language, one row each: X(NAME, name) makes
+ * SHAPE_NAME, whose class (parsing, bounds, trace(), lowering, --dump-scene)
+ * is shape_name in src/shape_name.c (src/shape.h). What each keeps in a
+ * scene_object:
+ *   sphere: p[0] centre, radius;  triangle: p[0..2] corners;
+ *   smooth_triangle: p[0..2] corners, n[0..2] normals;  box: p[0], p[1] opposite corners;
+ *   plane: p[0] normal, radius = distance along it;
+ *   mesh: mesh, an index into scene.meshes, shared by every copy. */
+#define SCENE_SHAPES(X) \
+	X(SPHERE, sphere) \
+	X(TRIANGLE, triangle) \
+	X(SMOOTH_TRIANGLE, smooth_triangle) \
+	X(BOX, box) \
+	X(PLANE, plane) \
+	X(MESH, mesh)
+#define SCENE_SHAPE_ENUM_ROW(NAME, name) SHAPE_##NAME,
+typedef enum { SCENE_SHAPES(SCENE_SHAPE_ENUM_ROW) SHAPE_KINDS } scene_shape;
+
+/* Flags of a shape (scene_object.shape_flags): POV-Ray's open and sturm. */
+enum { SHAPE_OPEN = 1, SHAPE_STURM = 2 };
 
 /* POV-Ray's object flags. */
 enum {
@@ -134,6 +146,8 @@ typedef struct {
 	double p[3][3];      /* object space, see scene_shape */
 	double n[3][3];
 	double radius;
+	double param[4];     /* a shape's other numbers, as its class says */
+	int shape_flags;     /* SHAPE_ */
 	int mesh;
 	xform xf;            /* object to world */
 	scene_material material;

@@ -1,0 +1,82 @@
+/* csg.cl: CSG objects (POV-Ray's union, merge, intersection, difference and
+ * inverse, to any depth). A CSG object is one primitive of the BVH; its leaves
+ * are the shapes it is made of, in world space, and its program (shared.h,
+ * CSG_) says how their insides combine. A ray meets the leaves' surfaces one
+ * after another; a leaf's surface point is on the CSG's surface when the
+ * program gives different answers with the point just inside the leaf and just
+ * outside it, the other leaves answering their inside tests. A union keeps its
+ * parts' inner surfaces (POV-Ray returns all of a union's hits): where the leaf
+ * is under a union, the union answers as the leaf's own part does. */
+
+#define CSG_CROSSINGS 64   /* leaf surfaces a ray may cross in one CSG object, at most */
+
+/* Whether the point x of leaf k's surface is on the CSG's surface; *flip when
+ * the CSG's inside is on the leaf's outside there. The stacks are bits, the
+ * top in bit 0: v1 with the point inside leaf k, v0 with it outside, has for
+ * the entries that hold leaf k. */
+inline bool csg_classify(global const dev_prim *prims, global const dev_prim *csg, int k, float3 x, bool *flip)
+{
+	int first = as_int(csg->a.x), n_ops = as_int(csg->a.w);
+	global const int *ops = (global const int *)&prims[as_int(csg->a.z)];
+	uint v1 = 0, v0 = 0, has = 0;
+	for (int i = 0; i < n_ops; i++) {
+		int op = ops[i] >> CSG_OP_SHIFT, arg = ops[i] & ((1 << CSG_OP_SHIFT) - 1);
+		if (op == CSG_LEAF) {
+			uint in = arg == k ? 1u : (uint)shape_inside(prims, &prims[first + arg], x);
+			v1 = v1 << 1 | in;
+			v0 = v0 << 1 | (arg == k ? 0u : in);
+			has = has << 1 | (arg == k ? 1u : 0u);
+			continue;
+		}
+		if (op == CSG_NOT) {
+			v1 ^= 1u;
+			v0 ^= 1u;
+			continue;
+		}
+		uint mask = (1u << arg) - 1u;   /* the top arg entries (arg < 32, lowering says) */
+		uint a1 = v1 & mask, a0 = v0 & mask, h = has & mask, r1, r0;
+		if (op == CSG_AND) {
+			r1 = a1 == mask;
+			r0 = a0 == mask;
+		} else if (op == CSG_UNION && h) {
+			r1 = (a1 & h) != 0u;
+			r0 = (a0 & h) != 0u;
+		} else {
+			r1 = a1 != 0u;
+			r0 = a0 != 0u;
+		}
+		v1 = (v1 >> arg) << 1 | r1;
+		v0 = (v0 >> arg) << 1 | r0;
+		has = (has >> arg) << 1 | (h != 0u);
+	}
+	*flip = (v1 & 1u) == 0u;
+	return ((v1 ^ v0) & 1u) != 0u;
+}
+
+/* The nearest point of the CSG's surface in (tmin, tmax), or tmax; *leaf is the
+ * leaf's primitive there. */
+inline float csg_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *csg,
+                           float tmin, float tmax, int *leaf, bool *flip)
+{
+	int first = as_int(csg->a.x), n = as_int(csg->a.y);
+	float t = tmin;
+	for (int c = 0; c < CSG_CROSSINGS; c++) {
+		float best = tmax;
+		int which = -1;
+		for (int k = 0; k < n; k++) {
+			float tk = shape_intersect(o, d, prims, &prims[first + k], t, best);
+			if (tk < best) {
+				best = tk;
+				which = k;
+			}
+		}
+		if (which < 0)
+			return tmax;
+		if (csg_classify(prims, csg, which, o + best * d, flip)) {
+			*leaf = first + which;
+			return best;
+		}
+		t = best;
+	}
+	return tmax;
+}

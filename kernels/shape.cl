@@ -1,0 +1,81 @@
+/* shape.cl: the dispatch over the table of shapes (PRIM_SHAPES in shared.h),
+ * and the surface at a hit, which every integrator reads through
+ * texture_point. */
+
+#define SHAPE_INTERSECT_ROW(NAME, name) \
+	case PRIM_##NAME: return name##_intersect(o, d, prims, p, tmin, tmax);
+#define SHAPE_NORMAL_ROW(NAME, name) \
+	case PRIM_##NAME: return name##_normal(prims, p, x);
+#define SHAPE_INSIDE_ROW(NAME, name) \
+	case PRIM_##NAME: return name##_inside(prims, p, x);
+
+inline float shape_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+                             float tmin, float tmax)
+{
+	switch (p->type) {
+	PRIM_SHAPES(SHAPE_INTERSECT_ROW)
+	default: return tmax;
+	}
+}
+
+inline float3 shape_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	switch (p->type) {
+	PRIM_SHAPES(SHAPE_NORMAL_ROW)
+	default: return (float3)(0.0f, 1.0f, 0.0f);
+	}
+}
+
+inline bool shape_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	switch (p->type) {
+	PRIM_SHAPES(SHAPE_INSIDE_ROW)
+	default: return false;
+	}
+}
+
+/* The surface at a hit: normals in world space (geometric, and shading, which
+ * smooth triangles interpolate), and the material and object, which a mesh's
+ * triangle may take from its instance. */
+typedef struct {
+	float3 ng, ns;
+	float3 object_x;  /* the hit in its instance's space (a mesh's), else in world space */
+	int material, object;
+	int emitter;   /* index into the emitter table, or -1 */
+} intersect_surface;
+
+/* flip: the hit is on a CSG leaf whose outside is the CSG's inside there (a
+ * subtracted shape), so the normal turns over. */
+inline intersect_surface intersect_surface_at(global const dev_prim *prims, global const float4 *normals,
+                                              int prim, int inst, bool flip, float3 x)
+{
+	global const dev_prim *p = &prims[prim];
+	intersect_surface s = { (float3)(0.0f), (float3)(0.0f), x, p->material, p->object, -1 };
+	float3 lx = x;
+	if (inst >= 0) {
+		global const dev_prim *q = &prims[inst];
+		lx = intersect_to_local(q, x);
+		if (s.material < 0)
+			s.material = q->material;
+		s.object = q->object;
+	} else if (p->type == PRIM_TRIANGLE || p->type == PRIM_SPHERE) {
+		s.emitter = p->link;
+	}
+	s.object_x = lx;
+	s.ng = shape_normal(prims, p, lx);
+	s.ns = s.ng;
+	if (p->type == PRIM_SMOOTH_TRIANGLE) {
+		float3 ns = triangle_smooth_normal(p, normals + 3 * p->link, lx);
+		if (dot(ns, ns) > 0.0f)   /* on the geometric normal's side, as the face's winding says */
+			s.ns = dot(ns, s.ng) < 0.0f ? -ns : ns;
+	}
+	if (inst >= 0) {
+		s.ng = intersect_normal_to_world(&prims[inst], s.ng);
+		s.ns = intersect_normal_to_world(&prims[inst], s.ns);
+	}
+	if (flip) {
+		s.ng = -s.ng;
+		s.ns = -s.ns;
+	}
+	return s;
+}

@@ -1,0 +1,56 @@
+/* shape_sphere.cl: spheres, and ellipsoids (spheres under a transform that is
+ * not a similarity), kept as the map from world space to the unit sphere. */
+
+/* d is unit length. The discriminant is computed from the distance between the
+ * centre and the ray's closest point, which keeps its precision for small spheres
+ * far away (Haines et al., Ray Tracing Gems, ch. 7). */
+inline float sphere_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+                              float tmin, float tmax)
+{
+	float3 oc = o - p->a.xyz;
+	float r = p->a.w;
+	float b = dot(oc, d);
+	float3 f = oc - b * d;
+	float disc = r * r - dot(f, f);
+	if (disc < 0.0f)
+		return tmax;
+	float s = sqrt(disc);
+	return intersect_pick(-b - s, -b + s, tmin, tmax);
+}
+
+inline float3 sphere_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	return normalize(x - p->a.xyz);
+}
+
+inline bool sphere_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	float3 v = x - p->a.xyz;
+	return dot(v, v) < p->a.w * p->a.w;
+}
+
+inline float ellipsoid_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+                                 float tmin, float tmax)
+{
+	float3 oo = intersect_to_local(p, o), dd = intersect_dir_to_local(p, d);
+	float a = dot(dd, dd), b = dot(oo, dd);
+	float3 f = oo - (b / a) * dd;   /* as for spheres: the closest point keeps precision */
+	float disc = a * (1.0f - dot(f, f));
+	if (disc < 0.0f)
+		return tmax;
+	float s = sqrt(disc);
+	float q = b > 0.0f ? -b - s : -b + s;   /* no cancellation (Numerical Recipes) */
+	float t0 = q / a, t1 = q != 0.0f ? (dot(oo, oo) - 1.0f) / q : t0;
+	return intersect_pick(fmin(t0, t1), fmax(t0, t1), tmin, tmax);
+}
+
+inline float3 ellipsoid_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	return intersect_normal_to_world(p, intersect_to_local(p, x));
+}
+
+inline bool ellipsoid_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	float3 q = intersect_to_local(p, x);
+	return dot(q, q) < 1.0f;
+}

@@ -1,0 +1,78 @@
+/* shape_triangle.cl: triangles and smooth triangles (whose shading normals
+ * shape.cl interpolates from the normals buffer). A triangle has no inside. */
+
+/* Watertight ray/triangle intersection (Woop, Benthin and Wald, JCGT 2013): the
+ * corners are sheared into a space where the ray runs along +z, and the edge
+ * functions are evaluated there from the corners themselves, so two triangles
+ * that share an edge compute the same edge function for it with opposite signs:
+ * a ray through the edge, or through a shared corner, hits one of them. */
+inline float triangle_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+                                float tmin, float tmax)
+{
+	float3 ad = fabs(d);
+	int kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
+	int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
+	float dz = intersect_axis(d, kz);
+	if (dz < 0.0f) {   /* keep the winding: swap x and y */
+		int k = kx; kx = ky; ky = k;
+	}
+	float sx = intersect_axis(d, kx) / dz, sy = intersect_axis(d, ky) / dz, sz = 1.0f / dz;
+	float3 a = p->a.xyz - o, b = p->b.xyz - o, c = p->c.xyz - o;
+	float az = intersect_axis(a, kz), bz = intersect_axis(b, kz), cz = intersect_axis(c, kz);
+	float ax = intersect_axis(a, kx) - sx * az, ay = intersect_axis(a, ky) - sy * az;
+	float bx = intersect_axis(b, kx) - sx * bz, by = intersect_axis(b, ky) - sy * bz;
+	float cx = intersect_axis(c, kx) - sx * cz, cy = intersect_axis(c, ky) - sy * cz;
+	float u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+	if (u == 0.0f || v == 0.0f || w == 0.0f) {   /* on an edge: decide in double where there is one */
+#ifdef cl_khr_fp64
+		u = (float)((double)cx * by - (double)cy * bx);
+		v = (float)((double)ax * cy - (double)ay * cx);
+		w = (float)((double)bx * ay - (double)by * ax);
+#endif
+	}
+	if ((u < 0.0f || v < 0.0f || w < 0.0f) && (u > 0.0f || v > 0.0f || w > 0.0f))
+		return tmax;
+	float det = u + v + w;
+	if (det == 0.0f)
+		return tmax;
+	float t = (u * sz * az + v * sz * bz + w * sz * cz) / det;
+	return t > tmin && t < tmax ? t : tmax;
+}
+
+inline float3 triangle_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	return normalize(cross(p->b.xyz - p->a.xyz, p->c.xyz - p->a.xyz));
+}
+
+inline bool triangle_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	return false;
+}
+
+inline float smooth_triangle_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+                                       float tmin, float tmax)
+{
+	return triangle_intersect(o, d, prims, p, tmin, tmax);
+}
+
+inline float3 smooth_triangle_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	return triangle_normal(prims, p, x);
+}
+
+inline bool smooth_triangle_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	return false;
+}
+
+/* Barycentric interpolation of a smooth triangle's three normals at x. */
+inline float3 triangle_smooth_normal(global const dev_prim *p, global const float4 *n, float3 x)
+{
+	float3 e1 = p->b.xyz - p->a.xyz, e2 = p->c.xyz - p->a.xyz, w = x - p->a.xyz;
+	float d00 = dot(e1, e1), d01 = dot(e1, e2), d11 = dot(e2, e2);
+	float d20 = dot(w, e1), d21 = dot(w, e2), den = d00 * d11 - d01 * d01;
+	float v = den != 0.0f ? (d11 * d20 - d01 * d21) / den : 0.0f;
+	float u = den != 0.0f ? (d00 * d21 - d01 * d20) / den : 0.0f;
+	float3 s = (1.0f - u - v) * n[0].xyz + v * n[1].xyz + u * n[2].xyz;
+	return dot(s, s) > 0.0f ? normalize(s) : (float3)(0.0f);
+}
