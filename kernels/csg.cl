@@ -16,13 +16,14 @@
  * the entries that hold leaf k. */
 inline bool csg_classify(global const dev_prim *prims, global const dev_prim *csg, int k, float3 x, bool *flip)
 {
-	int first = as_int(csg->a.x), n_ops = as_int(csg->a.w);
-	global const int *ops = (global const int *)&prims[as_int(csg->a.z)];
+	int first = as_int(csg->a.x), n = as_int(csg->a.y), n_ops = as_int(csg->a.w);
+	global const dev_prim *prog = &prims[as_int(csg->a.z)];
 	uint v1 = 0, v0 = 0, has = 0;
 	for (int i = 0; i < n_ops; i++) {
-		int op = ops[i] >> CSG_OP_SHIFT, arg = ops[i] & ((1 << CSG_OP_SHIFT) - 1);
+		int code = ((global const int *)&prog[i / CSG_OPS_PER_RECORD])[i % CSG_OPS_PER_RECORD];
+		int op = code >> CSG_OP_SHIFT, arg = code & ((1 << CSG_OP_SHIFT) - 1);
 		if (op == CSG_LEAF) {
-			uint in = arg == k ? 1u : (uint)shape_inside(prims, &prims[first + arg], x);
+			uint in = arg == k ? 1u : arg >= n ? 0u : (uint)shape_inside(prims, &prims[first + arg], x);
 			v1 = v1 << 1 | in;
 			v0 = v0 << 1 | (arg == k ? 0u : in);
 			has = has << 1 | (arg == k ? 1u : 0u);

@@ -89,8 +89,8 @@ enum {
  *   instance, the root node of the mesh's BVH.
  * CSG: a.x, a.y (ints): its first leaf and how many; a.z, a.w (ints): its
  *   program's first record and its length in ops (kernels/csg.cl). The leaves
- *   and the program's records (PRIM_DATA, 16 ints each) are after every BVH's
- *   primitives, where no BVH points.
+ *   and the program's records (PRIM_DATA, CSG_OPS_PER_RECORD ops each in a, b
+ *   and c) are after every BVH's primitives, where no BVH points.
  * material: -1 in a mesh's triangle without a texture of its own: the instance's.
  * object: the scene object's number (-1 in a mesh: the instance's). */
 typedef struct {
@@ -104,6 +104,7 @@ typedef struct {
  * which keeps its parts' inner surfaces) combine the top n. */
 enum { CSG_LEAF = 1, CSG_NOT = 2, CSG_AND = 3, CSG_OR = 4, CSG_UNION = 5 };
 #define CSG_OP_SHIFT 24
+#define CSG_OPS_PER_RECORD 12   /* a, b and c of a PRIM_DATA record */
 #define CSG_STACK 32   /* the deepest a program may nest; lowering checks it */
 
 /* A surface's material, 160 bytes, one per texture: POV-Ray's finish and

@@ -256,14 +256,27 @@ TRAVERSE_FUNCTION(traverse_top, {
 	}
 })
 
-/* The unbounded primitives (planes) after the top level's n_prims: every ray tests them. */
+/* The unbounded primitives (planes, and CSG objects with no bounds) after the
+ * top level's n_prims: every ray tests them. */
 inline traverse_hit traverse_planes(global const dev_prim *prims, int n_prims, int n_planes,
                                     float3 o, float3 d, float tmin, traverse_hit hit, uint *counts,
                                     int kind)
 {
 	for (int i = n_prims; i < n_prims + n_planes; i++) {
-		float t = plane_intersect(o, d, prims, &prims[i], tmin, hit.t);
 		counts[COUNT_PRIMS + kind]++;
+		if (prims[i].type == PRIM_CSG) {
+			int leaf;
+			bool flip;
+			float t = csg_intersect(o, d, prims, &prims[i], tmin, hit.t, &leaf, &flip);
+			if (t < hit.t) {
+				hit.t = t;
+				hit.prim = leaf;
+				hit.inst = -1;
+				hit.flip = flip;
+			}
+			continue;
+		}
+		float t = plane_intersect(o, d, prims, &prims[i], tmin, hit.t);
 		if (t < hit.t) {
 			hit.t = t;
 			hit.prim = i;

@@ -25,9 +25,20 @@ struct lightval {
 /* An object value: the shapes it is made of (a union has several) and the lights
  * in it. A union's own texture is kept apart (has_mat, mat) and given to its
  * parts without one when the union is used, as POV-Ray does. */
+/* A CSG object among an object value's shapes: its leaves objs[first ..
+ * first + n_leaves - 1], and its program (csg.h) over them. */
+struct objcsg {
+	int first, n_leaves;
+	int *ops;
+	int n_ops;
+	src_loc loc;
+};
+
 struct objval {
 	scene_object *objs;
 	int n_objs;
+	struct objcsg *csgs;     /* the CSG objects among objs; the others stand alone */
+	int n_csgs;
 	struct lightval *lights;
 	int n_lights;
 	bool compound;

@@ -7,6 +7,7 @@
 
 #include "eval_int.h"
 #include "shape.h"
+#include "csg.h"
 #include "mesh_io.h"
 
 /* "a sphere", "an object": for the messages. */
@@ -243,6 +244,53 @@ static scene_material *target(struct eval *e, struct objval *o, bool *textured)
 	return &o->mat;
 }
 
+/* ---- CSG ---- */
+
+/* Appends to p the formula of o's shapes, their leaf numbers moved up by
+ * shift: a CSG object's program, a shape standing alone as one leaf, and
+ * several of them as a union, which keeps their inner surfaces. Nothing is an
+ * empty part, inside nowhere. */
+static void csg_formula(const struct objval *o, csg_prog *p, int shift)
+{
+	int parts = 0;
+	for (int i = 0; i < o->n_objs;) {
+		const struct objcsg *g = NULL;
+		for (int k = 0; k < o->n_csgs; k++)
+			if (o->csgs[k].first == i)
+				g = &o->csgs[k];
+		if (g) {
+			csg_append(p, g->ops, g->n_ops, shift + i);
+			i += g->n_leaves;
+		} else {
+			csg_push(p, CSG_LEAF, shift + i);
+			i++;
+		}
+		if (++parts > 1)
+			csg_push(p, CSG_UNION, 2);
+	}
+	if (parts == 0)
+		csg_push(p, CSG_LEAF, CSG_NO_LEAF);
+}
+
+/* Makes all of o's shapes the leaves of one CSG object with program p. */
+static void csg_group(struct objval *o, csg_prog *p, src_loc loc)
+{
+	for (int i = 0; i < o->n_csgs; i++)
+		free(o->csgs[i].ops);
+	o->csgs = eval_xrealloc(o->csgs, sizeof *o->csgs);
+	o->csgs[0] = (struct objcsg){ .first = 0, .n_leaves = o->n_objs, .ops = p->ops, .n_ops = p->n, .loc = loc };
+	o->n_csgs = 1;
+}
+
+/* inverse: the inside and the outside swap, which only CSG sees. */
+static void csg_inverse(struct objval *o)
+{
+	csg_prog p = { 0 };
+	csg_formula(o, &p, 0);
+	csg_push(&p, CSG_NOT, 0);
+	csg_group(o, &p, o->loc);
+}
+
 /* no_shadow, no_image, no_reflection, hollow [Bool], double_illuminate [Bool] */
 static int flag_item(struct eval *e, struct cursor *c, const ast_node *item, struct objval *o)
 {
@@ -255,8 +303,10 @@ static int flag_item(struct eval *e, struct cursor *c, const ast_node *item, str
 	for (size_t i = 0; i < sizeof flags / sizeof *flags; i++)
 		if (flags[i].kw == item->kw)
 			flag = flags[i].flag;
-	if (item->kw == KW_INVERSE)
-		return 0;   /* inside out: nothing to eclat, which has no CSG */
+	if (item->kw == KW_INVERSE) {
+		csg_inverse(o);
+		return 0;
+	}
 	if (!flag)
 		return 1;
 	double on = 1;
@@ -466,6 +516,81 @@ static int union_block(struct eval *e, const ast_node *b, value *out)
 		modifiers_seen = 1;
 		rc = object_modifier(e, &c, item, out->obj, "a union");
 	}
+	eval_cursor_free(&c);
+	if (rc || err)
+		eval_value_free(out);
+	return rc || err ? -1 : 0;
+}
+
+/* merge | intersection | difference { OBJECT... [OBJECT_MODIFIERS...] }: one
+ * CSG object whose leaves are all the shapes of its parts. A difference is its
+ * first part less the others; fewer than two parts draw what POV-Ray draws,
+ * with its warning. */
+static int csg_block(struct eval *e, const ast_node *b, value *out)
+{
+	const char *name = b->str;
+	int op = strcmp(name, "merge") == 0 ? CSG_OR : CSG_AND;
+	bool difference = strcmp(name, "difference") == 0;
+	struct cursor c;
+	int err = 0, rc = 0, modifiers_seen = 0, parts = 0;
+	const ast_node *item;
+	csg_prog p = { 0 };
+	*out = (value){ .kind = V_OBJECT, .obj = eval_objval_new(b->loc) };
+	out->obj->compound = true;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		if (!eval_is_object_block(item)) {
+			if (!modifiers_seen) {   /* the parts are complete: the program is too */
+				if (parts < 2)
+					eval_warning(e, b->loc, "a %s should have at least 2 objects (POV-Ray's warning)", name);
+				if (parts == 0)
+					csg_push(&p, CSG_LEAF, CSG_NO_LEAF);
+				csg_group(out->obj, &p, b->loc);
+				p = (csg_prog){ 0 };
+			}
+			modifiers_seen = 1;
+			rc = object_modifier(e, &c, item, out->obj, name);
+			continue;
+		}
+		if (modifiers_seen) {
+			eval_error(e, item->loc, "the objects of a %s come before its modifiers", name);
+			rc = -1;
+			break;
+		}
+		value part;
+		if (eval_object(e, item, &part)) {
+			rc = -1;
+			break;
+		}
+		resolve_texture(part.obj);
+		if (part.obj->unsupported && !out->obj->unsupported) {
+			out->obj->unsupported = part.obj->unsupported;
+			out->obj->unsupported_loc = part.obj->unsupported_loc;
+		}
+		csg_formula(part.obj, &p, out->obj->n_objs);
+		if (difference && parts > 0)
+			csg_push(&p, CSG_NOT, 0);
+		if (++parts > 1)
+			csg_push(&p, op, 2);
+		struct objval *o = out->obj;
+		for (int i = 0; i < part.obj->n_objs; i++)
+			eval_objval_add(o, &part.obj->objs[i]);
+		for (int i = 0; i < part.obj->n_lights; i++) {
+			struct lightval l = part.obj->lights[i];
+			part.obj->lights[i].looks = NULL;
+			eval_objval_add_light(o, &l);
+		}
+		eval_value_free(&part);
+	}
+	if (rc == 0 && !err && !modifiers_seen) {
+		if (parts < 2)
+			eval_warning(e, b->loc, "a %s should have at least 2 objects (POV-Ray's warning)", name);
+		if (parts == 0)
+			csg_push(&p, CSG_LEAF, CSG_NO_LEAF);
+		csg_group(out->obj, &p, b->loc);
+		p = (csg_prog){ 0 };
+	}
+	free(p.ops);
 	eval_cursor_free(&c);
 	if (rc || err)
 		eval_value_free(out);
@@ -1182,7 +1307,11 @@ int eval_object(struct eval *e, const ast_node *b, value *out)
 	case KW_MESH: return mesh(e, b, out);
 	case KW_MESH2: return mesh2(e, b, out);
 	case KW_LIGHT_SOURCE: return eval_light(e, b, out);
-	default: return shape_named(block_name(b), NULL) ? shape(e, b, out) : unsupported(e, b, out);
+	default:
+		if (b->kw == KW_UNKNOWN && (strcmp(b->str, "merge") == 0 || strcmp(b->str, "intersection") == 0 ||
+		                            strcmp(b->str, "difference") == 0))
+			return csg_block(e, b, out);
+		return shape_named(block_name(b), NULL) ? shape(e, b, out) : unsupported(e, b, out);
 	}
 }
 
@@ -1203,12 +1332,24 @@ void eval_place(struct eval *e, value *v)
 		l->light.looks_like = l->n_looks ? e->s->n_objects : -1;
 		for (int k = 0; k < l->n_looks; k++) {
 			l->looks[k].flags |= OBJ_NO_SHADOW;
+			l->looks[k].csg = 0;   /* a looks_like's CSG is drawn as its shapes alone */
 			scene_add_object(e->s, &l->looks[k]);
 		}
 		scene_add_light(e->s, &l->light);
 	}
-	for (int i = 0; i < o->n_objs; i++)
+	int first = e->s->n_objects;
+	for (int i = 0; i < o->n_objs; i++) {
+		o->objs[i].csg = 0;
 		scene_add_object(e->s, &o->objs[i]);
+	}
+	for (int i = 0; i < o->n_csgs; i++) {
+		struct objcsg *g = &o->csgs[i];
+		int id = scene_add_csg(e->s, &(scene_csg){ .first = first + g->first, .n_leaves = g->n_leaves,
+		                                           .ops = g->ops, .n_ops = g->n_ops, .loc = g->loc });
+		g->ops = NULL;
+		for (int k = 0; k < g->n_leaves; k++)
+			e->s->objects[first + g->first + k].csg = id + 1;
+	}
 }
 
 /* The objects of a looks_like { OBJECT }: moved to the light, as POV-Ray does. */

@@ -13,39 +13,105 @@
 
 #include "eval_int.h"
 #include "shape.h"
+#include "csg.h"
 
 static double dot3(const double a[3], const double b[3])
 {
 	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-/* The nearest hit of the object's shapes: 1 and the world point and unit normal,
- * or 0. */
+/* The nearest hit of one shape with tmin < t < h->t: h gets t and the world normal. */
+static void trace_shape(const scene *sc, const scene_object *s, const double o[3], const double d[3], double tmin,
+                        shape_hit *h)
+{
+	xform inv = eval_xform_inverse(&s->xf);
+	double lo[3], ld[3];
+	scene_xform_point(&inv, o, lo);
+	scene_xform_vector(&inv, d, ld);
+	shape_hit l = { .t = h->t };
+	shape_of(s)->trace(sc, s, lo, ld, tmin, &l);
+	if (l.t >= h->t)
+		return;
+	h->t = l.t;
+	/* normals go to world space by the inverse's transpose */
+	for (int k = 0; k < 3; k++)
+		h->n[k] = inv.m[0][k] * l.n[0] + inv.m[1][k] * l.n[1] + inv.m[2][k] * l.n[2];
+}
+
+struct leaves {
+	const scene *sc;
+	const scene_object *leaf;   /* the CSG object's first */
+	double x[3];                /* the point in world space */
+};
+
+static bool leaf_inside(void *ctx, int k)
+{
+	const struct leaves *c = ctx;
+	if (k >= CSG_NO_LEAF)
+		return false;
+	const scene_object *s = &c->leaf[k];
+	xform inv = eval_xform_inverse(&s->xf);
+	double p[3];
+	scene_xform_point(&inv, c->x, p);
+	return shape_of(s)->inside && shape_of(s)->inside(c->sc, s, p);
+}
+
+/* A CSG object's nearest surface point, as kernels/csg.cl finds it: its
+ * leaves' hits one after another, each kept when the program says the CSG's
+ * surface is there. */
+static void trace_csg(const scene *sc, const struct objval *obj, const struct objcsg *g, const double o[3],
+                      const double d[3], shape_hit *out)
+{
+	struct leaves c = { sc, &obj->objs[g->first], { 0, 0, 0 } };
+	double t = SHAPE_TRACE_EPSILON;
+	for (int crossing = 0; crossing < 64; crossing++) {
+		shape_hit h = { .t = out->t };
+		int which = -1;
+		for (int k = 0; k < g->n_leaves; k++) {
+			double before = h.t;
+			trace_shape(sc, &c.leaf[k], o, d, t, &h);
+			which = h.t < before ? k : which;
+		}
+		if (which < 0)
+			return;
+		for (int k = 0; k < 3; k++)
+			c.x[k] = o[k] + h.t * d[k];
+		bool flip;
+		if (csg_classify(g->ops, g->n_ops, which, leaf_inside, &c, &flip)) {
+			out->t = h.t;
+			for (int k = 0; k < 3; k++)
+				out->n[k] = flip ? -h.n[k] : h.n[k];
+			return;
+		}
+		t = h.t;
+	}
+}
+
+/* The nearest hit of the object's shapes and CSG objects: 1 and the world
+ * point and unit normal, or 0. */
 static int trace_object(const scene *sc, const struct objval *obj, const double o[3], const double d[3],
                         double point[3], double normal[3])
 {
-	double best = INFINITY;
-	for (int i = 0; i < obj->n_objs; i++) {
-		const scene_object *s = &obj->objs[i];
-		xform inv = eval_xform_inverse(&s->xf);
-		double lo[3], ld[3];
-		scene_xform_point(&inv, o, lo);
-		scene_xform_vector(&inv, d, ld);
-		shape_hit h = { .t = best };
-		shape_of(s)->trace(sc, s, lo, ld, SHAPE_TRACE_EPSILON, &h);
-		if (h.t >= best)
-			continue;
-		best = h.t;
-		/* normals go to world space by the inverse's transpose */
-		for (int k = 0; k < 3; k++)
-			normal[k] = inv.m[0][k] * h.n[0] + inv.m[1][k] * h.n[1] + inv.m[2][k] * h.n[2];
+	shape_hit h = { .t = INFINITY };
+	for (int i = 0; i < obj->n_objs;) {
+		const struct objcsg *g = NULL;
+		for (int k = 0; k < obj->n_csgs; k++)
+			if (obj->csgs[k].first == i)
+				g = &obj->csgs[k];
+		if (g) {
+			trace_csg(sc, obj, g, o, d, &h);
+			i += g->n_leaves;
+		} else {
+			trace_shape(sc, &obj->objs[i], o, d, SHAPE_TRACE_EPSILON, &h);
+			i++;
+		}
 	}
-	if (best == INFINITY)
+	if (h.t == INFINITY)
 		return 0;
-	double len = sqrt(dot3(normal, normal));
+	double len = sqrt(dot3(h.n, h.n));
 	for (int k = 0; k < 3; k++) {
-		point[k] = o[k] + best * d[k];
-		normal[k] = (len > 0 ? normal[k] / len : 0) + 0.0;   /* no -0 */
+		point[k] = o[k] + h.t * d[k];
+		normal[k] = (len > 0 ? h.n[k] / len : 0) + 0.0;   /* no -0 */
 	}
 	return 1;
 }

@@ -72,6 +72,9 @@ static struct objval *objval_copy(const struct objval *o)
 {
 	struct objval *c = dup_bytes(o, sizeof *o);
 	c->objs = dup_bytes(o->objs, o->n_objs * sizeof *o->objs);
+	c->csgs = dup_bytes(o->csgs, o->n_csgs * sizeof *o->csgs);
+	for (int i = 0; i < o->n_csgs; i++)
+		c->csgs[i].ops = dup_bytes(o->csgs[i].ops, o->csgs[i].n_ops * sizeof *o->csgs[i].ops);
 	c->lights = dup_bytes(o->lights, o->n_lights * sizeof *o->lights);
 	for (int i = 0; i < o->n_lights; i++)
 		c->lights[i].looks = dup_bytes(o->lights[i].looks, o->lights[i].n_looks * sizeof *o->lights[i].looks);
@@ -131,6 +134,14 @@ void eval_objval_add_light(struct objval *o, const struct lightval *l)
 
 void eval_objval_merge(struct objval *dst, const struct objval *src)
 {
+	int shift = dst->n_objs;
+	dst->csgs = eval_xrealloc(dst->csgs, (dst->n_csgs + src->n_csgs + 1) * sizeof *dst->csgs);
+	for (int i = 0; i < src->n_csgs; i++) {
+		struct objcsg g = src->csgs[i];
+		g.first += shift;
+		g.ops = dup_bytes(g.ops, g.n_ops * sizeof *g.ops);
+		dst->csgs[dst->n_csgs++] = g;
+	}
 	for (int i = 0; i < src->n_objs; i++)
 		eval_objval_add(dst, &src->objs[i]);
 	for (int i = 0; i < src->n_lights; i++) {
@@ -151,6 +162,9 @@ void eval_objval_free(struct objval *o)
 	for (int i = 0; i < o->n_lights; i++)
 		free(o->lights[i].looks);
 	free(o->lights);
+	for (int i = 0; i < o->n_csgs; i++)
+		free(o->csgs[i].ops);
+	free(o->csgs);
 	free(o->objs);
 	free(o);
 }

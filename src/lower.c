@@ -10,6 +10,7 @@
 
 #include "lower.h"
 #include "shape.h"
+#include "csg.h"
 
 /* The device reads these structs byte for byte: the layouts must not drift. */
 _Static_assert(sizeof(float4) == 16, "float4 is 16 bytes");
@@ -485,6 +486,101 @@ static int lower_object(struct lowering *lw, const scene *s, int id)
 	return rc;
 }
 
+/* ---- CSG ---- */
+
+/* A CSG object: its leaves and program in the data list (kernels/csg.cl),
+ * one PRIM_CSG in the top level with the box of its program, or among the
+ * unbounded primitives that every ray tests when that box is not bounded (an
+ * inverse, a plane). A leaf that lowers to several primitives (a flat box's
+ * triangles) is their union; one that lowers to none is inside nowhere. */
+static int lower_csg(struct lowering *lw, const scene *s, int index)
+{
+	const scene_csg *g = &s->csgs[index];
+	struct prim_list leaves = { 0 };
+	int *first = xmalloc((g->n_leaves + 1) * sizeof *first);
+	double (*lo)[3] = xmalloc((g->n_leaves + 1) * sizeof *lo), (*hi)[3] = xmalloc((g->n_leaves + 1) * sizeof *hi);
+	int rc = 0, ok = 1;
+	lw->target = &leaves;
+	for (int k = 0; k < g->n_leaves; k++) {
+		const scene_object *o = &s->objects[g->first + k];
+		first[k] = leaves.n;
+		for (int j = 0; j < 3; j++) {
+			lo[k][j] = INFINITY;
+			hi[k][j] = -INFINITY;
+		}
+		if (!material_in_range(&o->material)) {
+			diag_warning(o->loc, "%s skipped: its colour passes %g, too much for the device's single "
+			             "precision", shape_of(o)->name, LOWER_FAR);
+			continue;
+		}
+		if (shape_of(o)->lower(lw, s, o, add_material(lw, &o->material, 0), g->first + k))
+			rc = -1;
+		shape_of(o)->bounds(s, o, lo[k], hi[k]);
+	}
+	first[g->n_leaves] = leaves.n;
+	lw->target = &lw->top;
+	for (int i = 0; ok && i < leaves.n; i++)
+		ok = in_range(&leaves.p[i], NULL);
+	if (!ok)
+		diag_warning(g->loc, "CSG object skipped: a part is too far from the origin, too large or too thin "
+		             "for the device's single precision (a coordinate or scale past %g)", LOWER_FAR);
+	csg_prog p = { 0 };
+	for (int i = 0; i < g->n_ops; i++) {
+		int op = csg_op_code(g->ops[i]), arg = csg_op_arg(g->ops[i]);
+		if (op != CSG_LEAF) {
+			csg_push(&p, op, arg);
+			continue;
+		}
+		if (arg >= g->n_leaves || first[arg] == first[arg + 1]) {
+			csg_push(&p, CSG_LEAF, CSG_NO_LEAF);
+			continue;
+		}
+		for (int j = first[arg]; j < first[arg + 1]; j++) {
+			csg_push(&p, CSG_LEAF, j);
+			if (j > first[arg])
+				csg_push(&p, CSG_UNION, 2);
+		}
+	}
+	if (rc == 0 && ok && csg_depth(p.ops, p.n) > CSG_STACK) {
+		diag_error(g->loc, "this CSG object nests deeper than the %d levels the kernels can classify",
+		           CSG_STACK);
+		rc = -1;
+	}
+	double blo[3], bhi[3];
+	csg_bounds(g->ops, g->n_ops, g->n_leaves, (const double (*)[3])lo, (const double (*)[3])hi, blo, bhi);
+	int empty = blo[0] > bhi[0] || blo[1] > bhi[1] || blo[2] > bhi[2];
+	if (rc == 0 && ok && !empty && leaves.n > 0) {
+		int leaf_first = lw->data.n;
+		for (int i = 0; i < leaves.n; i++)
+			push_prim(&lw->data, leaves.p[i]);
+		int prog_first = lw->data.n;
+		for (int i = 0; i < p.n; i += CSG_OPS_PER_RECORD) {   /* in a, b, c: the type stays PRIM_DATA */
+			dev_prim r = { .type = PRIM_DATA, .material = -1, .object = -1, .link = -1 };
+			int n = p.n - i < CSG_OPS_PER_RECORD ? p.n - i : CSG_OPS_PER_RECORD;
+			memcpy(&r, p.ops + i, n * sizeof *p.ops);
+			push_prim(&lw->data, r);
+		}
+		int head[4] = { leaf_first, leaves.n, prog_first, p.n };
+		dev_prim c = { .type = PRIM_CSG, .material = leaves.p[0].material, .object = g->first, .link = -1 };
+		memcpy(&c.a, head, sizeof head);
+		int bounded = 1;
+		for (int k = 0; k < 3; k++)
+			bounded &= blo[k] > -1e9 && bhi[k] < 1e9;
+		if (bounded) {
+			bvh_box b = float_box(blo, bhi);
+			push_prim_box(&lw->top, c, &b);
+		} else {
+			push_prim(&lw->planes, c);
+		}
+	}
+	free(p.ops);
+	free(leaves.p);
+	free(first);
+	free(lo);
+	free(hi);
+	return rc;
+}
+
 /* ---- lights ---- */
 
 /* A light whose numbers single precision cannot hold is left out, named. */
@@ -798,9 +894,15 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	if (!lw.meshes)
 		return -1;
 	int rc = 0;
-	for (int i = 0; i < s->n_objects; i++)
-		if (lower_object(&lw, s, i))
+	for (int i = 0; i < s->n_objects; i++) {
+		int g = s->objects[i].csg - 1;
+		if (g >= 0 && g < s->n_csgs && s->csgs[g].first <= i && i < s->csgs[g].first + s->csgs[g].n_leaves) {
+			if (i == s->csgs[g].first && lower_csg(&lw, s, g))
+				rc = -1;
+		} else if (lower_object(&lw, s, i)) {
 			rc = -1;
+		}
+	}
 	if (lw.n_degenerate > 1)
 		diag_warning(SRC_NOWHERE, "%d triangles with no area skipped in all", lw.n_degenerate);
 

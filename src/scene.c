@@ -154,8 +154,19 @@ void scene_mesh_free(scene_mesh *m)
 	free(m->mats);
 }
 
+int scene_add_csg(scene *s, const scene_csg *c)
+{
+	if (s->n_csgs == s->cap_csgs)
+		s->csgs = grow(s->csgs, &s->cap_csgs, sizeof *c);
+	s->csgs[s->n_csgs] = *c;
+	return s->n_csgs++;
+}
+
 void scene_free(scene *s)
 {
+	for (int i = 0; i < s->n_csgs; i++)
+		free(s->csgs[i].ops);
+	free(s->csgs);
 	for (int i = 0; i < s->n_meshes; i++)
 		scene_mesh_free(&s->meshes[i]);
 	free(s->meshes);
@@ -406,6 +417,22 @@ static void dump_object(FILE *out, const scene_object *o)
 	fputc('\n', out);
 }
 
+/* A CSG object: its leaves (the objects above) and its program, in postfix:
+ * "leaf 0", "not", "and 2", "or 2" (merge), "union 2". */
+static void dump_csg(FILE *out, int index, const scene_csg *g)
+{
+	static const char *const ops[] = { "", "leaf", "not", "and", "or", "union" };
+	fprintf(out, "%s:%d:%d: csg %d: objects %d to %d:", diag_source_name(g->loc.file), g->loc.line, g->loc.col,
+	        index, g->first, g->first + g->n_leaves - 1);
+	for (int i = 0; i < g->n_ops; i++) {
+		int op = g->ops[i] >> CSG_OP_SHIFT, arg = g->ops[i] & ((1 << CSG_OP_SHIFT) - 1);
+		fprintf(out, " %s", op >= 1 && op <= 5 ? ops[op] : "?");
+		if (op != CSG_NOT)
+			fprintf(out, arg == (1 << CSG_OP_SHIFT) - 1 ? " none" : " %d", arg);
+	}
+	fputc('\n', out);
+}
+
 /* A mesh once, in object space: its faces with their vertices (and normals,
  * uvs, texture), then its textures. */
 static void dump_mesh(FILE *out, int index, const scene_mesh *m)
@@ -606,6 +633,8 @@ void scene_dump(const scene *s, FILE *out)
 		dump_object(out, &s->objects[i]);
 	for (int i = 0; i < s->n_meshes; i++)
 		dump_mesh(out, i, &s->meshes[i]);
+	for (int i = 0; i < s->n_csgs; i++)
+		dump_csg(out, i, &s->csgs[i]);
 	dump_pigments(out, s);
 }
 

@@ -148,6 +148,7 @@ typedef struct {
 	double radius;
 	double param[4];     /* a shape's other numbers, as its class says */
 	int shape_flags;     /* SHAPE_ */
+	int csg;             /* 1 + the CSG object it is a leaf of (scene.csgs), or 0: it stands alone */
 	int mesh;
 	xform xf;            /* object to world */
 	scene_material material;
@@ -208,6 +209,17 @@ typedef struct {
 	int looks_like;              /* first object index of its looks_like shape, or -1 */
 	src_loc loc;
 } scene_light;
+/* A CSG object (union inside CSG, merge, intersection, difference, inverse):
+ * its leaves are consecutive scene objects, and its program (kernels/shared.h,
+ * CSG_; operands of CSG_LEAF are 0 .. n_leaves - 1) says how their insides
+ * combine (src/csg.c). */
+typedef struct {
+	int first, n_leaves;
+	int *ops;
+	int n_ops;
+	src_loc loc;
+} scene_csg;
+
 typedef struct {
 	scene_camera camera;
 	scene_object *objects;
@@ -216,6 +228,8 @@ typedef struct {
 	int n_lights, cap_lights;
 	scene_mesh *meshes;
 	int n_meshes, cap_meshes;
+	scene_csg *csgs;
+	int n_csgs, cap_csgs;
 	scene_pigment *pigments;   /* the pattern pigments' pool, scene_material.pattern */
 	int n_pigments, cap_pigments;
 	scene_image *images;       /* the image_maps' images, params[0][0] of their pigments */
@@ -247,6 +261,8 @@ int scene_add_pigment(scene *s, const scene_pigment *p);
 int scene_add_image(scene *s, const scene_image *im);
 /* Takes ownership of m's arrays; returns its index. */
 int scene_add_mesh(scene *s, scene_mesh *m);
+/* Takes ownership of c's ops; returns its index. */
+int scene_add_csg(scene *s, const scene_csg *c);
 void scene_free(scene *s);
 /* Frees a mesh's arrays (those of a mesh not added to a scene: scene_free frees
  * the scene's own). */

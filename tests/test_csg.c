@@ -1,0 +1,377 @@
+/* test_csg.c: CSG through the whole pipeline (the scene text parsed and
+ * evaluated, lowered, and cast through kernels/raycast.cl) against a
+ * reference written from POV-Ray's definitions, in double precision:
+ *
+ *   inside:  union and merge: inside any part; intersection: inside all;
+ *            difference: inside the first and none of the others;
+ *            inverse: the other way round;
+ *   hits:    a union's are all its parts' hits; a merge keeps a part's hit
+ *            outside every other part; an intersection keeps a part's hit
+ *            inside every other part; a difference keeps the first part's
+ *            hits outside the others, and another part's hits inside the
+ *            first and outside the rest (POV-Ray's CSG::All_Intersections).
+ *
+ * The reference is a recursion over the tree; the kernels run a flat program
+ * (kernels/csg.cl), so the two are independent. Each case is a CSG tree of
+ * spheres and boxes, each operation alone and then random trees three levels
+ * deep with inverses, and one ok/FAIL line a case: every closest hit of its
+ * rays agrees, except rays whose reference hit lies within a hair of another
+ * leaf's surface or grazes one, where single precision may go either way.
+ *
+ *   test_csg [RAYS] */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "device.h"
+#include "diag.h"
+#include "eval.h"
+#include "lower.h"
+#include "parse.h"
+
+static uint64_t rng_state = 0x853c49e6748fea9bull;
+
+static double uniform(void)   /* splitmix64 */
+{
+	uint64_t z = (rng_state += 0x9e3779b97f4a7c15ull);
+	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+	z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+	return (double)((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+static double range(double lo, double hi)
+{
+	return lo + (hi - lo) * uniform();
+}
+
+/* ---- the tree and its reference ---- */
+
+enum { SPHERE, BOX, UNION, MERGE, INTERSECTION, DIFFERENCE };
+static const char *const names[] = { "sphere", "box", "union", "merge", "intersection", "difference" };
+
+#define MAX_KIDS 3
+#define MAX_HITS 256
+
+struct node {
+	int kind;
+	bool inverse;
+	double c[3], r;           /* sphere */
+	double lo[3], hi[3];      /* box */
+	struct node *kid[MAX_KIDS];
+	int n_kids;
+};
+
+struct hits {
+	double t[MAX_HITS];
+	int n;
+};
+
+static double dot3(const double a[3], const double b[3])
+{
+	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* How far x is from the leaf's surface, roughly: for the margins. */
+static double surface_distance(const struct node *n, const double x[3])
+{
+	if (n->kind == SPHERE) {
+		double v[3] = { x[0] - n->c[0], x[1] - n->c[1], x[2] - n->c[2] };
+		return fabs(sqrt(dot3(v, v)) - n->r);
+	}
+	if (n->kind == BOX) {
+		double inside = INFINITY, out = 0;
+		for (int k = 0; k < 3; k++) {
+			double a = x[k] - n->lo[k], b = n->hi[k] - x[k];
+			inside = fmin(inside, fmin(fabs(a), fabs(b)));
+			out = fmax(out, fmax(-a, -b));
+		}
+		return out > 0 ? out : inside;
+	}
+	double d = INFINITY;
+	for (int i = 0; i < n->n_kids; i++)
+		d = fmin(d, surface_distance(n->kid[i], x));
+	return d;
+}
+
+static bool inside(const struct node *n, const double x[3])
+{
+	bool in;
+	if (n->kind == SPHERE) {
+		double v[3] = { x[0] - n->c[0], x[1] - n->c[1], x[2] - n->c[2] };
+		in = dot3(v, v) < n->r * n->r;
+	} else if (n->kind == BOX) {
+		in = true;
+		for (int k = 0; k < 3; k++)
+			in = in && x[k] > n->lo[k] && x[k] < n->hi[k];
+	} else if (n->kind == INTERSECTION || n->kind == DIFFERENCE) {
+		in = true;
+		for (int i = 0; i < n->n_kids; i++)
+			in = in && (inside(n->kid[i], x) != (n->kind == DIFFERENCE && i > 0));
+	} else {
+		in = false;
+		for (int i = 0; i < n->n_kids; i++)
+			in = in || inside(n->kid[i], x);
+	}
+	return in != n->inverse;
+}
+
+static void add(struct hits *h, double t)
+{
+	if (h->n < MAX_HITS)
+		h->t[h->n++] = t;
+}
+
+/* Every surface point of n along the ray, by POV-Ray's rules. */
+static void all_hits(const struct node *n, const double o[3], const double d[3], struct hits *out)
+{
+	if (n->kind == SPHERE) {
+		double oc[3] = { o[0] - n->c[0], o[1] - n->c[1], o[2] - n->c[2] };
+		double b = dot3(oc, d), c = dot3(oc, oc) - n->r * n->r, disc = b * b - c;
+		if (disc >= 0) {
+			add(out, -b - sqrt(disc));
+			add(out, -b + sqrt(disc));
+		}
+		return;
+	}
+	if (n->kind == BOX) {
+		double t0 = -INFINITY, t1 = INFINITY;
+		for (int k = 0; k < 3; k++) {
+			double a = (n->lo[k] - o[k]) / d[k], b = (n->hi[k] - o[k]) / d[k];
+			t0 = fmax(t0, fmin(a, b));
+			t1 = fmin(t1, fmax(a, b));
+		}
+		if (t0 <= t1) {
+			add(out, t0);
+			add(out, t1);
+		}
+		return;
+	}
+	for (int i = 0; i < n->n_kids; i++) {
+		struct hits h = { .n = 0 };
+		all_hits(n->kid[i], o, d, &h);
+		for (int j = 0; j < h.n; j++) {
+			double x[3] = { o[0] + h.t[j] * d[0], o[1] + h.t[j] * d[1], o[2] + h.t[j] * d[2] };
+			bool keep = true;
+			for (int k = 0; k < n->n_kids && keep; k++) {
+				if (k == i)
+					continue;
+				bool in = inside(n->kid[k], x);
+				if (n->kind == MERGE)
+					keep = !in;
+				else if (n->kind == INTERSECTION)
+					keep = in;
+				else if (n->kind == DIFFERENCE)
+					keep = k == 0 ? in : !in;
+			}
+			if (keep)
+				add(out, h.t[j]);
+		}
+	}
+}
+
+/* ---- making trees and their text ---- */
+
+static struct node *leaf(void)
+{
+	struct node *n = calloc(1, sizeof *n);
+	n->kind = uniform() < 0.5 ? SPHERE : BOX;
+	for (int k = 0; k < 3; k++)
+		n->c[k] = range(-0.6, 0.6);
+	n->r = range(0.4, 0.9);
+	for (int k = 0; k < 3; k++) {
+		double h = range(0.3, 0.8);
+		n->lo[k] = n->c[k] - h;
+		n->hi[k] = n->c[k] + h;
+	}
+	n->inverse = uniform() < 0.1;
+	return n;
+}
+
+static struct node *tree(int kind, int depth)
+{
+	struct node *n = calloc(1, sizeof *n);
+	n->kind = kind;
+	n->n_kids = uniform() < 0.5 ? 2 : 3;
+	for (int i = 0; i < n->n_kids; i++)
+		n->kid[i] = depth > 1 && uniform() < 0.6 ? tree(UNION + (int)(uniform() * 4), depth - 1) : leaf();
+	n->inverse = depth < 3 && uniform() < 0.15;
+	return n;
+}
+
+static void free_tree(struct node *n)
+{
+	for (int i = 0; i < n->n_kids; i++)
+		free_tree(n->kid[i]);
+	free(n);
+}
+
+static void write_node(FILE *f, const struct node *n)
+{
+	if (n->kind == SPHERE)
+		fprintf(f, "sphere { <%.17g, %.17g, %.17g>, %.17g", n->c[0], n->c[1], n->c[2], n->r);
+	else if (n->kind == BOX)
+		fprintf(f, "box { <%.17g, %.17g, %.17g>, <%.17g, %.17g, %.17g>", n->lo[0], n->lo[1], n->lo[2], n->hi[0],
+		        n->hi[1], n->hi[2]);
+	else
+		fprintf(f, "%s {\n", names[n->kind]);
+	for (int i = 0; i < n->n_kids; i++) {
+		write_node(f, n->kid[i]);
+		fputc('\n', f);
+	}
+	fprintf(f, "%s }", n->inverse ? " inverse" : "");
+}
+
+/* ---- the device ---- */
+
+static int cast(device_ctx *dev, cl_program prog, const lower_result *lr, const float *rays, int n, float *hits)
+{
+	cl_int err;
+	cl_kernel k = clCreateKernel(prog, "raycast", &err);
+	cl_mem b[4] = {
+		clCreateBuffer(dev->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lr->dev_node_bytes,
+		               (void *)lr->dev_nodes, &err),
+		clCreateBuffer(dev->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lr->n_all_prims * sizeof(dev_prim),
+		               lr->prims, &err),
+		clCreateBuffer(dev->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, (size_t)n * 8 * sizeof(float),
+		               (void *)rays, &err),
+		clCreateBuffer(dev->context, CL_MEM_WRITE_ONLY, (size_t)n * 4 * sizeof(float), NULL, &err),
+	};
+	clSetKernelArg(k, 0, sizeof(cl_mem), &b[0]);
+	clSetKernelArg(k, 1, sizeof(cl_mem), &b[1]);
+	clSetKernelArg(k, 2, sizeof(int), &lr->n_prims);
+	clSetKernelArg(k, 3, sizeof(int), &lr->n_planes);
+	clSetKernelArg(k, 4, sizeof(cl_mem), &b[2]);
+	clSetKernelArg(k, 5, sizeof(cl_mem), &b[3]);
+	size_t global = (size_t)n;
+	err = clEnqueueNDRangeKernel(dev->queue, k, 1, NULL, &global, NULL, 0, NULL, NULL);
+	if (err == CL_SUCCESS)
+		err = clEnqueueReadBuffer(dev->queue, b[3], CL_TRUE, 0, (size_t)n * 4 * sizeof(float), hits, 0, NULL, NULL);
+	for (int i = 0; i < 4; i++)
+		clReleaseMemObject(b[i]);
+	clReleaseKernel(k);
+	return err == CL_SUCCESS ? 0 : device_fail("raycast", err);
+}
+
+static int failures;
+
+/* One case: the tree as a scene, its rays on the device and in the reference. */
+static void run_case(device_ctx *dev, cl_program prog, const char *what, struct node *root, int n_rays)
+{
+	char *text = NULL;
+	size_t len = 0;
+	FILE *f = open_memstream(&text, &len);
+	fputs("#version 3.7;\n", f);
+	write_node(f, root);
+	fputc('\n', f);
+	fclose(f);
+	scene s;
+	scene_init(&s);
+	ast_node *ast = parse_text(what, text, len);
+	lower_result lr;
+	int ok = ast && eval_scene(ast, &s, NULL) == 0 && diag_error_count() == 0 && lower_scene(&s, NULL, &lr) == 0;
+	if (!ok) {
+		printf("FAIL: %s: the scene did not evaluate and lower:\n%s\n", what, text);
+		failures++;
+		free(text);
+		scene_free(&s);
+		return;
+	}
+	float *rays = malloc((size_t)n_rays * 8 * sizeof *rays), *hits = malloc((size_t)n_rays * 4 * sizeof *hits);
+	for (int i = 0; i < n_rays; i++) {   /* from a sphere of radius 4 through a point near the middle */
+		double u = range(-1, 1), phi = range(0, 2 * M_PI), s2 = sqrt(1 - u * u);
+		double o[3] = { 4 * s2 * cos(phi), 4 * s2 * sin(phi), 4 * u }, at[3], d[3];
+		for (int k = 0; k < 3; k++)
+			at[k] = range(-1.2, 1.2);
+		double l = 0;
+		for (int k = 0; k < 3; k++) {
+			d[k] = at[k] - o[k];
+			l += d[k] * d[k];
+		}
+		for (int k = 0; k < 3; k++) {
+			rays[8 * i + k] = (float)o[k];
+			rays[8 * i + 4 + k] = (float)(d[k] / sqrt(l));
+		}
+		rays[8 * i + 3] = INFINITY;
+		rays[8 * i + 7] = 0;
+	}
+	int bad = 0, skipped = 0, hit = 0;
+	if (cast(dev, prog, &lr, rays, n_rays, hits))
+		bad = n_rays;
+	for (int i = 0; i < n_rays && bad < n_rays; i++) {
+		double o[3], d[3];
+		for (int k = 0; k < 3; k++) {   /* the ray the device saw, in double */
+			o[k] = rays[8 * i + k];
+			d[k] = rays[8 * i + 4 + k];
+		}
+		struct hits h = { .n = 0 };
+		all_hits(root, o, d, &h);
+		double best = INFINITY;
+		for (int j = 0; j < h.n; j++)
+			if (h.t[j] > 1e-6 && h.t[j] < best)
+				best = h.t[j];
+		/* near another surface, or grazing: single precision may go either way */
+		bool close = false;
+		for (int j = 0; j < h.n && !close; j++) {
+			double x[3] = { o[0] + h.t[j] * d[0], o[1] + h.t[j] * d[1], o[2] + h.t[j] * d[2] };
+			close = h.t[j] > 1e-6 && h.t[j] <= best + 1e-3 && surface_distance(root, x) < 1e-9 &&
+			        fabs(h.t[j] - best) < 2e-3 && h.t[j] != best;
+		}
+		for (int j = 0; j < h.n && !close; j++)
+			for (int k = j + 1; k < h.n && !close; k++)
+				close = fabs(h.t[j] - h.t[k]) < 2e-3 && fmin(h.t[j], h.t[k]) <= best + 2e-3;
+		float t = hits[4 * i];
+		bool agree = best == INFINITY ? t == INFINITY : fabs(t - best) < 1e-3;
+		if (close) {
+			skipped++;
+			continue;
+		}
+		hit += best != INFINITY;
+		if (!agree && bad++ < 3)
+			printf("  ray %d: device t %.6g, reference %.6g\n", i, t, best);
+	}
+	printf("%s: %s: %d rays, %d hit, %d near another surface left out, %d disagree\n", bad ? "FAIL" : "ok", what,
+	       n_rays, hit, skipped, bad);
+	if (bad)
+		printf("%s\n", text);
+	failures += bad > 0;
+	free(rays);
+	free(hits);
+	free(text);
+	lower_free(&lr);
+	scene_free(&s);
+}
+
+int main(int argc, char **argv)
+{
+	int n_rays = argc > 1 ? atoi(argv[1]) : 20000;
+	device_ctx dev;
+	if (device_open(&dev, -1))
+		return 1;
+	lower_result probe = { .layout = LOWER_LAYOUT_DEFAULT };
+	cl_program prog = device_build(&dev, getenv("ECLAT_KERNEL_DIR"), lower_kernel_options(&probe));
+	if (!prog)
+		return 1;
+	for (int kind = UNION; kind <= DIFFERENCE; kind++) {   /* each operation alone */
+		struct node *t = tree(kind, 1);
+		t->inverse = false;
+		run_case(&dev, prog, names[kind], t, n_rays);
+		free_tree(t);
+	}
+	struct node *inv = tree(INTERSECTION, 1);   /* an inverse part */
+	inv->kid[1]->inverse = true;
+	run_case(&dev, prog, "intersection with an inverse part", inv, n_rays);
+	free_tree(inv);
+	for (int i = 0; i < 24; i++) {   /* three levels deep */
+		char what[64];
+		struct node *t = tree(UNION + i % 4, 3);
+		snprintf(what, sizeof what, "tree %d (%s, three deep)", i, names[UNION + i % 4]);
+		run_case(&dev, prog, what, t, n_rays / 4);
+		free_tree(t);
+	}
+	clReleaseProgram(prog);
+	device_close(&dev);
+	printf("%s\n", failures ? "FAIL" : "all CSG checks passed");
+	return failures ? 1 : 0;
+}
