@@ -59,7 +59,7 @@ inline bool csg_classify(global const dev_prim *prims, global const dev_prim *cs
 inline float csg_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *csg,
                            float tmin, float tmax, int *leaf, bool *flip)
 {
-	int first = as_int(csg->a.x), n = as_int(csg->a.y);
+	int first = as_int(csg->a.x), n = csg->link;   /* the leaves after these are clipped_by's */
 	float t = tmin;
 	for (int c = 0; c < CSG_CROSSINGS; c++) {
 		float best = tmax;

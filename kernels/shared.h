@@ -88,7 +88,9 @@ enum {
  *   its PRIM_DATA record (its own numbers in a), or -1 when it needs none; for an
  *   instance, the root node of the mesh's BVH.
  * CSG: a.x, a.y (ints): its first leaf and how many; a.z, a.w (ints): its
- *   program's first record and its length in ops (kernels/csg.cl). The leaves
+ *   program's first record and its length in ops (kernels/csg.cl); link: how
+ *   many of its leaves rays may meet (the rest are clipped_by's, which only
+ *   answer inside tests). The leaves
  *   and the program's records (PRIM_DATA, CSG_OPS_PER_RECORD ops each in a, b
  *   and c) are after every BVH's primitives, where no BVH points.
  * material: -1 in a mesh's triangle without a texture of its own: the instance's.

@@ -34,15 +34,18 @@ enum kw_class {
 	X(BOX, "box", BLOCK) \
 	X(CAMERA, "camera", BLOCK) \
 	X(CLIPPED_BY, "clipped_by", BLOCK) \
+	X(DIFFERENCE, "difference", BLOCK) \
 	X(COLOR_MAP, "color_map", BLOCK) \
 	X(COLOUR_MAP, "colour_map", BLOCK) \
 	X(FACE_INDICES, "face_indices", BLOCK) \
 	X(FINISH, "finish", BLOCK) \
 	X(GLOBAL_SETTINGS, "global_settings", BLOCK) \
 	X(INTERIOR, "interior", BLOCK) \
+	X(INTERSECTION, "intersection", BLOCK) \
 	X(LIGHT_SOURCE, "light_source", BLOCK) \
 	X(LOOKS_LIKE, "looks_like", BLOCK) \
 	X(MATERIAL, "material", BLOCK) \
+	X(MERGE, "merge", BLOCK) \
 	X(MESH, "mesh", BLOCK) \
 	X(MESH2, "mesh2", BLOCK) \
 	X(NORMAL, "normal", BLOCK) \

@@ -39,6 +39,7 @@ struct objval {
 	int n_objs;
 	struct objcsg *csgs;     /* the CSG objects among objs; the others stand alone */
 	int n_csgs;
+	struct objval *bound;    /* bounded_by's objects, for clipped_by { bounded_by }, or NULL */
 	struct lightval *lights;
 	int n_lights;
 	bool compound;

@@ -211,6 +211,8 @@ static void transform_objval(struct objval *o, const xform *t)
 		o->mat.tex_xf = scene_xform_then(&o->mat.tex_xf, t);
 	for (int i = 0; i < o->n_lights; i++)
 		transform_light(&o->lights[i], t);
+	if (o->bound)
+		transform_objval(o->bound, t);
 }
 
 /* ---- modifiers ---- */
@@ -232,10 +234,16 @@ static void resolve_texture(struct objval *o)
  * the union's, which its bare parts take. */
 static scene_material *target(struct eval *e, struct objval *o, bool *textured)
 {
-	if (!o->compound && o->n_objs == 1) {
-		*textured = o->objs[0].textured;
-		o->objs[0].textured = true;
-		return &o->objs[0].material;
+	int shape = -1, shapes = 0;   /* a shape's own (its clipped_by shapes are not seen) */
+	for (int i = 0; !o->compound && i < o->n_objs; i++)
+		if (!o->objs[i].clip) {
+			shape = i;
+			shapes++;
+		}
+	if (shapes == 1) {
+		*textured = o->objs[shape].textured;
+		o->objs[shape].textured = true;
+		return &o->objs[shape].material;
 	}
 	*textured = o->has_mat;
 	if (!o->has_mat)
@@ -245,6 +253,8 @@ static scene_material *target(struct eval *e, struct objval *o, bool *textured)
 }
 
 /* ---- CSG ---- */
+
+static int add_part(struct eval *e, const ast_node *item, struct objval *o);
 
 /* Appends to p the formula of o's shapes, their leaf numbers moved up by
  * shift: a CSG object's program, a shape standing alone as one leaf, and
@@ -359,6 +369,85 @@ static int shape_flag(struct eval *e, const ast_node *item, struct objval *o)
 	return taken ? 0 : 1;
 }
 
+/* The objects of a bounded_by or clipped_by block, as one object value; a
+ * clipped_by { bounded_by } takes the bounded_by written before it. */
+static int clip_objects(struct eval *e, const ast_node *b, const struct objval *o, value *out)
+{
+	struct cursor c;
+	int err = 0, rc = 0;
+	const ast_node *item;
+	*out = (value){ .kind = V_OBJECT, .obj = eval_objval_new(b->loc) };
+	out->obj->compound = true;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		if (b->kw == KW_CLIPPED_BY && item->kind == AST_FLAG && item->kw == KW_BOUNDED_BY) {
+			if (!o->bound) {
+				eval_error(e, item->loc, "clipped_by { bounded_by } needs a bounded_by before it");
+				rc = -1;
+			} else {
+				eval_objval_merge(out->obj, o->bound);
+			}
+		} else if (b->kw == KW_BOUNDED_BY && item->kind == AST_FLAG && item->kw == KW_CLIPPED_BY) {
+			continue;   /* bounded_by { clipped_by }: the bound is the clip, which eclat needs not */
+		} else if (eval_is_object_block(item)) {
+			rc = add_part(e, item, out->obj);
+		} else {
+			rc = eval_not_valid(e, item, ast_keyword_name(b->kw));
+		}
+	}
+	eval_cursor_free(&c);
+	if (rc || err)
+		eval_value_free(out);
+	return rc || err ? -1 : 0;
+}
+
+/* bounded_by { OBJECT... }: POV-Ray's bound is a hint for speed, which eclat's
+ * BVH does not need; it is kept for a clipped_by { bounded_by } after it. */
+static int bounded_by(struct eval *e, const ast_node *b, struct objval *o)
+{
+	value v;
+	if (clip_objects(e, b, o, &v))
+		return -1;
+	eval_objval_free(o->bound);
+	o->bound = v.obj;
+	return 0;
+}
+
+/* clipped_by { OBJECT... }: the object's surfaces are kept where they are
+ * inside every clipping object, whose own surfaces are never seen: a CSG
+ * intersection whose clipping leaves only answer inside tests. */
+static int clipped_by(struct eval *e, const ast_node *b, struct objval *o)
+{
+	value v;
+	if (clip_objects(e, b, o, &v))
+		return -1;
+	csg_prog p = { 0 };
+	csg_formula(o, &p, 0);
+	int shift = o->n_objs;
+	struct objval *c = v.obj;
+	for (int i = 0; i < c->n_objs; i++)
+		c->objs[i].clip = true;
+	for (int i = 0; i < c->n_objs;) {   /* inside every clipping object: each part of the clip */
+		const struct objcsg *g = NULL;
+		for (int k = 0; k < c->n_csgs; k++)
+			if (c->csgs[k].first == i)
+				g = &c->csgs[k];
+		if (g) {
+			csg_append(&p, g->ops, g->n_ops, shift + i);
+			i += g->n_leaves;
+		} else {
+			csg_push(&p, CSG_LEAF, shift + i);
+			i++;
+		}
+		csg_push(&p, CSG_AND, 2);
+	}
+	for (int i = 0; i < c->n_objs; i++)
+		eval_objval_add(o, &c->objs[i]);
+	csg_group(o, &p, b->loc);
+	eval_value_free(&v);
+	return 0;
+}
+
 /* The items every object accepts after its own: transformations, textures,
  * flags; bounded_by and clipped_by are read and left out. */
 static int object_modifier(struct eval *e, struct cursor *c, const ast_node *item, struct objval *o,
@@ -381,11 +470,10 @@ static int object_modifier(struct eval *e, struct cursor *c, const ast_node *ite
 		return rc;
 	if ((rc = eval_skip_pov_word(e, c, item)) <= 0)
 		return rc;
-	if (item->kind == AST_BLOCK && (item->kw == KW_BOUNDED_BY || item->kw == KW_CLIPPED_BY)) {
-		eval_warn_once(e, item->loc, ast_keyword_name(item->kw), "'%s' is not supported yet; ignored",
-		               ast_keyword_name(item->kw));
-		return 0;
-	}
+	if (item->kind == AST_BLOCK && item->kw == KW_BOUNDED_BY)
+		return bounded_by(e, item, o);
+	if (item->kind == AST_BLOCK && item->kw == KW_CLIPPED_BY)
+		return clipped_by(e, item, o);
 	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str) &&
 	    strcmp(eval_pov_word(item->str), "object") != 0) {
 		eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
@@ -528,9 +616,9 @@ static int union_block(struct eval *e, const ast_node *b, value *out)
  * with its warning. */
 static int csg_block(struct eval *e, const ast_node *b, value *out)
 {
-	const char *name = b->str;
-	int op = strcmp(name, "merge") == 0 ? CSG_OR : CSG_AND;
-	bool difference = strcmp(name, "difference") == 0;
+	const char *name = ast_keyword_name(b->kw);
+	int op = b->kw == KW_MERGE ? CSG_OR : CSG_AND;
+	bool difference = b->kw == KW_DIFFERENCE;
 	struct cursor c;
 	int err = 0, rc = 0, modifiers_seen = 0, parts = 0;
 	const ast_node *item;
@@ -1278,6 +1366,7 @@ bool eval_is_object_block(const ast_node *b)
 		return false;
 	switch (b->kw) {
 	case KW_MESH: case KW_MESH2: case KW_UNION: case KW_OBJECT: case KW_LIGHT_SOURCE:
+	case KW_MERGE: case KW_INTERSECTION: case KW_DIFFERENCE:
 		return true;
 	case KW_UNKNOWN: {
 		const char *w = eval_pov_word(b->str);
@@ -1307,10 +1396,8 @@ int eval_object(struct eval *e, const ast_node *b, value *out)
 	case KW_MESH: return mesh(e, b, out);
 	case KW_MESH2: return mesh2(e, b, out);
 	case KW_LIGHT_SOURCE: return eval_light(e, b, out);
+	case KW_MERGE: case KW_INTERSECTION: case KW_DIFFERENCE: return csg_block(e, b, out);
 	default:
-		if (b->kw == KW_UNKNOWN && (strcmp(b->str, "merge") == 0 || strcmp(b->str, "intersection") == 0 ||
-		                            strcmp(b->str, "difference") == 0))
-			return csg_block(e, b, out);
 		return shape_named(block_name(b), NULL) ? shape(e, b, out) : unsupported(e, b, out);
 	}
 }

@@ -68,6 +68,8 @@ static void trace_csg(const scene *sc, const struct objval *obj, const struct ob
 		shape_hit h = { .t = out->t };
 		int which = -1;
 		for (int k = 0; k < g->n_leaves; k++) {
+			if (c.leaf[k].clip)
+				continue;   /* clipped_by's leaves are never seen */
 			double before = h.t;
 			trace_shape(sc, &c.leaf[k], o, d, t, &h);
 			which = h.t < before ? k : which;

@@ -75,6 +75,7 @@ static struct objval *objval_copy(const struct objval *o)
 	c->csgs = dup_bytes(o->csgs, o->n_csgs * sizeof *o->csgs);
 	for (int i = 0; i < o->n_csgs; i++)
 		c->csgs[i].ops = dup_bytes(o->csgs[i].ops, o->csgs[i].n_ops * sizeof *o->csgs[i].ops);
+	c->bound = o->bound ? objval_copy(o->bound) : NULL;
 	c->lights = dup_bytes(o->lights, o->n_lights * sizeof *o->lights);
 	for (int i = 0; i < o->n_lights; i++)
 		c->lights[i].looks = dup_bytes(o->lights[i].looks, o->lights[i].n_looks * sizeof *o->lights[i].looks);
@@ -165,6 +166,7 @@ void eval_objval_free(struct objval *o)
 	for (int i = 0; i < o->n_csgs; i++)
 		free(o->csgs[i].ops);
 	free(o->csgs);
+	eval_objval_free(o->bound);
 	free(o->objs);
 	free(o);
 }

@@ -15,8 +15,8 @@
 const char *eval_pov_word(const char *name)
 {
 	static const char *const objects[] = {
-		"bicubic_patch", "blob", "cone", "cubic", "cylinder", "difference", "disc", "height_field",
-		"intersection", "isosurface", "julia_fractal", "lathe", "light_group", "merge", "ovus",
+		"bicubic_patch", "blob", "cone", "cubic", "cylinder", "disc", "height_field",
+		"isosurface", "julia_fractal", "lathe", "light_group", "ovus",
 		"parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
 		"sphere_sweep", "superellipsoid", "text", "torus",
 	};

@@ -492,18 +492,24 @@ static int lower_object(struct lowering *lw, const scene *s, int id)
  * one PRIM_CSG in the top level with the box of its program, or among the
  * unbounded primitives that every ray tests when that box is not bounded (an
  * inverse, a plane). A leaf that lowers to several primitives (a flat box's
- * triangles) is their union; one that lowers to none is inside nowhere. */
+ * triangles) is their union; one that lowers to none is inside nowhere. The
+ * leaves rays may meet come first, clipped_by's after them (link: how many
+ * come first). */
 static int lower_csg(struct lowering *lw, const scene *s, int index)
 {
 	const scene_csg *g = &s->csgs[index];
 	struct prim_list leaves = { 0 };
-	int *first = xmalloc((g->n_leaves + 1) * sizeof *first);
+	int *first = xmalloc((g->n_leaves + 1) * sizeof *first), *last = xmalloc((g->n_leaves + 1) * sizeof *last);
 	double (*lo)[3] = xmalloc((g->n_leaves + 1) * sizeof *lo), (*hi)[3] = xmalloc((g->n_leaves + 1) * sizeof *hi);
 	int rc = 0, ok = 1;
 	lw->target = &leaves;
+	int n_seen = 0;   /* the leaves a ray may meet come first, clipped_by's after them */
+	for (int pass = 0; pass < 2; pass++)
 	for (int k = 0; k < g->n_leaves; k++) {
 		const scene_object *o = &s->objects[g->first + k];
-		first[k] = leaves.n;
+		if (o->clip != (pass == 1))
+			continue;
+		first[k] = last[k] = leaves.n;
 		for (int j = 0; j < 3; j++) {
 			lo[k][j] = INFINITY;
 			hi[k][j] = -INFINITY;
@@ -516,8 +522,9 @@ static int lower_csg(struct lowering *lw, const scene *s, int index)
 		if (shape_of(o)->lower(lw, s, o, add_material(lw, &o->material, 0), g->first + k))
 			rc = -1;
 		shape_of(o)->bounds(s, o, lo[k], hi[k]);
+		last[k] = leaves.n;
+		n_seen = pass == 0 ? leaves.n : n_seen;
 	}
-	first[g->n_leaves] = leaves.n;
 	lw->target = &lw->top;
 	for (int i = 0; ok && i < leaves.n; i++)
 		ok = in_range(&leaves.p[i], NULL);
@@ -531,11 +538,11 @@ static int lower_csg(struct lowering *lw, const scene *s, int index)
 			csg_push(&p, op, arg);
 			continue;
 		}
-		if (arg >= g->n_leaves || first[arg] == first[arg + 1]) {
+		if (arg >= g->n_leaves || first[arg] == last[arg]) {
 			csg_push(&p, CSG_LEAF, CSG_NO_LEAF);
 			continue;
 		}
-		for (int j = first[arg]; j < first[arg + 1]; j++) {
+		for (int j = first[arg]; j < last[arg]; j++) {
 			csg_push(&p, CSG_LEAF, j);
 			if (j > first[arg])
 				csg_push(&p, CSG_UNION, 2);
@@ -561,7 +568,7 @@ static int lower_csg(struct lowering *lw, const scene *s, int index)
 			push_prim(&lw->data, r);
 		}
 		int head[4] = { leaf_first, leaves.n, prog_first, p.n };
-		dev_prim c = { .type = PRIM_CSG, .material = leaves.p[0].material, .object = g->first, .link = -1 };
+		dev_prim c = { .type = PRIM_CSG, .material = leaves.p[0].material, .object = g->first, .link = n_seen };
 		memcpy(&c.a, head, sizeof head);
 		int bounded = 1;
 		for (int k = 0; k < 3; k++)
@@ -576,6 +583,7 @@ static int lower_csg(struct lowering *lw, const scene *s, int index)
 	free(p.ops);
 	free(leaves.p);
 	free(first);
+	free(last);
 	free(lo);
 	free(hi);
 	return rc;

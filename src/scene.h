@@ -149,6 +149,7 @@ typedef struct {
 	double param[4];     /* a shape's other numbers, as its class says */
 	int shape_flags;     /* SHAPE_ */
 	int csg;             /* 1 + the CSG object it is a leaf of (scene.csgs), or 0: it stands alone */
+	bool clip;           /* a clipped_by shape: it only says what is inside, and is never seen */
 	int mesh;
 	xform xf;            /* object to world */
 	scene_material material;

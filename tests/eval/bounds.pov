@@ -1,5 +1,6 @@
-// bounded_by and clipped_by are parsed and ignored with a warning where each
-// is written (bounds.pov.err), including POV-Ray's "bounded_by { clipped_by }", which
-// bounds an object by its clip (shapesq.inc writes it).
+// clipped_by clips (a CSG object whose clipping leaves are never seen), and
+// bounded_by is read without a word (bounds.pov.err is empty): eclat's BVH
+// needs no hint, and POV-Ray's "bounded_by { clipped_by }" (shapesq.inc writes
+// it) bounds an object by its clip; "clipped_by { bounded_by }" clips by the bound.
 sphere { 0, 1 clipped_by { plane { y, 0 } } bounded_by { clipped_by } }
 sphere { 0, 1 bounded_by { box { -1, 1 } } clipped_by { bounded_by } }
