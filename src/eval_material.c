@@ -956,14 +956,20 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 
 /* The end of a texture with a pattern: a pattern of whole textures, its
  * entries the textures of its texture_map or of its list; or, for a pattern
- * eclat does not have (or one with no textures), the average of the textures,
- * warned about. The texture's transformations (tex_xf) place the pattern and
+ * eclat does not have, the average of the textures, warned about; a pattern
+ * with no textures is ignored, warned about. The texture's transformations (tex_xf) place the pattern and
  * its textures together. */
 static void texture_pattern(struct eval *e, struct pattern *p, scene_material *m)
 {
 	double col[5];
 	bool whole = p->kind > 0 && p->kind != PATTERN_IMAGE_MAP && (p->n_list > 0 || (p->has_map && p->map_finish &&
 	                                                                             p->map_pigment >= 0));
+	if (!whole && p->kind > 0 && p->kind != PATTERN_IMAGE_MAP && !p->has_map) {
+		/* POV-Ray's entries are empty: nothing is shaded (black) */
+		eval_warning(e, p->at->loc, "'%s' in a texture needs textures (a texture_map, or textures after it); "
+		             "ignored", p->name);
+		return;
+	}
 	if (!whole)
 		p->kind = -1;
 	if (whole && p->n_list > 0 && p->has_map)
