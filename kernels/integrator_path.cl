@@ -11,10 +11,11 @@
 #define RR_DEPTH 3
 
 /* Dimensions of one bounce: 0-1 lobe choice and direction (with 2: u.z), 3 roulette,
- * 4-6 the emitter, 8 on: the light_sources' area samples. */
+ * 4-6 the emitter, 7 the texture (texture_choose), 8 on: the light_sources' area samples. */
 #define DIM_LOBE 0
 #define DIM_ROULETTE 3
 #define DIM_EMITTER 4
+#define DIM_TEXTURE 7
 #define DIM_AREA 8
 
 /* The objects a ray of this bounce may not see: POV-Ray's no_image for the
@@ -43,7 +44,10 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 		if (sigma.x > 0.0f || sigma.y > 0.0f || sigma.z > 0.0f)
 			beta *= exp(-sigma * hit.t);   /* Beer-Lambert inside an absorbing interior */
 		shading_point sp = texture_point(sc, hit, o, d);
-		pigment_colour pc = texture_pigment(sc, &sp);
+		uint dim = RNG_DIMS_PER_BOUNCE * (uint)(depth + 1);
+		float3 tint = (float3)(1.0f);   /* through the layers above the chosen one */
+		pigment_colour pc = texture_choose(sc, &sp, rng_uniform(key, dim + DIM_TEXTURE), &tint);
+		beta *= tint;
 		bsdf m = material_bsdf(sp.m, pc.rgb, pc.filter, pc.transmit);
 		float3 ng = sp.ng, n = sp.ns, wo = -d, x = sp.x;
 		texture_first_hit(first, &sp, clamp(m.diffuse + m.reflect.xyz + m.absorb.w * m.transmit.xyz, 0.0f, 1.0f));
@@ -61,7 +65,6 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 
 		material_lobes lobes = material_lobes_at(&m, dot(n, wo), sp.entering);
 		float3 xa = x + sp.eps * ng;   /* above the surface, on the side the ray came from */
-		uint dim = RNG_DIMS_PER_BOUNCE * (uint)(depth + 1);
 		radiance += beta * light_pov(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_AREA);
 		if (p->integrator == INTEGRATOR_PATH)
 			radiance += beta * light_emitters(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_EMITTER);

@@ -10,9 +10,16 @@
  * where opacity = 1 - filter - transmit and filter colour = pigment * filter +
  * transmit. Rays stop at max_trace_level (params max_depth) or when their weight
  * falls under adc_bailout; POV-Ray's ray tree is walked with an explicit stack of
- * frames, the reflected and refracted rays being each frame's children. */
+ * frames, the reflected and refracted rays being each frame's children.
+ * A layered texture is shaded as ComputeLightedTexture shades it: each layer's
+ * colour seen through the layers above it, each layer's reflection, one
+ * refraction through them all; blended textures of a pattern of textures are
+ * each shaded so and their colours mixed by weight (ComputeOneTextureColour).
+ * Children along the same ray are traced once, their multipliers added. */
 
 #define WHITTED_FRAMES 24        /* trace levels the kernel follows, at most */
+#define WHITTED_CHILDREN 4       /* distinct rays a surface spawns, at most (more are dropped) */
+#define WHITTED_REFLECTIONS 4    /* reflecting layers of one texture, at most (more are dropped) */
 #define WHITTED_REGIONS 40       /* an area light's grid regions waiting, at most */
 #define POV_EPSILON 1e-10f       /* POV-Ray's EPSILON */
 
@@ -33,7 +40,7 @@ typedef struct {
 typedef struct {
 	whitted_ray ray;
 	float3 colour;     /* the ray's colour so far */
-	whitted_ray child[2];
+	whitted_ray child[WHITTED_CHILDREN];
 	int n_child, next;
 } whitted_frame;
 
@@ -274,6 +281,110 @@ inline whitted_ray whitted_child(float3 o, float3 d, float3 mult, float exponent
 	return r;
 }
 
+/* Adds a child ray to fr: one along the same ray with the same exponent gets
+ * its multiplier added (the parent adds mult * colour^exponent, so they sum). */
+inline void whitted_add_child(whitted_frame *fr, whitted_ray r)
+{
+	if (r.mult.x == 0.0f && r.mult.y == 0.0f && r.mult.z == 0.0f)
+		return;
+	for (int i = 0; i < fr->n_child; i++) {
+		whitted_ray *c = &fr->child[i];
+		if (all(c->o == r.o) && all(c->d == r.d) && c->exponent == r.exponent && c->kind == r.kind &&
+		    c->level == r.level) {
+			c->mult += r.mult;
+			c->weight = fmax(c->weight, r.weight);
+			return;
+		}
+	}
+	if (fr->n_child < WHITTED_CHILDREN)
+		fr->child[fr->n_child++] = r;
+}
+
+/* One texture (a top layer and the layers below it) at sp, its colour and
+ * children added to fr with weight w: POV-Ray's ComputeLightedTexture. Each
+ * layer adds its own colour (ambient, diffuse with its opacity, highlights)
+ * seen through the layers above (filcol), and its reflection; the layers stop
+ * where too little shows through (adc_bailout); the refracted ray goes along
+ * the top layer's normal through all of them. */
+inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_point sp, int material, float w,
+                            whitted_ray ray, int level, float t_hit, first_hit *first)
+{
+	global const dev_params *p = sc->p;
+	float3 filcol = (float3)(1.0f), top_n = sp.n0;
+	float trans = 1.0f;
+	float3 refl_n[WHITTED_REFLECTIONS], refl_c[WHITTED_REFLECTIONS];
+	float refl_w[WHITTED_REFLECTIONS], refl_e[WHITTED_REFLECTIONS];
+	int n_refl = 0;
+	bool entering = sp.entering;
+	float ior = 1.0f;
+	whitted_point pt;
+	pt.d = ray.d;
+	pt.x = sp.x;
+	pt.eps = sp.eps;
+	pt.object = sp.object;
+	for (int mi = material, layer = 0; mi >= 0 && trans > p->classic.w; mi = sp.m->below, layer++) {
+		texture_use(sc, &sp, mi);
+		pigment_colour pc = texture_pigment(sc, &sp);
+		global const dev_material *f = sp.m;
+		if (layer == 0) {
+			top_n = sp.ns;
+			ior = f->interior.x;
+			texture_first_hit(first, &sp, pc.rgb);
+		}
+		pt.n = sp.ns;
+		float3 pig = pc.rgb;
+		float cos_i = -dot(ray.d, pt.n);
+		float rweight = ray.weight * trans;
+		float3 reflec = whitted_reflectivity(f, pig, cos_i, entering ? ior : 1.0f / ior, &rweight);
+		float opacity = 1.0f - pc.filter - pc.transmit;
+		fr->colour += w * filcol *
+		              (pig * (f->ambient.xyz + f->emission.xyz) * opacity + whitted_lights(sc, f, pig, &pt, opacity));
+		if ((reflec.x != 0.0f || reflec.y != 0.0f || reflec.z != 0.0f) && n_refl < WHITTED_REFLECTIONS) {
+			refl_n[n_refl] = pt.n;
+			refl_c[n_refl] = reflec;
+			refl_w[n_refl] = rweight;
+			refl_e[n_refl++] = f->reflection_max.w;
+		}
+		filcol *= pig * pc.filter + pc.transmit;
+		if (f->interior.w > 0.0f)   /* conserve_energy: what is reflected is not transmitted */
+			filcol *= fmin((float3)(1.0f), (float3)(1.0f) - reflec);
+		trans = fmin(1.0f, fabs(whitted_grey(filcol)));
+	}
+	bool tir = false;
+	int image = ray.kind & WRAY_IMAGE;
+	float cos_i = -dot(ray.d, top_n);
+	float3 ng = sp.ng;
+	if (trans > p->classic.w) {
+		float tweight = ray.weight * whitted_max3(fabs(filcol));
+		float3 att = entering ? (float3)(1.0f) : visibility_fade(sp.m, t_hit);
+		float ratio = entering ? 1.0f / ior : ior;
+		float3 below = sp.x - sp.eps * ng;
+		if (fabs(ratio - 1.0f) < POV_EPSILON) {
+			whitted_add_child(fr, whitted_child(below, ray.d, w * att * filcol, 1.0f, tweight, level,
+			                                    image | WRAY_CONTINUED | (ray.kind & WRAY_REFLECTED)));
+		} else {
+			float t = 1.0f + ratio * ratio * (cos_i * cos_i - 1.0f);
+			if (t < 0.0f) {   /* total internal reflection, unfiltered */
+				tir = true;
+				float3 r = ray.d + 2.0f * cos_i * top_n;
+				whitted_add_child(fr, whitted_child(sp.x + sp.eps * ng, normalize(r), w * att, 1.0f, tweight, level,
+				                                    WRAY_REFLECTED));
+			} else {
+				float3 dir = ratio * ray.d + (ratio * cos_i - sqrt(t)) * top_n;
+				whitted_add_child(fr, whitted_child(below, normalize(dir), w * att * filcol, 1.0f, tweight, level,
+				                                    image | (ray.kind & WRAY_REFLECTED)));
+			}
+		}
+	}
+	for (int i = 0; i < n_refl; i++) {
+		if (tir && all(refl_n[i] == top_n))   /* TIR reflects along the top normal already */
+			continue;
+		float3 r = ray.d - 2.0f * dot(ray.d, refl_n[i]) * refl_n[i];
+		whitted_add_child(fr, whitted_child(sp.x + sp.eps * ng, normalize(r), w * refl_c[i], refl_e[i], refl_w[i],
+		                                    level, WRAY_REFLECTED));
+	}
+}
+
 /* Traces one ray: its surface's own colour, and the rays it spawns as children. */
 inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_hit *first)
 {
@@ -293,59 +404,9 @@ inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_
 	}
 	int level = ray.level + (ray.kind & WRAY_CONTINUED ? 0 : 1);
 	shading_point sp = texture_point(sc, hit, ray.o, ray.d);
-	pigment_colour pc = texture_pigment(sc, &sp);
-	global const dev_material *f = sp.m;
-	whitted_point pt;
-	pt.d = ray.d;
-	pt.x = sp.x;
-	pt.n = sp.ns;
-	pt.eps = sp.eps;
-	pt.object = sp.object;
-	bool entering = sp.entering;
-	float3 ng = sp.ng;
-	texture_first_hit(first, &sp, pc.rgb);
-
-	float3 pig = pc.rgb;
-	float filter = pc.filter, transmit = pc.transmit, ior = f->interior.x;
-	float cos_i = -dot(ray.d, pt.n);
-	float rweight = ray.weight;
-	float3 reflec = whitted_reflectivity(f, pig, cos_i, entering ? ior : 1.0f / ior, &rweight);
-	float opacity = 1.0f - filter - transmit;
-	fr.colour = pig * (f->ambient.xyz + f->emission.xyz) * opacity + whitted_lights(sc, f, pig, &pt, opacity);
-
-	float3 filcol = pig * filter + transmit;
-	if (f->interior.w > 0.0f)   /* conserve_energy: what is reflected is not transmitted */
-		filcol *= fmin((float3)(1.0f), (float3)(1.0f) - reflec);
-	float trans = fmin(1.0f, fabs(whitted_grey(filcol)));
-	bool tir = false;
-	int image = ray.kind & WRAY_IMAGE;
-	if (trans > p->classic.w) {
-		float tweight = ray.weight * whitted_max3(fabs(filcol));
-		float3 att = entering ? (float3)(1.0f) : visibility_fade(f, hit.t);
-		float ratio = entering ? 1.0f / ior : ior;
-		float3 below = pt.x - pt.eps * ng;
-		if (fabs(ratio - 1.0f) < POV_EPSILON) {
-			fr.child[fr.n_child++] = whitted_child(below, ray.d, att * filcol, 1.0f, tweight, level,
-			                                       image | WRAY_CONTINUED | (ray.kind & WRAY_REFLECTED));
-		} else {
-			float t = 1.0f + ratio * ratio * (cos_i * cos_i - 1.0f);
-			if (t < 0.0f) {   /* total internal reflection, unfiltered */
-				tir = true;
-				float3 r = ray.d + 2.0f * cos_i * pt.n;
-				fr.child[fr.n_child++] = whitted_child(pt.x + pt.eps * ng, normalize(r), att, 1.0f, tweight,
-				                                       level, WRAY_REFLECTED);
-			} else {
-				float3 dir = ratio * ray.d + (ratio * cos_i - sqrt(t)) * pt.n;
-				fr.child[fr.n_child++] = whitted_child(below, normalize(dir), att * filcol, 1.0f, tweight, level,
-				                                       image | (ray.kind & WRAY_REFLECTED));
-			}
-		}
-	}
-	if (!tir && (reflec.x != 0.0f || reflec.y != 0.0f || reflec.z != 0.0f)) {
-		float3 r = ray.d + 2.0f * cos_i * pt.n;
-		fr.child[fr.n_child++] = whitted_child(pt.x + pt.eps * ng, normalize(r), reflec, f->reflection_max.w,
-		                                       rweight, level, WRAY_REFLECTED);
-	}
+	texture_blend b = texture_blend_at(sc, &sp, sp.material);
+	for (int k = 0; k < b.n; k++)
+		whitted_texture(sc, &fr, sp, b.m[k], b.w[k], ray, level, hit.t, first);
 	return fr;
 }
 

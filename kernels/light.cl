@@ -130,11 +130,11 @@ inline float light_pdf(global const dev_emitter *em, global const dev_prim *prim
 inline float3 light_emitted(const scene_data *sc, int prim, float3 pos, float3 wi, float dist)
 {
 	global const dev_material *m = &sc->materials[sc->prims[prim].material];
-	if (m->pattern < 0)
+	if (m->pattern < 0 && m->below < 0)
 		return m->pigment.xyz * m->emission.xyz;
 	traverse_hit h = { dist, prim, -1 };
 	shading_point sp = texture_point(sc, h, pos - dist * wi, wi);
-	return texture_pigment(sc, &sp).rgb * m->emission.xyz;
+	return texture_emitted(sc, &sp);
 }
 
 inline float light_power_heuristic(float a, float b)

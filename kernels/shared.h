@@ -115,7 +115,14 @@ enum { CSG_LEAF = 1, CSG_NOT = 2, CSG_AND = 3, CSG_OR = 4, CSG_UNION = 5 };
  * colour, or a pattern evaluated at each shading point (texture.cl). Both
  * integrators read it: the Whitted one as POV-Ray's classic model, the path
  * tracer through material_bsdf (material.cl), which maps it onto a layered
- * BSDF as eclat-scene(5), HOW MATERIALS ARE RENDERED, says. */
+ * BSDF as eclat-scene(5), HOW MATERIALS ARE RENDERED, says.
+ * A layered texture is its top layer's material, whose below is the next
+ * layer down (-1: the bottom). A pattern of whole textures (texture_map,
+ * checker texture { } texture { }) is a material with MATERIAL_TEXTURE_MAP:
+ * its pattern picks or blends the materials of its map's entries
+ * (dev_map_entry.material) at each point (texture_blend_at); its pigment is
+ * their average, its finish the first's, for what needs one colour. Every
+ * material of a surface holds the object's interior. */
 typedef struct {
 	float4 pigment;        /* rgb; w: filter (with a pattern: its average colour) */
 	float4 ambient;        /* rgb: ambient * ambient_light; w: transmit */
@@ -130,11 +137,12 @@ typedef struct {
 	int pattern;           /* the pigment's dev_pattern, or -1: the solid pigment above */
 	int flags;             /* MATERIAL_ */
 	int normal;            /* the normal's dev_pattern (pattern_perturb), or -1: none */
-	float pad;
+	int below;             /* a layered texture's next layer down, or -1 */
 } dev_material;
 /* MATERIAL_LOCAL: a mesh's own texture, whose patterns see the mesh's space;
- * MATERIAL_ROUGH: roughness was given, so the path tracer's reflection is rough. */
-enum { MATERIAL_LOCAL = 1, MATERIAL_ROUGH = 2 };
+ * MATERIAL_ROUGH: roughness was given, so the path tracer's reflection is rough;
+ * MATERIAL_TEXTURE_MAP: pattern is a pattern of whole textures. */
+enum { MATERIAL_LOCAL = 1, MATERIAL_ROUGH = 2, MATERIAL_TEXTURE_MAP = 4 };
 
 /* ---- Appearance: patterns, maps and pigments (kernels/pattern.cl, kernels/texture.cl).
  *
@@ -235,11 +243,12 @@ typedef struct {
 enum { PATTERN_NO_BUMP_SCALE = 1 };
 
 /* An entry of a pattern's map, 32 bytes: a colour, or a nested pigment (a
- * pigment_map, or checker pigment { } pigment { }) when pigment >= 0. */
+ * pigment_map, or checker pigment { } pigment { }) when pigment >= 0; in a
+ * pattern of whole textures, a texture: its dev_material (material). */
 typedef struct {
 	float4 colour;   /* rgb; w: filter */
 	float transmit, value;
-	int pigment, pad;
+	int pigment, material;
 } dev_map_entry;
 
 /* An image of an image_map, 16 bytes: its texels are texels[first ..

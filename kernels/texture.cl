@@ -2,20 +2,25 @@
  * a hit makes its shading_point once (texture_point), and everything after
  * reads from it: the material, the pigment evaluated there (texture_pigment),
  * the AOVs. Patterns (pattern.cl) give a value; the pattern's map turns the
- * value into a colour, or into nested pigments whose colours blend by weight. */
+ * value into a colour, or into nested pigments whose colours blend by weight.
+ * A pattern of whole textures picks or blends materials (texture_blend_at);
+ * a layered texture is a chain of materials, top first (dev_material.below).
+ * texture_use makes one of those the shading point's material. */
 
 typedef struct {
 	float3 x;          /* the hit, in world space */
 	float3 object_x;      /* in its instance's space (a mesh's), else x */
 	float3 ng, ns;     /* geometric and shading normals, turned to face the ray (the
 	                    * shading one before its normal pattern's tilt) */
+	float3 n0;         /* the shading normal before any normal pattern's tilt */
 	float3 d;          /* the ray's direction */
 	float t;           /* its distance along the ray */
 	float eps;         /* how far rays leaving the surface start off it */
 	int prim, object;
 	int emitter;       /* the emitter table's entry, or -1 */
 	bool entering;     /* the ray meets the side the geometric normal points to */
-	global const dev_material *m;
+	int material;      /* the surface's material (a pattern of textures, or a top layer) */
+	global const dev_material *m;   /* the material being shaded (texture_use) */
 } shading_point;
 
 /* POV-Ray's colour: rgb, and the light it lets through, filtered by the colour
@@ -37,6 +42,7 @@ inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float
 	/* the shading normal faces the ray before a normal pattern tilts it, as
 	 * POV-Ray orients it; the tilt may then turn it a little away */
 	sp.ns = dot(s.ns, d) > 0.0f ? -s.ns : s.ns;
+	sp.n0 = sp.ns;
 	sp.d = d;
 	sp.t = hit.t;
 	/* a margin relative to the coordinates' magnitude, so that the next ray does
@@ -45,12 +51,32 @@ inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float
 	sp.prim = hit.prim;
 	sp.object = s.object;
 	sp.emitter = s.emitter;
+	sp.material = s.material;
 	sp.m = &sc->materials[s.material];
 	/* the normal's pattern tilts the shading normal (a mesh's own textures'
 	 * normals are not applied yet: lower_texture.c says so) */
-	if (sp.m->normal >= 0 && !(sp.m->flags & MATERIAL_LOCAL))
+	if (sp.m->normal >= 0 && !(sp.m->flags & (MATERIAL_LOCAL | MATERIAL_TEXTURE_MAP)))
 		sp.ns = pattern_perturb(&sc->patterns[sp.m->normal], sc->warps, sc->maps, sp.x, sp.ns);
 	return sp;
+}
+
+/* Makes material the one shaded at sp: a texture of a pattern of textures, or
+ * a layer; its normal pattern tilts the shading normal anew (each texture and
+ * layer has its own in POV-Ray). */
+inline void texture_use(const scene_data *sc, shading_point *sp, int material)
+{
+	sp->m = &sc->materials[material];
+	sp->ns = sp->n0;
+	if (sp->m->normal >= 0 && !(sp->m->flags & MATERIAL_LOCAL))
+		sp->ns = pattern_perturb(&sc->patterns[sp->m->normal], sc->warps, sc->maps, sp->x, sp->ns);
+}
+
+/* A point of world space (or of the mesh's, for a mesh's own textures) in a
+ * pattern's space: its rows. */
+inline float3 texture_pattern_point(global const dev_pattern *pt, float3 p)
+{
+	return (float3)(dot(pt->rows[0].xyz, p) + pt->rows[0].w, dot(pt->rows[1].xyz, p) + pt->rows[1].w,
+	                dot(pt->rows[2].xyz, p) + pt->rows[2].w);
 }
 
 /* POV-Ray's blend map search: the entries around v, and how far v is from the
@@ -204,8 +230,7 @@ inline pigment_colour texture_pigment(const scene_data *sc, const shading_point 
 		global const dev_pattern *pt = &sc->patterns[stack[n]];
 		float w = weight[n], v = 0.0f;
 		if (pt->kind != PATTERN_SOLID) {
-			float3 q = (float3)(dot(pt->rows[0].xyz, p) + pt->rows[0].w, dot(pt->rows[1].xyz, p) + pt->rows[1].w,
-			                    dot(pt->rows[2].xyz, p) + pt->rows[2].w);
+			float3 q = texture_pattern_point(pt, p);
 			if (pt->kind == PATTERN_IMAGE_MAP) {   /* a colour of its own, no map */
 				pigment_colour c = texture_image(sc, pt, pattern_warp_point(pt, sc->warps, q));
 				sum += w * (float4)(c.rgb, c.filter);
@@ -237,6 +262,145 @@ inline pigment_colour texture_pigment(const scene_data *sc, const shading_point 
 	out.filter = sum.w;
 	out.transmit = transmit;
 	return out;
+}
+
+/* ---- patterns of whole textures, and layers ---- */
+
+#define TEXTURE_BLEND 8   /* textures blended at a point: 2^TEXTURE_NEST_MAX (lower_texture.c) */
+
+/* The textures that material (a pattern of textures, maybe nested) gives at
+ * sp, with their weights, which add up to 1: POV-Ray's Search_Blend_Map picks
+ * one entry or blends two at each level. A material that is no pattern of
+ * textures is itself, weight 1. */
+typedef struct {
+	int m[TEXTURE_BLEND];
+	float w[TEXTURE_BLEND];
+	int n;
+} texture_blend;
+
+inline texture_blend texture_blend_at(const scene_data *sc, const shading_point *sp, int material)
+{
+	texture_blend b;
+	b.n = 0;
+	int stack[TEXTURE_BLEND];
+	float weight[TEXTURE_BLEND];
+	int n = 0;
+	stack[n] = material;
+	weight[n++] = 1.0f;
+	while (n > 0) {
+		n--;
+		int mi = stack[n];
+		float w = weight[n];
+		global const dev_material *m = &sc->materials[mi];
+		if (!(m->flags & MATERIAL_TEXTURE_MAP)) {
+			if (b.n < TEXTURE_BLEND) {
+				b.m[b.n] = mi;
+				b.w[b.n++] = w;
+			}
+			continue;
+		}
+		global const dev_pattern *pt = &sc->patterns[m->pattern];
+		float3 q = texture_pattern_point(pt, m->flags & MATERIAL_LOCAL ? sp->object_x : sp->x);
+		float v = pattern_value(pt, sc->warps, q, sp->n0, sp->d);
+		global const dev_map_entry *e = sc->maps + pt->map_first;
+		int c;
+		float f;
+		int a = texture_map_search(e, pt->map_count, v, &c, &f);
+		if (a == c || f <= 0.0f) {
+			stack[n] = e[a].material;
+			weight[n++] = w;
+		} else if (f >= 1.0f) {
+			stack[n] = e[c].material;
+			weight[n++] = w;
+		} else if (n + 2 <= TEXTURE_BLEND) {
+			stack[n] = e[a].material;
+			weight[n++] = w * (1.0f - f);
+			stack[n] = e[c].material;
+			weight[n++] = w * f;
+		}
+	}
+	return b;
+}
+
+/* What of the light a surface lets through at sp (POV-Ray's shadow rays):
+ * over a texture's layers, the product of each one's pigment * filter +
+ * transmit; over blended textures, the weighted sum. *pass: the same of
+ * |filter| + |transmit|, which says whether anything passes at all. */
+inline float3 texture_filter(const scene_data *sc, shading_point *sp, float *pass)
+{
+	texture_blend b = texture_blend_at(sc, sp, sp->material);
+	float3 sum = (float3)(0.0f);
+	*pass = 0.0f;
+	for (int k = 0; k < b.n; k++) {
+		float3 f = (float3)(1.0f);
+		float through = 1.0f;
+		for (int mi = b.m[k]; mi >= 0; mi = sp->m->below) {
+			sp->m = &sc->materials[mi];
+			pigment_colour c = texture_pigment(sc, sp);
+			f *= c.rgb * c.filter + c.transmit;
+			through *= fabs(c.filter) + fabs(c.transmit);
+		}
+		sum += b.w[k] * f;
+		*pass += b.w[k] * through;
+	}
+	return sum;
+}
+
+/* The light a surface emits at sp, as the path tracer sees it on average
+ * (texture_choose): over blended textures, the weighted sum; over layers,
+ * each layer's pigment * emission, times its opacity unless it is the bottom
+ * one, seen through the layers above it. */
+inline float3 texture_emitted(const scene_data *sc, shading_point *sp)
+{
+	texture_blend b = texture_blend_at(sc, sp, sp->material);
+	float3 sum = (float3)(0.0f);
+	for (int k = 0; k < b.n; k++) {
+		float3 through = (float3)(1.0f);
+		for (int mi = b.m[k]; mi >= 0; mi = sp->m->below) {
+			sp->m = &sc->materials[mi];
+			pigment_colour c = texture_pigment(sc, sp);
+			float a = sp->m->below < 0 ? 1.0f : clamp(1.0f - c.filter - c.transmit, 0.0f, 1.0f);
+			sum += b.w[k] * through * a * c.rgb * sp->m->emission.xyz;
+			through *= c.rgb * c.filter + c.transmit;
+		}
+	}
+	return sum;
+}
+
+/* The path tracer's texture at sp, chosen with the uniform number u: one of
+ * the blended textures with the probability of its weight, then, down its
+ * layers, each layer but the bottom one with the probability of its opacity
+ * (1 - filter - transmit), made opaque; passing a layer multiplies *tint by
+ * its pigment * filter + transmit over the probability of passing it. In
+ * expectation that is POV-Ray's blend of textures and its layers seen through
+ * the ones above. Makes the chosen material sp's (texture_use); returns its
+ * pigment there. */
+inline pigment_colour texture_choose(const scene_data *sc, shading_point *sp, float u, float3 *tint)
+{
+	texture_blend b = texture_blend_at(sc, sp, sp->material);
+	int mi = b.m[b.n - 1];
+	for (int k = 0; k < b.n; k++) {
+		if (u < b.w[k]) {
+			mi = b.m[k];
+			u = fmin(u / b.w[k], 0.99999994f);
+			break;
+		}
+		u -= b.w[k];
+	}
+	for (;;) {
+		texture_use(sc, sp, mi);
+		pigment_colour c = texture_pigment(sc, sp);
+		if (sp->m->below < 0)
+			return c;
+		float a = clamp(1.0f - c.filter - c.transmit, 0.0f, 1.0f);
+		if (u < a) {
+			c.filter = c.transmit = 0.0f;
+			return c;
+		}
+		u = clamp((u - a) / (1.0f - a), 0.0f, 0.99999994f);
+		*tint *= (c.rgb * c.filter + c.transmit) / (1.0f - a);
+		mi = sp->m->below;
+	}
 }
 
 /* What a ray that leaves the scene sees: the sky_sphere's pigments at the

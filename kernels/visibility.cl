@@ -39,7 +39,8 @@ inline float3 visibility_fade(global const dev_material *m, float t)
 #define VISIBILITY_CROSSINGS 32   /* transparent surfaces a shadow ray passes, at most */
 
 /* What of colour, a light's, reaches o from along l in (tmin, tmax): each
- * surface between filters it by pigment * filter + transmit, and by its
+ * surface between filters it by pigment * filter + transmit (texture_filter:
+ * over layers and blended textures), and by its
  * interior's fade where the ray leaves an inside; an opaque surface stops it
  * (POV-Ray's TracePointLightShadowRay). In a scene where nothing lets shadow
  * rays through, the first surface met stops them, found by an any-hit query. */
@@ -55,10 +56,11 @@ inline float3 visibility_shadow(const scene_data *sc, float3 o, float3 l, float 
 		if (h.prim < 0)
 			return colour;
 		shading_point sp = texture_point(sc, h, o, l);
-		pigment_colour pc = texture_pigment(sc, &sp);
-		if (fabs(pc.filter) + fabs(pc.transmit) < sc->p->classic.w)
+		float pass;
+		float3 filter = texture_filter(sc, &sp, &pass);
+		if (pass < sc->p->classic.w)
 			return (float3)(0.0f);
-		colour *= pc.rgb * pc.filter + pc.transmit;
+		colour *= filter;
 		if (!sp.entering)   /* leaving an object: its interior faded the light */
 			colour *= visibility_fade(sp.m, h.t);
 		o += h.t * l;

@@ -1,8 +1,10 @@
 /* eval_material.c: pigment, finish, texture, normal, interior, material and the
  * maps. A pigment's pattern becomes a scene_pigment (eval_pattern.c) that the
  * kernels evaluate at each point; its average colour stays in pigment[] for
- * what needs one colour. Patterns eclat does not have yet, and patterns of
- * whole textures (texture_map), become that average, with one warning per
+ * what needs one colour. A pattern of whole textures (texture_map, checker
+ * texture { } texture { }) is a scene_pigment whose entries are textures of
+ * the pool scene.textures; layered textures are a chain of textures there.
+ * Patterns eclat does not have yet become their average, with one warning per
  * place (see eclat-scene(5), TEXTURES). */
 #include <math.h>
 #include <stdio.h>
@@ -55,7 +57,13 @@ void eval_apply_value(const value *v, scene_material *m)
 	switch (v->kind) {
 	case V_PIGMENT: copy_pigment(m, &v->mat); break;
 	case V_FINISH: copy_finish(m, &v->mat); break;
-	case V_TEXTURE: copy_pigment(m, &v->mat); copy_finish(m, &v->mat); m->normal = v->mat.normal; break;
+	case V_TEXTURE:
+		copy_pigment(m, &v->mat);
+		copy_finish(m, &v->mat);
+		m->normal = v->mat.normal;
+		m->texture_map = v->mat.texture_map;
+		m->layers = v->mat.layers;
+		break;
 	case V_NORMAL: m->normal = v->mat.normal; break;
 	case V_INTERIOR: copy_interior(m, &v->mat); break;
 	case V_MATERIAL: *m = v->mat; break;
@@ -63,22 +71,35 @@ void eval_apply_value(const value *v, scene_material *m)
 	}
 }
 
-/* A texture on an object that has one is a layer on top of it in POV-Ray. An
- * opaque top layer hides the one below; through a transparent one (filter and
- * transmit) eclat mixes the colours by the top layer's transparency and keeps
- * the finish of the layer that shows most. */
+/* A texture on an object that has one is a layer on top of it in POV-Ray:
+ * the object's texture becomes a layered one whose layers (the texture it had,
+ * and tex on it) are in the pool scene.textures, each with its own space; the
+ * layered texture's tex_xf starts as the identity and takes the
+ * transformations written after it, for all its layers. An opaque solid top
+ * layer hides the ones below: it replaces them. As POV-Ray, a pattern of whole
+ * textures is neither layered over nor layered on another texture. For what
+ * needs one colour, the layered texture's pigment mixes the layers' averages by
+ * the top one's transparency, with the finish of the layer that shows most. */
 void eval_apply_texture(struct eval *e, src_loc loc, scene_material *m, bool textured, const scene_material *tex)
 {
-	double t = tex->pigment[3] + tex->pigment[4];
-	if (tex->normal >= 0 || !textured || t <= 0)
-		m->normal = tex->normal;
-	if (!textured || t <= 0) {
-		copy_pigment(m, tex);
-		copy_finish(m, tex);
+	bool opaque = tex->pattern < 0 && tex->texture_map < 0 && tex->layers < 0 && tex->pigment[3] == 0 &&
+	              tex->pigment[4] == 0;
+	if (!textured || opaque) {
+		eval_apply_value(&(value){ .kind = V_TEXTURE, .mat = *tex }, m);
 		return;
 	}
-	eval_warn_once(e, loc, "layered textures",
-	               "layered textures are not supported yet; mixing the layers by the top one's filter and transmit");
+	if (m->texture_map >= 0 || tex->texture_map >= 0) {
+		eval_error(e, loc, m->texture_map >= 0 ? "cannot layer a texture over a pattern of whole textures"
+		                                       : "cannot layer a pattern of whole textures over another texture");
+		return;
+	}
+	scene_material below = *m, top = *tex;
+	below.below = -1;
+	top.below = scene_add_texture(e->s, &below);
+	m->layers = scene_add_texture(e->s, &top);
+	m->pattern = m->normal = -1;
+	m->tex_xf = scene_xform_identity();
+	double t = tex->pigment[3] + tex->pigment[4];
 	if (t > 1)
 		t = 1;
 	for (int i = 0; i < 3; i++)
@@ -94,6 +115,7 @@ void eval_apply_texture(struct eval *e, src_loc loc, scene_material *m, bool tex
 struct map_point {
 	double at, c[5];
 	int pigment;             /* a pattern pigment, or -1 */
+	int texture;             /* a texture_map's: the entry's texture in scene.textures */
 };
 
 /* The average over 0 to 1 of the colour a map gives: constant before its first
@@ -129,16 +151,18 @@ struct map_build {
 	scene_material first;   /* a texture_map's first texture, for its finish */
 };
 
-static void map_add(struct map_build *mb, double at, const double c[5], int pigment)
+static void map_add(struct map_build *mb, double at, const double c[5], int pigment, int texture)
 {
 	mb->p = eval_xrealloc(mb->p, (mb->n + 1) * sizeof *mb->p);
 	mb->p[mb->n].at = at;
 	mb->p[mb->n].pigment = pigment;
+	mb->p[mb->n].texture = texture;
 	memcpy(mb->p[mb->n].c, c, sizeof mb->p[mb->n].c);
 	mb->n++;
 }
 
-/* The colour an entry's value gives: a colour, a pigment, a texture. */
+/* The colour an entry's value gives: a colour, a pigment, a texture (which
+ * goes into the pool, *pigment its index there). */
 static int entry_color(struct eval *e, const ast_node *at, value *v, int map_kw, struct map_build *mb, double c[5],
                        int *pigment)
 {
@@ -168,6 +192,8 @@ static int entry_color(struct eval *e, const ast_node *at, value *v, int map_kw,
 		mb->first = v->mat;
 		mb->finish_set = true;
 	}
+	if (want == V_TEXTURE)
+		*pigment = scene_add_texture(e->s, &v->mat);
 	return 0;
 }
 
@@ -200,8 +226,9 @@ static int body_entry(struct eval *e, const ast_node *entry, int map_kw, struct 
 		return -1;
 	int pigment;
 	int rc = entry_color(e, entry->kids[first], &v, map_kw, mb, c, &pigment);
+	bool tex = map_kw == KW_TEXTURE_MAP;
 	if (rc == 0)
-		map_add(mb, at, c, pigment);
+		map_add(mb, at, c, tex ? -1 : pigment, tex ? pigment : -1);
 	eval_value_free(&v);
 	return rc;
 }
@@ -260,7 +287,7 @@ static int map_entry(struct eval *e, const ast_node *entry, int map_kw, struct m
 			eval_error(e, at[i]->loc, "expected a float, found %s", eval_kind_name(v[i].kind));
 			rc = -1;
 		} else if ((rc = entry_color(e, at[half + i], &v[half + i], map_kw, mb, c, &pigment)) == 0) {
-			map_add(mb, v[i].v[0], c, pigment);
+			map_add(mb, v[i].v[0], c, pigment, -1);
 		}
 	}
 	for (int i = 0; i < n; i++)
@@ -277,7 +304,8 @@ static int map_pigment(struct eval *e, const struct map_build *mb, src_loc loc)
 	pg.map = eval_xrealloc(NULL, mb->n * sizeof *pg.map);
 	pg.n_map = mb->n;
 	for (int i = 0; i < mb->n; i++) {
-		pg.map[i] = (scene_map_entry){ .value = mb->p[i].at, .pigment = mb->p[i].pigment };
+		pg.map[i] = (scene_map_entry){ .value = mb->p[i].at, .pigment = mb->p[i].pigment,
+		                               .texture = mb->p[i].texture };
 		for (int k = 0; k < 5; k++)
 			pg.map[i].colour[k] = (float)mb->p[i].c[k];
 	}
@@ -388,13 +416,13 @@ struct pattern {
 	double base[5];
 	double list[LIST_MAX][5];
 	int list_pigment[LIST_MAX];
+	int list_texture[LIST_MAX];   /* a texture's list: the textures (scene.textures) */
 	int n_list;
 	bool has_map;
 	double map[5];
 	int map_pigment;         /* the map's entries (map_pigment), or -1 */
 	scene_material map_mat;  /* a texture_map's finish */
-	bool map_finish;
-	bool of_texture;         /* a texture's pattern: eclat renders its average */
+	bool map_finish;         /* the map is a texture_map */
 };
 
 /* The map of the pigment being made: its map's, its list's, the inherited
@@ -415,7 +443,8 @@ static void pattern_map(struct eval *e, struct pattern *p)
 	} else if (p->n_list) {
 		pg->map = eval_xrealloc(NULL, p->n_list * sizeof *pg->map);
 		for (int i = 0; i < p->n_list; i++) {
-			pg->map[i] = (scene_map_entry){ .value = i, .pigment = p->list_pigment[i] };
+			pg->map[i] = (scene_map_entry){ .value = i, .pigment = p->list_pigment[i],
+			                                .texture = p->list_texture[i] };
 			for (int k = 0; k < 5; k++)
 				pg->map[i].colour[k] = (float)p->list[i][k];
 		}
@@ -451,10 +480,7 @@ static void pattern_result(struct eval *e, struct pattern *p, double c[5], int *
 	                : "rgb 0.5, the average of the default colour map";
 	char key[64];
 	snprintf(key, sizeof key, "pattern %s", p->name);
-	if (p->of_texture && eval_pattern_kind(p->name) > 0)
-		eval_warn_once(e, p->at->loc, key, "patterns of whole textures (texture_map, or textures listed "
-		               "after '%s') are not supported yet; using %s", p->name, how);
-	else if (strcmp(p->name, "average") != 0 || !p->has_map)   /* average is its map's mean: exact */
+	if (strcmp(p->name, "average") != 0 || !p->has_map)   /* average is its map's mean: exact */
 		eval_warn_once(e, p->at->loc, key, "pattern '%s' is not supported yet; using %s", p->name, how);
 	for (int k = 0; k < 5; k++) {
 		double sum = 0;
@@ -493,7 +519,7 @@ static int map_into(struct eval *e, const ast_node *item, struct pattern *p)
 	if (map_block(e, item, &v))
 		return -1;
 	p->has_map = true;
-	p->map_pigment = item->kw == KW_TEXTURE_MAP ? -1 : v.mat.pattern;
+	p->map_pigment = v.mat.pattern;
 	bool average = strcmp(p->name, "average") == 0;
 	for (int k = 0; k < 5; k++)
 		p->map[k] = average ? v.v[k] : v.mat.pigment[k];
@@ -502,10 +528,11 @@ static int map_into(struct eval *e, const ast_node *item, struct pattern *p)
 	return 0;
 }
 
-static void list_add(struct pattern *p, const double c[5], int pigment)
+static void list_add(struct pattern *p, const double c[5], int pigment, int texture)
 {
 	if (p->n_list < LIST_MAX) {
 		p->list_pigment[p->n_list] = pigment;
+		p->list_texture[p->n_list] = texture;
 		memcpy(p->list[p->n_list++], c, sizeof p->list[0]);
 	}
 }
@@ -563,7 +590,7 @@ static int pigment_value(struct eval *e, const ast_node *item, struct pattern *p
 	int pigment = v.kind == V_PIGMENT ? v.mat.pattern : -1;
 	eval_value_free(&v);
 	if (p->at && !inherits)
-		list_add(p, c, pigment);
+		list_add(p, c, pigment, -1);
 	else if (!p->at) {
 		for (int k = 0; k < 5; k++)
 			m->pigment[k] = (float)c[k];
@@ -598,7 +625,7 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 		for (int k = 0; k < 5; k++)
 			c[k] = v.mat.pigment[k];
 		eval_value_free(&v);   /* its pattern's name, when it has one */
-		list_add(p, c, v.mat.pattern);
+		list_add(p, c, v.mat.pattern, -1);
 		return 0;
 	}
 	xform t = scene_xform_identity();
@@ -883,6 +910,8 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	int skip = pattern_word(e, c, item, p);
 	if (skip <= 0)
 		return skip;
+	if ((skip = pattern_start(e, item, p)) <= 0)
+		return skip;
 	if (AST_IS_EXPRESSION(item->kind) && first) {
 		if (eval_expect_kind(e, item, V_TEXTURE, &v))
 			return -1;
@@ -891,10 +920,8 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	}
 	if (item->kind == AST_BLOCK && (item->kw == KW_PIGMENT || item->kw == KW_FINISH || item->kw == KW_NORMAL))
 		return eval_material_block(e, item, m);
-	if (is_pattern(item)) {
-		start_pattern(p, item, ast_keyword_name(item->kw));
-		return 0;
-	}
+	if (p->at && p->kind > 0 && (skip = eval_pattern_modifier(e, c, item, &p->pg)) <= 0)
+		return skip;
 	if ((item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str) &&
 	     strcmp(eval_pov_word(item->str), "other") != 0) || (item->kind == AST_BLOCK && item->kw == KW_OBJECT)) {
 		start_pattern(p, item, item->kw == KW_OBJECT ? "object" : item->str);   /* slope { }, object { } */
@@ -910,8 +937,8 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 		double c[5];
 		for (int k = 0; k < 5; k++)
 			c[k] = v.mat.pigment[k];
+		list_add(p, c, -1, scene_add_texture(e->s, &v.mat));
 		eval_value_free(&v);   /* its pattern's name, when it has one */
-		list_add(p, c, -1);
 		return 0;
 	}
 	xform t = scene_xform_identity();
@@ -927,6 +954,34 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	return eval_not_valid(e, item, "a texture");
 }
 
+/* The end of a texture with a pattern: a pattern of whole textures, its
+ * entries the textures of its texture_map or of its list; or, for a pattern
+ * eclat does not have, the average of the textures, warned about; a pattern
+ * with no textures is ignored, warned about. The texture's transformations (tex_xf) place the pattern and
+ * its textures together. */
+static void texture_pattern(struct eval *e, struct pattern *p, scene_material *m)
+{
+	double col[5];
+	bool whole = p->kind > 0 && p->kind != PATTERN_IMAGE_MAP && (p->n_list > 0 || (p->has_map && p->map_finish &&
+	                                                                             p->map_pigment >= 0));
+	if (!whole && p->kind > 0 && p->kind != PATTERN_IMAGE_MAP && !p->has_map) {
+		/* POV-Ray's entries are empty: nothing is shaded (black) */
+		eval_warning(e, p->at->loc, "'%s' in a texture needs textures (a texture_map, or textures after it); "
+		             "ignored", p->name);
+		return;
+	}
+	if (!whole)
+		p->kind = -1;
+	if (whole && p->n_list > 0 && p->has_map)
+		p->n_list = 0;   /* POV-Ray reads the last: a map after the list replaces it */
+	pattern_result(e, p, col, &m->texture_map);
+	if (p->map_finish)
+		copy_finish(m, &p->map_mat);
+	for (int k = 0; k < 5; k++)
+		m->pigment[k] = (float)col[k];
+	m->pattern = m->normal = m->layers = -1;
+}
+
 static int texture_block(struct eval *e, const ast_node *b, scene_material *m)
 {
 	struct pattern p = { 0 };
@@ -940,18 +995,13 @@ static int texture_block(struct eval *e, const ast_node *b, scene_material *m)
 		first = false;
 	}
 	eval_cursor_free(&c);
-	if (rc || err)
+	if (rc || err) {
+		free(p.pg.map);
 		return -1;
-	if (p.at) {
-		double col[5];
-		p.kind = -1;   /* patterns of whole textures: their average, for now */
-		p.of_texture = true;
-		pattern_result(e, &p, col, &m->pattern);
-		if (p.map_finish)
-			copy_finish(m, &p.map_mat);
-		for (int k = 0; k < 5; k++)
-			m->pigment[k] = (float)col[k];
 	}
+	if (p.at)
+		texture_pattern(e, &p, m);
+	free(p.pg.map);
 	return 0;
 }
 

@@ -924,6 +924,7 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 		out->params.sky = i == 0 ? m : out->params.sky;
 		out->params.sky_layers = i + 1;
 	}
+	lower_textures_append(&lw.textures, &lw.mats, &lw.n_mats);
 	out->materials = lw.mats;
 	out->n_materials = lw.n_mats;
 	out->textures = lw.textures;

@@ -49,6 +49,8 @@ typedef struct {
 	float4 *texels;           /* theirs, in the working gamma */
 	long n_texels;
 	int see_through;          /* some colour has filter or transmit */
+	dev_material *subs;       /* the textures of texture_maps and the lower layers, until appended */
+	int n_subs, cap_subs;
 } lower_textures;
 
 typedef struct {
@@ -91,6 +93,9 @@ const char *lower_kernel_options(const lower_result *lr);
  * by ambient_light); its pattern pigments go into lt. local: a mesh's own
  * texture, whose patterns are in the mesh's space. */
 dev_material lower_texture(lower_textures *lt, const scene *s, const scene_material *m, int local);
+/* Appends the materials of texture_maps' entries and lower layers (lt->subs)
+ * after *mats, and makes the references to them indices into *mats. */
+void lower_textures_append(lower_textures *lt, dev_material **mats, int *n_mats);
 void lower_textures_free(lower_textures *lt);
 /* The inverse of an affine transform; -1 when it is singular. */
 int lower_invert(const xform *t, xform *inv);

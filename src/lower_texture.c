@@ -4,7 +4,13 @@
  * Each use of a pattern pigment is flattened with the transformations it is
  * placed under, so a pattern's rows map world space (a mesh's own space for a
  * mesh's textures) straight into its own space: the kernel applies one affine
- * map per pattern, however deep the pigment sits in maps. */
+ * map per pattern, however deep the pigment sits in maps.
+ *
+ * A pattern of whole textures and a layered texture become several
+ * dev_materials: the one the primitives use, and the entries' and lower
+ * layers' materials, kept in lt->subs (placed the same way) and appended after
+ * every other material at the end (lower_textures_append). Each holds the
+ * object's interior. */
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -16,6 +22,9 @@
 /* How deep pigments nest in maps on the device (texture.cl's stack holds the
  * pigments waiting at one depth and one at each above). */
 #define NEST_MAX 6
+/* How deep patterns of whole textures nest: texture.cl blends at most
+ * 2^TEXTURE_NEST_MAX textures at a point (TEXTURE_BLEND). */
+#define TEXTURE_NEST_MAX 3
 
 static void *grow_to(void *p, int *cap, int need, size_t size)
 {
@@ -46,7 +55,7 @@ static float4 f4v(const double v[4])
 static dev_map_entry entry_colour(const float c[5], double value)
 {
 	return (dev_map_entry){ .colour = { c[0], c[1], c[2], c[3] }, .transmit = c[4], .value = (float)value,
-	                        .pigment = -1 };
+	                        .pigment = -1, .material = -1 };
 }
 
 static xform inverse_or_identity(const xform *t, src_loc loc)
@@ -110,11 +119,25 @@ static void lower_images(lower_textures *lt, const scene *s)
 	lt->n_images = s->n_images;
 }
 
+/* What the materials of one surface share while they are lowered: the
+ * object's interior, and whether they are a mesh's own. */
+struct surface {
+	const scene_material *interior;
+	int local;
+};
+
+static int lower_layers(lower_textures *lt, const scene *s, const struct surface *sf, int t, const xform *outer,
+                        int below, int depth);
+
 /* The pigment s->pigments[node] placed by to_world (the transformations
  * outside it, its space to world); returns its dev_pattern's index. The outer
  * transformations join the front of its warps' list as POV-Ray's do (dev_warp):
- * the front transformation becomes the rows, the others transform warps. */
-static int flatten(lower_textures *lt, const scene *s, int node, const xform *to_world, int depth)
+ * the front transformation becomes the rows, the others transform warps.
+ * With sf, the pigment is a pattern of whole textures at texture depth depth:
+ * its entries' textures become materials in lt->subs, placed by every
+ * transformation of the pattern (POV-Ray evaluates them at the pattern's point). */
+static int flatten(lower_textures *lt, const scene *s, int node, const xform *to_world, int depth,
+                   const struct surface *sf)
 {
 	const scene_pigment *pg = &s->pigments[node];
 	const scene_warp *w = pg->warps;
@@ -157,13 +180,15 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 	for (int i = 0; i < pg->n_map; i++) {
 		const scene_map_entry *e = &pg->map[i];
 		dev_map_entry de = entry_colour(e->colour, e->value);
-		if (e->pigment >= 0 && depth + 1 < NEST_MAX)
-			de.pigment = flatten(lt, s, e->pigment, &inner, depth + 1);
+		if (sf)
+			de.material = lower_layers(lt, s, sf, e->texture, &inner, -1, depth + 1);
+		else if (e->pigment >= 0 && depth + 1 < NEST_MAX)
+			de.pigment = flatten(lt, s, e->pigment, &inner, depth + 1, NULL);
 		else if (e->pigment >= 0)
 			diag_warning(pg->loc, "pigments nested more than %d deep in maps: the deeper ones are "
 			             "their average colour", NEST_MAX);
 		lt->maps[first + i] = de;
-		if (e->colour[3] != 0 || e->colour[4] != 0)
+		if (!sf && (e->colour[3] != 0 || e->colour[4] != 0))
 			lt->see_through = 1;
 	}
 	if (pg->kind == PATTERN_IMAGE_MAP) {
@@ -177,10 +202,15 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 	return at;
 }
 
-dev_material lower_texture(lower_textures *lt, const scene *s, const scene_material *m, int local)
+/* One texture's material (no layers, no pattern of textures), placed by
+ * to_world, with the surface's interior. */
+static dev_material lower_plain(lower_textures *lt, const scene *s, const struct surface *sf, const scene_material *m,
+                                const xform *to_world)
 {
 	const float *p = m->pigment;
 	const float *al = s->ambient_light;
+	const scene_material *in = sf->interior;
+	int local = sf->local;
 	dev_material d = {
 		.pigment = { p[0], p[1], p[2], p[3] },
 		.ambient = { m->ambient[0] * al[0], m->ambient[1] * al[1], m->ambient[2] * al[2], p[4] },
@@ -191,25 +221,105 @@ dev_material lower_texture(lower_textures *lt, const scene *s, const scene_mater
 		.reflection_max = { m->reflection_max[0], m->reflection_max[1], m->reflection_max[2],
 		                    m->reflection_exponent != 0 ? 1 / m->reflection_exponent : 1 },
 		.terms = { m->brilliance, m->metallic, m->reflection_metallic, m->reflection_fresnel },
-		.interior = { m->ior > 0 ? m->ior : 1, m->fade_distance, m->fade_power, m->conserve_energy },
-		.fade_color = { m->fade_color[0], m->fade_color[1], m->fade_color[2], 0 },
+		.interior = { in->ior > 0 ? in->ior : 1, in->fade_distance, in->fade_power, m->conserve_energy },
+		.fade_color = { in->fade_color[0], in->fade_color[1], in->fade_color[2], 0 },
 		.pattern = -1,
 		.normal = -1,
+		.below = -1,
 		.flags = (local ? MATERIAL_LOCAL : 0) | (m->roughness_set ? MATERIAL_ROUGH : 0),
 	};
 	if (p[3] != 0 || p[4] != 0)
 		lt->see_through = 1;
 	if (m->pattern >= 0 && m->pattern < s->n_pigments)
-		d.pattern = flatten(lt, s, m->pattern, &m->tex_xf, 0);
+		d.pattern = flatten(lt, s, m->pattern, to_world, 0, NULL);
 	/* the kernels do not perturb the normals of a mesh's own textures yet */
 	if (m->normal >= 0 && m->normal < s->n_pigments && !local)
-		d.normal = flatten(lt, s, m->normal, &m->tex_xf, 0);
+		d.normal = flatten(lt, s, m->normal, to_world, 0, NULL);
 	return d;
+}
+
+static int add_sub(lower_textures *lt)
+{
+	lt->subs = grow_to(lt->subs, &lt->cap_subs, lt->n_subs + 1, sizeof *lt->subs);
+	return lt->n_subs++;
+}
+
+/* A texture's material placed by to_world (its own transformations in it) at
+ * texture depth depth: a pattern of whole textures, whose entries go into
+ * lt->subs; deeper than TEXTURE_NEST_MAX, its average texture, warned about. */
+static dev_material lower_one(lower_textures *lt, const scene *s, const struct surface *sf, const scene_material *m,
+                              const xform *to_world, int depth)
+{
+	dev_material d = lower_plain(lt, s, sf, m, to_world);
+	if (m->texture_map < 0 || m->texture_map >= s->n_pigments)
+		return d;
+	if (depth >= TEXTURE_NEST_MAX) {
+		diag_warning(s->pigments[m->texture_map].loc, "patterns of whole textures nested more than %d deep: "
+		             "the deeper ones are their average texture", TEXTURE_NEST_MAX);
+		return d;
+	}
+	d.flags |= MATERIAL_TEXTURE_MAP;
+	d.pattern = flatten(lt, s, m->texture_map, to_world, depth, sf);
+	return d;
+}
+
+/* The layers of texture t of the pool, placed in outer (the space of the
+ * texture that holds them), into lt->subs; the bottom one's below is below.
+ * Returns the top layer's index in lt->subs, or below when t is none. A
+ * layered texture in the pool (t's layers) is its layers, in its own space. */
+static int lower_layers(lower_textures *lt, const scene *s, const struct surface *sf, int t, const xform *outer,
+                        int below, int depth)
+{
+	if (t < 0 || t >= s->n_textures)
+		return below;
+	const scene_material *m = &s->textures[t];
+	int rest = lower_layers(lt, s, sf, m->below, outer, below, depth);
+	xform own = scene_xform_then(&m->tex_xf, outer);
+	if (m->layers >= 0)
+		return lower_layers(lt, s, sf, m->layers, &own, rest, depth);
+	int at = add_sub(lt);
+	dev_material d = lower_one(lt, s, sf, m, &own, depth);
+	d.below = rest;
+	lt->subs[at] = d;
+	return at;
+}
+
+dev_material lower_texture(lower_textures *lt, const scene *s, const scene_material *m, int local)
+{
+	struct surface sf = { m, local };
+	if (m->layers < 0)
+		return lower_one(lt, s, &sf, m, &m->tex_xf, 0);
+	int top = lower_layers(lt, s, &sf, m->layers, &m->tex_xf, -1, 0);
+	return lt->subs[top];   /* a copy: the primitives' own index */
+}
+
+void lower_textures_append(lower_textures *lt, dev_material **mats, int *n_mats)
+{
+	int base = *n_mats;
+	if (lt->n_subs == 0)
+		return;
+	*mats = realloc(*mats, (size_t)(base + lt->n_subs) * sizeof **mats);
+	if (!*mats) {
+		fprintf(stderr, "eclat: out of memory\n");
+		exit(1);
+	}
+	memcpy(*mats + base, lt->subs, (size_t)lt->n_subs * sizeof *lt->subs);
+	*n_mats = base + lt->n_subs;
+	for (int i = 0; i < *n_mats; i++)
+		if ((*mats)[i].below >= 0)
+			(*mats)[i].below += base;
+	for (int i = 0; i < lt->n_maps; i++)
+		if (lt->maps[i].material >= 0)
+			lt->maps[i].material += base;
+	free(lt->subs);
+	lt->subs = NULL;
+	lt->n_subs = lt->cap_subs = 0;
 }
 
 void lower_textures_free(lower_textures *lt)
 {
 	free(lt->patterns);
+	free(lt->subs);
 	free(lt->warps);
 	free(lt->maps);
 	free(lt->images);

@@ -134,6 +134,14 @@ int scene_add_pigment(scene *s, const scene_pigment *p)
 	return s->n_pigments++;
 }
 
+int scene_add_texture(scene *s, const scene_material *m)
+{
+	if (s->n_textures == s->cap_textures)
+		s->textures = grow(s->textures, &s->cap_textures, sizeof *m);
+	s->textures[s->n_textures] = *m;
+	return s->n_textures++;
+}
+
 int scene_add_image(scene *s, const scene_image *im)
 {
 	if (s->n_images == s->cap_images)
@@ -175,6 +183,7 @@ void scene_free(scene *s)
 	for (int i = 0; i < s->n_pigments; i++)
 		free(s->pigments[i].map);
 	free(s->pigments);
+	free(s->textures);
 	free(s->sky_layers);
 	for (int i = 0; i < s->n_images; i++) {
 		free(s->images[i].key);
@@ -191,6 +200,9 @@ scene_material scene_default_material(void)
 		.pattern = -1,
 		.normal = -1,
 		.tex_xf = scene_xform_identity(),
+		.texture_map = -1,
+		.layers = -1,
+		.below = -1,
 		.ambient = { 0.1f, 0.1f, 0.1f },
 		.diffuse = 0.6f,
 		.brilliance = 1,
@@ -360,6 +372,12 @@ static void material(FILE *out, const scene_material *m)
 		fprintf(out, " pattern %d", m->pattern);
 	if (m->normal >= 0)
 		fprintf(out, " normal %d", m->normal);
+	if (m->texture_map >= 0)
+		fprintf(out, " texture_map %d", m->texture_map);
+	if (m->layers >= 0)
+		fprintf(out, " layers %d", m->layers);
+	if (m->below >= 0)
+		fprintf(out, " below %d", m->below);
 	fputs(" diffuse ", out);
 	num(out, m->diffuse);
 	double e[3] = { m->emission[0], m->emission[1], m->emission[2] };
@@ -515,17 +533,41 @@ const char *scene_pattern_name(int kind)
 	return kind >= 0 && kind < PATTERN_COUNT ? pattern_names[kind] : "?";
 }
 
-/* The pattern pigments that materials use, and those their maps nest, once each. */
-static void mark_pigment(const scene *s, int i, bool *used)
+/* The pattern pigments that materials use, and those their maps nest, once
+ * each; used: 1 for a pigment, 2 for a pattern of whole textures. The textures
+ * of the pool that those hold and layers are marked in used_tex. */
+static void mark_material(const scene *s, const scene_material *m, char *used, bool *used_tex);
+
+static void mark_pigment(const scene *s, int i, char *used, bool *used_tex, bool textures)
 {
 	if (i < 0 || i >= s->n_pigments || used[i])
 		return;
-	used[i] = true;
-	for (int k = 0; k < s->pigments[i].n_map; k++)
-		mark_pigment(s, s->pigments[i].map[k].pigment, used);
+	used[i] = textures ? 2 : 1;
+	for (int k = 0; k < s->pigments[i].n_map; k++) {
+		const scene_map_entry *e = &s->pigments[i].map[k];
+		if (!textures) {
+			mark_pigment(s, e->pigment, used, used_tex, false);
+		} else if (e->texture >= 0 && e->texture < s->n_textures && !used_tex[e->texture]) {
+			used_tex[e->texture] = true;
+			mark_material(s, &s->textures[e->texture], used, used_tex);
+		}
+	}
 }
 
-static void dump_pigment(FILE *out, int index, const scene_pigment *pg)
+static void mark_material(const scene *s, const scene_material *m, char *used, bool *used_tex)
+{
+	mark_pigment(s, m->pattern, used, used_tex, false);
+	mark_pigment(s, m->normal, used, used_tex, false);
+	mark_pigment(s, m->texture_map, used, used_tex, true);
+	int layers[2] = { m->layers, m->below };
+	for (int i = 0; i < 2; i++)
+		if (layers[i] >= 0 && layers[i] < s->n_textures && !used_tex[layers[i]]) {
+			used_tex[layers[i]] = true;
+			mark_material(s, &s->textures[layers[i]], used, used_tex);
+		}
+}
+
+static void dump_pigment(FILE *out, int index, const scene_pigment *pg, bool textures)
 {
 	fprintf(out, "pigment %d %s", index, scene_pattern_name(pg->kind));
 	double params[8];
@@ -565,6 +607,10 @@ static void dump_pigment(FILE *out, int index, const scene_pigment *pg)
 	for (const scene_map_entry *e = pg->map; e < pg->map + pg->n_map; e++) {
 		fputs(" [", out);
 		num(out, e->value);
+		if (textures) {
+			fprintf(out, " texture %d]", e->texture);
+			continue;
+		}
 		if (e->pigment >= 0) {
 			fprintf(out, " pigment %d]", e->pigment);
 			continue;
@@ -578,24 +624,34 @@ static void dump_pigment(FILE *out, int index, const scene_pigment *pg)
 	fputc('\n', out);
 }
 
+/* The pattern pigments and the pool's textures that the objects use. */
 static void dump_pigments(FILE *out, const scene *s)
 {
-	bool *used = calloc(s->n_pigments + 1, sizeof *used);
-	if (!used)
+	char *used = calloc(s->n_pigments + 1, sizeof *used);
+	bool *used_tex = calloc(s->n_textures + 1, sizeof *used_tex);
+	if (!used || !used_tex) {
+		free(used);
+		free(used_tex);
 		return;
-	for (int i = 0; i < s->n_objects; i++) {
-		mark_pigment(s, s->objects[i].material.pattern, used);
-		mark_pigment(s, s->objects[i].material.normal, used);
 	}
+	for (int i = 0; i < s->n_objects; i++)
+		mark_material(s, &s->objects[i].material, used, used_tex);
 	for (int m = 0; m < s->n_meshes; m++)
-		for (int i = 0; i < s->meshes[m].n_mats; i++) {
-			mark_pigment(s, s->meshes[m].mats[i].pattern, used);
-			mark_pigment(s, s->meshes[m].mats[i].normal, used);
+		for (int i = 0; i < s->meshes[m].n_mats; i++)
+			mark_material(s, &s->meshes[m].mats[i], used, used_tex);
+	for (int i = 0; i < s->n_textures; i++)
+		if (used_tex[i]) {
+			fprintf(out, "texture %d", i);
+			material(out, &s->textures[i]);
+			if (!identity(&s->textures[i].tex_xf))
+				matrix(out, &s->textures[i].tex_xf);
+			fputc('\n', out);
 		}
 	for (int i = 0; i < s->n_pigments; i++)
 		if (used[i])
-			dump_pigment(out, i, &s->pigments[i]);
+			dump_pigment(out, i, &s->pigments[i], used[i] == 2);
 	free(used);
+	free(used_tex);
 }
 
 void scene_dump(const scene *s, FILE *out)

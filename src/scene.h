@@ -27,11 +27,13 @@ void scene_xform_point(const xform *t, const double p[3], double out[3]);
 void scene_xform_vector(const xform *t, const double v[3], double out[3]);
 
 /* A pattern pigment's map entry: a colour, or a nested pigment (a pigment_map
- * entry, or checker pigment { } pigment { }). */
+ * entry, or checker pigment { } pigment { }); in a pattern of whole textures
+ * (scene_material.texture_map), a texture, with its average colour. */
 typedef struct {
 	double value;
 	float colour[5];         /* rgb, filter, transmit */
 	int pigment;             /* an index into scene.pigments, or -1: the colour */
+	int texture;             /* a texture_map's: an index into scene.textures (set in those only) */
 } scene_map_entry;
 
 /* A warp { } of a pattern, its classic turbulence, or a transformation
@@ -91,6 +93,14 @@ typedef struct {
 	int normal;              /* the normal's pattern (scene.pigments), or -1: none */
 	xform tex_xf;            /* the texture's space to world (to the mesh's space for a
 	                          * mesh's own textures): the transformations written after it */
+	/* A pattern of whole textures, or layered textures: then pigment[] is their
+	 * average and the finish the first's (or the top layer's), for what needs one
+	 * texture; tex_xf places the pattern and its textures, or the layers. */
+	int texture_map;         /* the pattern (scene.pigments) whose map's entries are
+	                          * textures (scene_map_entry.texture), or -1 */
+	int layers;              /* the top layer (scene.textures), or -1: not layered */
+	int below;               /* in scene.textures, a layer's next layer down, or -1;
+	                          * it shares the layer's outer space (tex_xf of the layers' owner) */
 	/* finish */
 	float ambient[3];        /* 0.1 */
 	float diffuse;           /* 0.6 */
@@ -233,6 +243,9 @@ typedef struct {
 	int n_csgs, cap_csgs;
 	scene_pigment *pigments;   /* the pattern pigments' pool, scene_material.pattern */
 	int n_pigments, cap_pigments;
+	scene_material *textures;  /* the pool of textures that texture_maps and layers hold
+	                            * (scene_material.texture_map, layers, below), never changed once made */
+	int n_textures, cap_textures;
 	scene_image *images;       /* the image_maps' images, params[0][0] of their pigments */
 	int n_images, cap_images;
 	float background[3];
@@ -258,6 +271,8 @@ void scene_add_object(scene *s, const scene_object *o);
 void scene_add_light(scene *s, const scene_light *l);
 /* Takes ownership of p's map; returns its index. */
 int scene_add_pigment(scene *s, const scene_pigment *p);
+/* A texture into the pool scene.textures; returns its index. */
+int scene_add_texture(scene *s, const scene_material *m);
 /* Takes ownership of im's key and pixels; returns its index. */
 int scene_add_image(scene *s, const scene_image *im);
 /* Takes ownership of m's arrays; returns its index. */

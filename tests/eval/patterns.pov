@@ -13,8 +13,9 @@
 //  bozo without a map: 0.5 (its map is POV-Ray's default one);
 //  a declared pattern pigment with a colour_map after it takes the map's
 //    average: <0.5, 0, 0.5>;
-//  a texture_map: the average pigment (0.5) and the first texture's finish,
-//    with a warning: patterns of whole textures are not rendered yet;
+//  a texture_map: a pattern of whole textures ("texture_map N", its entries
+//    the "texture N" lines), the average pigment (0.5) and the first
+//    texture's finish for what needs one texture;
 //  [0.0 blue 0.4] [1 red 1 green 0.5] (a value, then a colour of components):
 //    <0.5, 0.25, 0.2>;
 //  average, whose values are weights: [1 rgb x] [3 rgb z] -> <0.25, 0, 0.75>,
