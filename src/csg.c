@@ -45,7 +45,12 @@ bool csg_classify(const int *ops, int n, int k, bool (*inside)(void *ctx, int le
 {
 	/* the stacks: with the point inside leaf k, outside it, and whether an
 	 * entry holds leaf k */
-	bool v1[CSG_STACK], v0[CSG_STACK], has[CSG_STACK];
+	int depth = csg_depth(ops, n);
+	bool *v1 = malloc(3 * (depth + 1) * sizeof *v1), *v0 = v1 + depth + 1, *has = v0 + depth + 1;
+	if (!v1) {
+		fputs("eclat: out of memory\n", stderr);
+		exit(1);
+	}
 	int sp = 0;
 	for (int i = 0; i < n; i++) {
 		int op = csg_op_code(ops[i]), arg = csg_op_arg(ops[i]);
@@ -82,14 +87,21 @@ bool csg_classify(const int *ops, int n, int k, bool (*inside)(void *ctx, int le
 		has[base] = held >= 0;
 		sp = base + 1;
 	}
+	bool on = v1[0] != v0[0];
 	*flip = !v1[0];
-	return v1[0] != v0[0];
+	free(v1);
+	return on;
 }
 
 void csg_bounds(const int *ops, int n, int n_leaves, const double (*lo)[3], const double (*hi)[3],
                 double out_lo[3], double out_hi[3])
 {
-	double slo[CSG_STACK][3], shi[CSG_STACK][3];
+	int depth = csg_depth(ops, n);
+	double (*slo)[3] = malloc(2 * (depth + 1) * sizeof *slo), (*shi)[3] = slo + depth + 1;
+	if (!slo) {
+		fputs("eclat: out of memory\n", stderr);
+		exit(1);
+	}
 	int sp = 0;
 	for (int i = 0; i < n; i++) {
 		int op = csg_op_code(ops[i]), arg = csg_op_arg(ops[i]);
@@ -123,4 +135,5 @@ void csg_bounds(const int *ops, int n, int n_leaves, const double (*lo)[3], cons
 	}
 	memcpy(out_lo, slo[0], sizeof slo[0]);
 	memcpy(out_hi, shi[0], sizeof shi[0]);
+	free(slo);
 }

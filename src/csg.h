@@ -35,7 +35,8 @@ void csg_push(csg_prog *p, int op, int arg);
 /* Appends the ops of src with its leaf numbers moved up by shift. */
 void csg_append(csg_prog *p, const int *src, int n, int shift);
 
-/* The deepest the program's stack gets. */
+/* The deepest the program's stack gets. The functions below take programs of
+ * any depth (the kernels' limit, CSG_STACK, is lowering's to check). */
 int csg_depth(const int *ops, int n);
 
 /* Whether the point of leaf k's surface is on the CSG's surface, the other

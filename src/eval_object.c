@@ -617,6 +617,8 @@ static int union_block(struct eval *e, const ast_node *b, value *out)
 static int csg_block(struct eval *e, const ast_node *b, value *out)
 {
 	const char *name = ast_keyword_name(b->kw);
+	char an[40];
+	with_article(name, an, sizeof an);
 	int op = b->kw == KW_MERGE ? CSG_OR : CSG_AND;
 	bool difference = b->kw == KW_DIFFERENCE;
 	struct cursor c;
@@ -630,7 +632,7 @@ static int csg_block(struct eval *e, const ast_node *b, value *out)
 		if (!eval_is_object_block(item)) {
 			if (!modifiers_seen) {   /* the parts are complete: the program is too */
 				if (parts < 2)
-					eval_warning(e, b->loc, "a %s should have at least 2 objects (POV-Ray's warning)", name);
+					eval_warning(e, b->loc, "%s should have at least 2 objects (POV-Ray's warning)", an);
 				if (parts == 0)
 					csg_push(&p, CSG_LEAF, CSG_NO_LEAF);
 				csg_group(out->obj, &p, b->loc);
@@ -672,7 +674,7 @@ static int csg_block(struct eval *e, const ast_node *b, value *out)
 	}
 	if (rc == 0 && !err && !modifiers_seen) {
 		if (parts < 2)
-			eval_warning(e, b->loc, "a %s should have at least 2 objects (POV-Ray's warning)", name);
+			eval_warning(e, b->loc, "%s should have at least 2 objects (POV-Ray's warning)", an);
 		if (parts == 0)
 			csg_push(&p, CSG_LEAF, CSG_NO_LEAF);
 		csg_group(out->obj, &p, b->loc);
