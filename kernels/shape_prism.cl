@@ -57,7 +57,7 @@ inline void prism_chunk_box(float4 box, float h1, float h2, bool conic, float3 *
 	}
 }
 
-#define PRISM_EDGE_EPS 1e-5f   /* how far past its ends an edge is still hit: no cracks at corners */
+#define PRISM_EDGE_EPS 1e-6f   /* how far past its ends an edge is still hit: no cracks at corners */
 
 inline float prism_intersect(float3 wo, float3 wd, global const dev_prim *prims, global const dev_prim *p,
                              float tmin, float tmax)
