@@ -300,7 +300,7 @@ static int prism_keyword(struct eval *e, const ast_node *item, int *spline, bool
 			*spline = i;
 			return 0;
 		}
-	if (strcmp(item->str, "linear_sweep") == 0 || strcmp(item->str, "conic_sweep") == 0) {
+	if (strcmp(item->str, AST_WORD_LINEAR_SWEEP) == 0 || strcmp(item->str, AST_WORD_CONIC_SWEEP) == 0) {
 		*conic = item->str[0] == 'c';
 		return 0;
 	}
@@ -637,7 +637,7 @@ static int text_args(struct eval *e, struct cursor *c, const ast_node *b, scene_
 	const ast_node *item = eval_next(c, &err);
 	char *font = NULL, *str = NULL;
 	src_loc font_loc = item ? item->loc : b->loc;
-	if (item && item->kind == AST_IDENT && strcmp(item->str, "ttf") == 0) {
+	if (item && item->kind == AST_IDENT && strcmp(item->str, AST_WORD_TTF) == 0) {
 		const ast_node *arg = eval_next_expr(c, &err);
 		if (!arg || eval_expect_string(e, arg, &font)) {
 			if (!arg && !err)
@@ -645,7 +645,7 @@ static int text_args(struct eval *e, struct cursor *c, const ast_node *b, scene_
 			return -1;
 		}
 		font_loc = arg->loc;
-	} else if (item && item->kind == AST_IDENT && strcmp(item->str, "internal") == 0) {
+	} else if (item && item->kind == AST_IDENT && strcmp(item->str, AST_WORD_INTERNAL) == 0) {
 		double n;
 		if (next_float(e, c, b, "a font number after internal", &n))
 			return -1;
