@@ -61,7 +61,8 @@ typedef struct {
 	X(PLANE, plane) \
 	X(ELLIPSOID, ellipsoid) \
 	X(SMOOTH_TRIANGLE, smooth_triangle) \
-	X(BOX, box)
+	X(BOX, box) \
+	X(PRISM, prism)
 #define PRIM_ENUM_ROW(NAME, name) PRIM_##NAME,
 enum {
 	PRIM_SHAPES(PRIM_ENUM_ROW)
@@ -69,6 +70,10 @@ enum {
 	PRIM_CSG,        /* a CSG object: kernels/csg.cl classifies its leaves' hits */
 	PRIM_DATA,       /* numbers of the record before it, never hit by itself */
 };
+
+/* A prism's flags (polygon, prism and text: src/prism.h): no caps, one flat
+ * face (a polygon: no sides, no inside), conic_sweep. */
+enum { PRISM_OPEN = 1, PRISM_FLAT = 2, PRISM_CONIC = 4 };
 
 /* A primitive, 64 bytes. The BVH is two-level: the top level holds the scene's
  * primitives in world space and one instance per placed mesh; each mesh has a

@@ -315,6 +315,18 @@ enum kw_class {
 #define AST_WORD_TGA "tga"
 #define AST_WORD_PPM "ppm"
 #define AST_WORD_SYS "sys"
+/* polygon, prism, text and their words (eval_outline.c); open and sturm after
+ * any shape that takes them (eval_object.c) */
+#define AST_WORD_POLYGON "polygon"
+#define AST_WORD_PRISM "prism"
+#define AST_WORD_TEXT "text"
+#define AST_WORD_LINEAR_SWEEP "linear_sweep"
+#define AST_WORD_CONIC_SWEEP "conic_sweep"
+#define AST_WORD_BEZIER_SPLINE "bezier_spline"
+#define AST_WORD_TTF "ttf"
+#define AST_WORD_INTERNAL "internal"
+#define AST_WORD_OPEN "open"
+#define AST_WORD_STURM "sturm"
 
 enum ast_keyword {
 	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */

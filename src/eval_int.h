@@ -205,6 +205,10 @@ int eval_spline_call(struct eval *e, const ast_node *call, const value *spl, val
 /* trace(OBJECT, <Start>, <Direction> [, NORMAL]) (eval_trace.c) */
 int eval_trace(struct eval *e, const ast_node *call, value *out);
 
+/* The arguments of a shape whose class has no args string (polygon, prism,
+ * text: eval_outline.c), into o; -1 after an error. */
+int eval_outline_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
+
 /* ---- patterns (eval_pattern.c) ---- */
 /* The PATTERN_ of a pattern's name, or -1. */
 int eval_pattern_kind(const char *name);

@@ -551,7 +551,7 @@ static int shape(struct eval *e, const ast_node *b, value *out)
 	scene_object o = new_object(e, kind, b->loc);
 	struct cursor c;
 	eval_cursor_init(&c, e, b);
-	int rc = arguments(e, &c, b, k, &o);
+	int rc = k->args ? arguments(e, &c, b, k, &o) : eval_outline_arguments(e, &c, b, &o);
 	const char *bad = rc == 0 && k->check ? k->check(&o) : NULL;
 	if (bad) {
 		eval_error(e, b->loc, "%s", bad);

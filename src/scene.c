@@ -126,6 +126,14 @@ int scene_add_mesh(scene *s, scene_mesh *m)
 	return s->n_meshes++;
 }
 
+int scene_add_outline(scene *s, const scene_outline *o)
+{
+	if (s->n_outlines == s->cap_outlines)
+		s->outlines = grow(s->outlines, &s->cap_outlines, sizeof *o);
+	s->outlines[s->n_outlines] = *o;
+	return s->n_outlines++;
+}
+
 int scene_add_pigment(scene *s, const scene_pigment *p)
 {
 	if (s->n_pigments == s->cap_pigments)
@@ -178,6 +186,11 @@ void scene_free(scene *s)
 	for (int i = 0; i < s->n_meshes; i++)
 		scene_mesh_free(&s->meshes[i]);
 	free(s->meshes);
+	for (int i = 0; i < s->n_outlines; i++) {
+		free(s->outlines[i].edge);
+		free(s->outlines[i].glyph);
+	}
+	free(s->outlines);
 	free(s->objects);
 	free(s->lights);
 	for (int i = 0; i < s->n_pigments; i++)

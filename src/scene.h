@@ -131,14 +131,19 @@ typedef struct {
  *   sphere: p[0] centre, radius;  triangle: p[0..2] corners;
  *   smooth_triangle: p[0..2] corners, n[0..2] normals;  box: p[0], p[1] opposite corners;
  *   plane: p[0] normal, radius = distance along it;
- *   mesh: mesh, an index into scene.meshes, shared by every copy. */
+ *   mesh: mesh, an index into scene.meshes, shared by every copy;
+ *   polygon, prism, text: outline, an index into scene.outlines (src/prism.h
+ *   says what each keeps in p, n, radius and param). */
 #define SCENE_SHAPES(X) \
 	X(SPHERE, sphere) \
 	X(TRIANGLE, triangle) \
 	X(SMOOTH_TRIANGLE, smooth_triangle) \
 	X(BOX, box) \
 	X(PLANE, plane) \
-	X(MESH, mesh)
+	X(MESH, mesh) \
+	X(POLYGON, polygon) \
+	X(PRISM, prism) \
+	X(TEXT, text)
 #define SCENE_SHAPE_ENUM_ROW(NAME, name) SHAPE_##NAME,
 typedef enum { SCENE_SHAPES(SCENE_SHAPE_ENUM_ROW) SHAPE_KINDS } scene_shape;
 
@@ -161,6 +166,7 @@ typedef struct {
 	int csg;             /* 1 + the CSG object it is a leaf of (scene.csgs), or 0: it stands alone */
 	bool clip;           /* a clipped_by shape: it only says what is inside, and is never seen */
 	int mesh;
+	int outline;         /* polygon, prism, text: an index into scene.outlines */
 	xform xf;            /* object to world */
 	scene_material material;
 	bool textured;       /* false: takes the texture of an enclosing union, else the default */
@@ -189,6 +195,17 @@ typedef struct {
 	bool has_inside_vector;
 	src_loc loc;
 } scene_mesh;
+
+/* The edges of a polygon, prism or text in their plane (src/prism.h), each
+ * oriented so that the shape's inside is on its left: (x0, z0) to (x1, z1).
+ * A text's glyphs are even-odd areas of their own, united: glyph g's edges
+ * are glyph[g] to glyph[g + 1] - 1 (glyph NULL: one). Shared by every copy. */
+typedef struct {
+	double (*edge)[4];
+	int n_edges;
+	int *glyph;          /* n_glyphs + 1 entries, or NULL */
+	int n_glyphs;
+} scene_outline;
 
 typedef struct {
 	double location[3], direction[3], right[3], up[3];  /* final, after look_at */
@@ -241,6 +258,8 @@ typedef struct {
 	int n_meshes, cap_meshes;
 	scene_csg *csgs;
 	int n_csgs, cap_csgs;
+	scene_outline *outlines;
+	int n_outlines, cap_outlines;
 	scene_pigment *pigments;   /* the pattern pigments' pool, scene_material.pattern */
 	int n_pigments, cap_pigments;
 	scene_material *textures;  /* the pool of textures that texture_maps and layers hold
@@ -279,6 +298,8 @@ int scene_add_image(scene *s, const scene_image *im);
 int scene_add_mesh(scene *s, scene_mesh *m);
 /* Takes ownership of c's ops; returns its index. */
 int scene_add_csg(scene *s, const scene_csg *c);
+/* Takes ownership of o's arrays; returns its index. */
+int scene_add_outline(scene *s, const scene_outline *o);
 void scene_free(scene *s);
 /* Frees a mesh's arrays (those of a mesh not added to a scene: scene_free frees
  * the scene's own). */

@@ -35,7 +35,10 @@ typedef struct {
 typedef struct {
 	const char *name;    /* the keyword */
 	/* Positional arguments, in order: v a vector, f a float (the first goes to
-	 * radius, the others to param[0], param[1]...); after '|', optional. */
+	 * radius, the others to param[0], param[1]...); after '|', optional.
+	 * NULL: arguments of no fixed shape (a count and then that many points,
+	 * keywords, strings), which src/eval_outline.c reads for the kind (polygon,
+	 * prism, text); a new such shape adds its reader there. */
 	const char *args;
 	const char *needs;   /* what an error says the shape needs: "a centre and a radius" */
 	int flags;           /* SHAPE_OPEN, SHAPE_STURM: the flags it takes */
