@@ -8,7 +8,7 @@
  * parts' inner surfaces (POV-Ray returns all of a union's hits): where the leaf
  * is under a union, the union answers as the leaf's own part does. */
 
-#define CSG_CROSSINGS 64   /* leaf surfaces a ray may cross in one CSG object, at most */
+#define CSG_CROSSINGS 256   /* leaf surfaces a ray may cross in one CSG object, at most */
 
 /* Whether the point x of leaf k's surface is on the CSG's surface; *flip when
  * the CSG's inside is on the leaf's outside there. The stacks are bits, the

@@ -64,7 +64,7 @@ static void trace_csg(const scene *sc, const struct objval *obj, const struct ob
 {
 	struct leaves c = { sc, &obj->objs[g->first], { 0, 0, 0 } };
 	double t = SHAPE_TRACE_EPSILON;
-	for (int crossing = 0; crossing < 64; crossing++) {
+	for (int crossing = 0; crossing < 256; crossing++) {   /* as kernels/csg.cl */
 		shape_hit h = { .t = out->t };
 		int which = -1;
 		for (int k = 0; k < g->n_leaves; k++) {
