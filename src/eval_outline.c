@@ -678,6 +678,16 @@ static int text_args(struct eval *e, struct cursor *c, const ast_node *b, scene_
 	}
 	o->radius = depth;
 	char *path = eval_find_file(e, font_loc.file, font);
+	if (!path && !strchr(font, '.')) {   /* POV-Ray adds .ttf to a name without one: ttf "cyrvetic" */
+		size_t n = strlen(font);
+		char *with = malloc(n + 5);
+		if (with) {
+			memcpy(with, font, n);
+			memcpy(with + n, ".ttf", 5);
+			path = eval_find_file(e, font_loc.file, with);
+			free(with);
+		}
+	}
 	FT_Library lib;
 	FT_Face face;
 	int rc = -1;
