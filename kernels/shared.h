@@ -62,7 +62,9 @@ typedef struct {
 	X(ELLIPSOID, ellipsoid) \
 	X(SMOOTH_TRIANGLE, smooth_triangle) \
 	X(BOX, box) \
-	X(PRISM, prism)
+	X(PRISM, prism) \
+	X(QUADRIC, quadric) \
+	X(SOR, sor)
 #define PRIM_ENUM_ROW(NAME, name) PRIM_##NAME,
 enum {
 	PRIM_SHAPES(PRIM_ENUM_ROW)

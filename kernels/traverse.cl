@@ -256,7 +256,7 @@ TRAVERSE_FUNCTION(traverse_top, {
 	}
 })
 
-/* The unbounded primitives (planes, and CSG objects with no bounds) after the
+/* The unbounded primitives (planes, quadrics, and CSG objects with no bounds) after the
  * top level's n_prims: every ray tests them. */
 inline traverse_hit traverse_planes(global const dev_prim *prims, int n_prims, int n_planes,
                                     float3 o, float3 d, float tmin, traverse_hit hit, uint *counts,
@@ -276,7 +276,7 @@ inline traverse_hit traverse_planes(global const dev_prim *prims, int n_prims, i
 			}
 			continue;
 		}
-		float t = plane_intersect(o, d, prims, &prims[i], tmin, hit.t);
+		float t = shape_intersect(o, d, prims, &prims[i], tmin, hit.t);
 		if (t < hit.t) {
 			hit.t = t;
 			hit.prim = i;

@@ -327,6 +327,10 @@ enum kw_class {
 #define AST_WORD_INTERNAL "internal"
 #define AST_WORD_OPEN "open"
 #define AST_WORD_STURM "sturm"
+/* quadric, sor, lathe (shape_quadric.c, eval_outline.c) */
+#define AST_WORD_QUADRIC "quadric"
+#define AST_WORD_SOR "sor"
+#define AST_WORD_LATHE "lathe"
 
 enum ast_keyword {
 	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */

@@ -21,6 +21,7 @@
 
 #include "eval_int.h"
 #include "prism.h"
+#include "revolve.h"
 
 #define POV_EPSILON 1e-10          /* POV-Ray's EPSILON: points this close are one */
 #define FLAT_TOLERANCE 1e-3        /* of the shape's size (a prism) or the em (text) */
@@ -717,12 +718,109 @@ static int text_args(struct eval *e, struct cursor *c, const ast_node *b, scene_
 	return rc;
 }
 
+/* ---- sor and lathe (src/revolve.h): their points as written ---- */
+
+static void store_points(struct eval *e, double (*P)[2], int n, scene_object *o)
+{
+	scene_outline ol = { .edge = eval_xrealloc(NULL, (n ? n : 1) * sizeof *ol.edge), .n_edges = n };
+	for (int i = 0; i < n; i++) {
+		ol.edge[i][0] = P[i][0];
+		ol.edge[i][1] = P[i][1];
+		ol.edge[i][2] = ol.edge[i][3] = 0;
+	}
+	o->outline = scene_add_outline(e->s, &ol);
+}
+
+static int read_points(struct eval *e, struct cursor *c, const ast_node *b, int n, double (**out)[2])
+{
+	double (*P)[2] = eval_xrealloc(NULL, (n ? n : 1) * sizeof *P);
+	for (int i = 0; i < n; i++) {
+		double p[3];
+		if (next_point(e, c, b, i, n, 2, p)) {
+			free(P);
+			return -1;
+		}
+		P[i][0] = p[0];
+		P[i][1] = p[1];
+	}
+	*out = P;
+	return 0;
+}
+
+/* sor { Number, <Point>... [open] [sturm] } (open and sturm are read with the modifiers) */
+static int sor_args(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o)
+{
+	int n;
+	double (*P)[2];
+	if (count_arg(e, c, b, &n))
+		return -1;
+	if (n < 4) {
+		eval_error(e, b->loc, "a sor needs at least four points, not %d", n);
+		return -1;
+	}
+	if (read_points(e, c, b, n, &P))
+		return -1;
+	const char *bad = revolve_sor_points((const double (*)[2])P, n);
+	if (bad) {
+		eval_error(e, b->loc, "%s", bad);
+		free(P);
+		return -1;
+	}
+	store_points(e, P, n, o);
+	free(P);
+	return 0;
+}
+
+/* lathe { [linear_spline | quadratic_spline | cubic_spline | bezier_spline] Number, <Point>... [sturm] } */
+static int lathe_args(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o)
+{
+	static const char *const splines[] = { "linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline" };
+	int spline = REVOLVE_LINEAR, err = 0, n;
+	const ast_node *item = eval_next(c, &err);
+	if (err)
+		return -1;
+	bool word = false;
+	if (item && item->kind == AST_IDENT && !eval_lookup(e, item->str))
+		for (int i = 0; i < 4; i++)
+			if (strcmp(item->str, splines[i]) == 0) {
+				spline = i;
+				word = true;
+			}
+	if (item && !word)
+		eval_unget(c, item);
+	if (count_arg(e, c, b, &n))
+		return -1;
+	o->param[0] = spline;
+	double (*P)[2];
+	if (n < 2 || n > 10000000) {
+		eval_error(e, b->loc, "%s, not %d", revolve_lathe_points(spline, NULL, 0), n);
+		return -1;
+	}
+	if (read_points(e, c, b, n, &P))
+		return -1;
+	const char *bad = revolve_lathe_points(spline, (const double (*)[2])P, n);
+	if (bad) {
+		eval_error(e, b->loc, bad == revolve_lathe_points(spline, NULL, 0) ? "%s, not %d" : "%s", bad, n);
+		free(P);
+		return -1;
+	}
+	bool ends = spline != REVOLVE_QUADRATIC ? P[0][0] < 0 || P[n - 1][0] < 0 : P[n - 1][0] < 0;
+	if (spline != REVOLVE_CUBIC && ends)
+		eval_warning(e, b->loc, "lathe with a first or last point with an x value < 0 (POV-Ray 3.7 warns: "
+		             "it leads to artifacts)");
+	store_points(e, P, n, o);
+	free(P);
+	return 0;
+}
+
 int eval_outline_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o)
 {
 	switch (o->shape) {
 	case SHAPE_POLYGON: return polygon_args(e, c, b, o);
 	case SHAPE_PRISM: return prism_args(e, c, b, o);
 	case SHAPE_TEXT: return text_args(e, c, b, o);
+	case SHAPE_SOR: return sor_args(e, c, b, o);
+	case SHAPE_LATHE: return lathe_args(e, c, b, o);
 	default:
 		eval_error(e, b->loc, "%s has no reader of its arguments", b->str);
 		return -1;

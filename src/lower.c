@@ -179,7 +179,10 @@ void lower_add_prim(struct lowering *lw, dev_prim p, int material, int object, c
 		push_prim(lw->target, p);
 		return;
 	}
-	if (p.type == PRIM_PLANE) {
+	int unbounded = p.type == PRIM_PLANE;   /* a plane, or a box past 1e9 (a quadric's) */
+	for (int k = 0; lo && k < 3; k++)
+		unbounded |= lo[k] <= -1e9 || hi[k] >= 1e9;
+	if (unbounded) {
 		push_prim(&lw->planes, p);
 		return;
 	}

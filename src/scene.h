@@ -133,7 +133,9 @@ typedef struct {
  *   plane: p[0] normal, radius = distance along it;
  *   mesh: mesh, an index into scene.meshes, shared by every copy;
  *   polygon, prism, text: outline, an index into scene.outlines (src/prism.h
- *   says what each keeps in p, n, radius and param). */
+ *   says what each keeps in p, n, radius and param);
+ *   quadric: p[0..2] <A,B,C>, <D,E,F>, <G,H,I>, radius J;
+ *   sor, lathe: outline, its points (src/revolve.h). */
 #define SCENE_SHAPES(X) \
 	X(SPHERE, sphere) \
 	X(TRIANGLE, triangle) \
@@ -143,7 +145,10 @@ typedef struct {
 	X(MESH, mesh) \
 	X(POLYGON, polygon) \
 	X(PRISM, prism) \
-	X(TEXT, text)
+	X(TEXT, text) \
+	X(QUADRIC, quadric) \
+	X(SOR, sor) \
+	X(LATHE, lathe)
 #define SCENE_SHAPE_ENUM_ROW(NAME, name) SHAPE_##NAME,
 typedef enum { SCENE_SHAPES(SCENE_SHAPE_ENUM_ROW) SHAPE_KINDS } scene_shape;
 
