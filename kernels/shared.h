@@ -61,7 +61,10 @@ typedef struct {
 	X(PLANE, plane) \
 	X(ELLIPSOID, ellipsoid) \
 	X(SMOOTH_TRIANGLE, smooth_triangle) \
-	X(BOX, box)
+	X(BOX, box) \
+	X(CYLINDER, cylinder) \
+	X(CONE, cone) \
+	X(DISC, disc)
 #define PRIM_ENUM_ROW(NAME, name) PRIM_##NAME,
 enum {
 	PRIM_SHAPES(PRIM_ENUM_ROW)

@@ -15,7 +15,7 @@
 const char *eval_pov_word(const char *name)
 {
 	static const char *const objects[] = {
-		"bicubic_patch", "blob", "cone", "cubic", "cylinder", "difference", "disc", "height_field",
+		"bicubic_patch", "blob", "cubic", "difference", "height_field",
 		"intersection", "isosurface", "julia_fractal", "lathe", "light_group", "merge", "ovus",
 		"parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
 		"sphere_sweep", "superellipsoid", "text", "torus",

@@ -121,14 +121,20 @@ typedef struct {
  *   sphere: p[0] centre, radius;  triangle: p[0..2] corners;
  *   smooth_triangle: p[0..2] corners, n[0..2] normals;  box: p[0], p[1] opposite corners;
  *   plane: p[0] normal, radius = distance along it;
- *   mesh: mesh, an index into scene.meshes, shared by every copy. */
+ *   mesh: mesh, an index into scene.meshes, shared by every copy;
+ *   cylinder: p[0] base, p[1] cap, radius, shape_flags SHAPE_OPEN;
+ *   cone: p[0] base, radius its radius, p[1] cap, param[0] its radius, SHAPE_OPEN;
+ *   disc: p[0] centre, p[1] normal, radius, param[0] the hole's radius (0: none). */
 #define SCENE_SHAPES(X) \
 	X(SPHERE, sphere) \
 	X(TRIANGLE, triangle) \
 	X(SMOOTH_TRIANGLE, smooth_triangle) \
 	X(BOX, box) \
 	X(PLANE, plane) \
-	X(MESH, mesh)
+	X(MESH, mesh) \
+	X(CYLINDER, cylinder) \
+	X(CONE, cone) \
+	X(DISC, disc)
 #define SCENE_SHAPE_ENUM_ROW(NAME, name) SHAPE_##NAME,
 typedef enum { SCENE_SHAPES(SCENE_SHAPE_ENUM_ROW) SHAPE_KINDS } scene_shape;
 

@@ -18,8 +18,8 @@
  * moved by delta. The rays are random, aimed at points of the surfaces, and
  * found by bisection on the host between two rays with different answers, so
  * they graze silhouettes and cross rims and edges exactly: there the device
- * may take either side, but must take one (a ray that slips between two of
- * a box's faces fails), and 2 delta to either side it must answer
+ * may take either side, but must take one (a ray that slips between a
+ * cylinder's cap and side fails), and 2 delta to either side it must answer
  * as the host (an edge drawn too far in or out fails). Every fourth scene lies
  * some hundreds of units from the origin.
  *
@@ -100,6 +100,45 @@ static void make_triangle(scene_object *o)
 		random_point(o->p[i], 1);
 }
 
+static void make_cylinder(scene_object *o)
+{
+	random_point(o->p[0], 1);
+	random_point(o->p[1], 1);
+	if (uniform() < 0.2)   /* along an axis, where POV-Ray's frame turns by 0 or 180 degrees */
+		for (int k = 0; k < 3; k++)
+			o->p[1][k] = k == 1 ? o->p[0][k] + (uniform() < 0.5 ? -1 : 1) : o->p[0][k];
+	o->radius = between(0.1, 0.8) * (uniform() < 0.1 ? -1 : 1);
+	o->shape_flags = uniform() < 0.4 ? SHAPE_OPEN : 0;
+}
+
+static void make_cone(scene_object *o)
+{
+	make_cylinder(o);
+	double u = uniform();
+	o->radius = between(0.1, 0.9);
+	/* a point, a frustum either way up, two cones point to point (radii of opposite signs) */
+	o->param[0] = u < 0.25 ? 0 : u < 0.8 ? between(0.05, 0.9) : -between(0.1, 0.9);
+	if (uniform() < 0.5) {
+		double r = o->radius;
+		o->radius = o->param[0];
+		o->param[0] = r;
+	}
+	if (uniform() < 0.1) {   /* both negative: a cylinder, as POV-Ray makes it */
+		o->radius = -fabs(o->radius);
+		o->param[0] = -fabs(o->param[0]) - 0.05;
+	}
+}
+
+static void make_disc(scene_object *o)
+{
+	random_point(o->p[0], 1);
+	random_direction(o->p[1]);
+	for (int k = 0; k < 3; k++)
+		o->p[1][k] *= between(0.2, 3);   /* any length */
+	o->radius = between(0.2, 1.2);
+	o->param[0] = uniform() < 0.5 ? 0 : between(0, 0.9) * o->radius;
+}
+
 static const struct maker {
 	const char *name;   /* the shape's keyword */
 	void (*make)(scene_object *o);
@@ -108,6 +147,9 @@ static const struct maker {
 	{ "box", make_box },
 	{ "plane", make_plane },
 	{ "triangle", make_triangle },
+	{ "cylinder", make_cylinder },
+	{ "cone", make_cone },
+	{ "disc", make_disc },
 };
 
 /* ---- scenes ---- */
