@@ -29,6 +29,15 @@ inline float3 intersect_to_local(global const dev_prim *p, float3 x)
 	return (float3)(dot(p->a.xyz, x) + p->a.w, dot(p->b.xyz, x) + p->b.w, dot(p->c.xyz, x) + p->c.w);
 }
 
+/* The same about a centre c, for a shape whose rows' w is the map's value at c
+ * (lower_local_rows_about): only x - c is rounded, which keeps a shape far
+ * from the origin as precise as one near it. */
+inline float3 intersect_to_local_about(global const dev_prim *p, float3 c, float3 x)
+{
+	float3 v = x - c;
+	return (float3)(dot(p->a.xyz, v) + p->a.w, dot(p->b.xyz, v) + p->b.w, dot(p->c.xyz, v) + p->c.w);
+}
+
 /* A direction into that space: not unit length there, so t keeps its meaning. */
 inline float3 intersect_dir_to_local(global const dev_prim *p, float3 d)
 {

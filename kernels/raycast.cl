@@ -13,3 +13,33 @@ kernel void raycast(global const bvh_node *nodes, global const dev_prim *prims, 
 	bool any = traverse_any(nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts);
 	hits[i] = (float4)(h.t, as_float(h.prim), as_float(h.inst), any ? 1.0f : 0.0f);
 }
+
+/* As raycast, and the surface: what tests/test_shapes.c checks against the
+ * shapes' own trace() on the host. surfaces: one float4 a ray, the closest
+ * hit's geometric normal in world space as the shape gives it (outward, not
+ * turned to face the ray); w: its object number (as int bits), -1 for none. */
+kernel void raycast_surface(global const bvh_node *nodes, global const dev_prim *prims, global const float4 *normals,
+                            int n_prims, int n_planes, global const float4 *rays, global float4 *hits,
+                            global float4 *surfaces)
+{
+	int i = get_global_id(0);
+	float3 o = rays[2 * i].xyz, d = rays[2 * i + 1].xyz;
+	float tmax = rays[2 * i].w;
+	uint counts[COUNT_N] = { 0 };
+	traverse_hit h = traverse_closest(nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts, RAY_CAMERA);
+	bool any = traverse_any(nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts);
+	hits[i] = (float4)(h.t, as_float(h.prim), as_float(h.inst), any ? 1.0f : 0.0f);
+	surfaces[i] = (float4)(0.0f, 0.0f, 0.0f, as_float(-1));
+	if (h.prim >= 0) {
+		intersect_surface s = intersect_surface_at(prims, normals, h.prim, h.inst, h.flip, o + h.t * d);
+		surfaces[i] = (float4)(s.ng, as_float(s.object));
+	}
+}
+
+/* Whether points are inside primitives (shape_inside, POV-Ray's Inside):
+ * points[i].xyz the point, w the primitive (as int bits); inside[i] 0 or 1. */
+kernel void inside_points(global const dev_prim *prims, global const float4 *points, global int *inside)
+{
+	int i = get_global_id(0);
+	inside[i] = shape_inside(prims, &prims[as_int(points[i].w)], points[i].xyz) ? 1 : 0;
+}

@@ -1,5 +1,11 @@
 /* shape_box.cl: POV-Ray's box, kept as the map from world space to the cube
- * [-1, 1]^3, so a transformed box is still one primitive. */
+ * [-1, 1]^3, so a transformed box is still one primitive; the map is about the
+ * box's centre, the a of its PRIM_DATA record (intersect_to_local_about). */
+
+inline float3 box_local(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	return intersect_to_local_about(p, intersect_data(prims, p).xyz, x);
+}
 
 /* The slabs of the cube: the entering face, or the leaving one from inside. A
  * direction component of 0 gives infinities of the same sign outside that slab
@@ -7,7 +13,7 @@
 inline float box_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                            float tmin, float tmax)
 {
-	float3 oo = intersect_to_local(p, o), dd = intersect_dir_to_local(p, d);
+	float3 oo = box_local(prims, p, o), dd = intersect_dir_to_local(p, d);
 	float3 inv = 1.0f / dd;
 	float3 t0 = (-1.0f - oo) * inv, t1 = (1.0f - oo) * inv;
 	float3 lo = fmin(t0, t1), hi = fmax(t0, t1);
@@ -20,7 +26,7 @@ inline float box_intersect(float3 o, float3 d, global const dev_prim *prims, glo
 /* The face the point is nearest to, in the cube's space. */
 inline float3 box_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
-	float3 q = intersect_to_local(p, x), a = fabs(q);
+	float3 q = box_local(prims, p, x), a = fabs(q);
 	float3 n = a.x >= a.y && a.x >= a.z ? (float3)(sign(q.x), 0.0f, 0.0f)
 	         : a.y >= a.z ? (float3)(0.0f, sign(q.y), 0.0f) : (float3)(0.0f, 0.0f, sign(q.z));
 	return intersect_normal_to_world(p, n);
@@ -28,6 +34,6 @@ inline float3 box_normal(global const dev_prim *prims, global const dev_prim *p,
 
 inline bool box_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
-	float3 a = fabs(intersect_to_local(p, x));
+	float3 a = fabs(box_local(prims, p, x));
 	return a.x < 1.0f && a.y < 1.0f && a.z < 1.0f;
 }

@@ -64,7 +64,10 @@ typedef struct {
 	X(BOX, box) \
 	X(PRISM, prism) \
 	X(QUADRIC, quadric) \
-	X(SOR, sor)
+	X(SOR, sor) \
+	X(CYLINDER, cylinder) \
+	X(CONE, cone) \
+	X(DISC, disc)
 #define PRIM_ENUM_ROW(NAME, name) PRIM_##NAME,
 enum {
 	PRIM_SHAPES(PRIM_ENUM_ROW)

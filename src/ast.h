@@ -271,7 +271,10 @@ enum kw_class {
  *   slope_map (eval_material.c); in image_map { }: image_map itself, the file
  *   formats (png, jpeg, tiff, exr, hdr, gif, tga, ppm, sys), map_type,
  *   interpolate, gamma, premultiplied, all, use_color, use_colour, use_index
- *   (eval_pattern.c) */
+ *   (eval_pattern.c)
+ *   open: in a shape that takes it, cylinder { ... open } (eval_object.c)
+ * The shapes' own names are not here: the shapes' table has them (src/shape.h),
+ * and tests/man.test reads them from src/shape_*.c. */
 #define AST_WORD_MESH_FILE "file"
 #define AST_WORD_AOI "aoi"
 #define AST_WORD_CUBIC "cubic"

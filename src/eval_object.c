@@ -357,7 +357,7 @@ static int shape_flag(struct eval *e, const ast_node *item, struct objval *o)
 {
 	if (item->kind != AST_IDENT || eval_lookup(e, item->str))
 		return 1;
-	int flag = strcmp(item->str, "open") == 0 ? SHAPE_OPEN : strcmp(item->str, "sturm") == 0 ? SHAPE_STURM : 0;
+	int flag = strcmp(item->str, AST_WORD_OPEN) == 0 ? SHAPE_OPEN : strcmp(item->str, "sturm") == 0 ? SHAPE_STURM : 0;
 	if (!flag)
 		return 1;
 	bool taken = flag == SHAPE_STURM;
@@ -507,7 +507,8 @@ static int arguments(struct eval *e, struct cursor *c, const ast_node *b, const 
 			optional = true;
 			continue;
 		}
-		const ast_node *arg = eval_next_expr(c, &err);
+		/* an optional one is not a word such as open */
+		const ast_node *arg = optional ? eval_next_optional(c, &err) : eval_next_expr(c, &err);
 		if (!arg && err)
 			return -1;
 		if (!arg && optional)

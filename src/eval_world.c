@@ -15,7 +15,7 @@
 const char *eval_pov_word(const char *name)
 {
 	static const char *const objects[] = {
-		"bicubic_patch", "blob", "cone", "cubic", "cylinder", "disc", "height_field",
+		"bicubic_patch", "blob", "cubic", "height_field",
 		"isosurface", "julia_fractal", "lathe", "light_group", "ovus",
 		"parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
 		"sphere_sweep", "superellipsoid", "text", "torus",

@@ -215,6 +215,24 @@ int lower_local_rows(const xform *local_to_world, dev_prim *p)
 	return 0;
 }
 
+int lower_local_rows_about(const xform *local_to_world, const double centre[3], dev_prim *p, float4 *c)
+{
+	xform to_local;
+	if (lower_invert(local_to_world, &to_local))
+		return -1;
+	double cf[3];
+	for (int k = 0; k < 3; k++)
+		cf[k] = (float)centre[k];
+	*c = (float4){ (float)cf[0], (float)cf[1], (float)cf[2], 0 };
+	float4 *rows[3] = { &p->a, &p->b, &p->c };
+	for (int i = 0; i < 3; i++) {
+		const double *m = to_local.m[i];
+		*rows[i] = (float4){ (float)m[0], (float)m[1], (float)m[2],
+		                     (float)(m[0] * cf[0] + m[1] * cf[1] + m[2] * cf[2] + m[3]) };
+	}
+	return 0;
+}
+
 /* Three shading normals; returns the index of the first, for a smooth triangle's link. */
 static int add_normals(struct lowering *lw, const double n[3][3])
 {

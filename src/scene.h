@@ -135,7 +135,10 @@ typedef struct {
  *   polygon, prism, text: outline, an index into scene.outlines (src/prism.h
  *   says what each keeps in p, n, radius and param);
  *   quadric: p[0..2] <A,B,C>, <D,E,F>, <G,H,I>, radius J;
- *   sor, lathe: outline, its points (src/revolve.h). */
+ *   sor, lathe: outline, its points (src/revolve.h);
+ *   cylinder: p[0] base, p[1] cap, radius, shape_flags SHAPE_OPEN;
+ *   cone: p[0] base, radius its radius, p[1] cap, param[0] its radius, SHAPE_OPEN;
+ *   disc: p[0] centre, p[1] normal, radius, param[0] the hole's radius (0: none). */
 #define SCENE_SHAPES(X) \
 	X(SPHERE, sphere) \
 	X(TRIANGLE, triangle) \
@@ -148,7 +151,10 @@ typedef struct {
 	X(TEXT, text) \
 	X(QUADRIC, quadric) \
 	X(SOR, sor) \
-	X(LATHE, lathe)
+	X(LATHE, lathe) \
+	X(CYLINDER, cylinder) \
+	X(CONE, cone) \
+	X(DISC, disc)
 #define SCENE_SHAPE_ENUM_ROW(NAME, name) SHAPE_##NAME,
 typedef enum { SCENE_SHAPES(SCENE_SHAPE_ENUM_ROW) SHAPE_KINDS } scene_shape;
 

@@ -51,3 +51,32 @@ void shape_frame(const double n[3], double u[3], double v[3])
 	v[1] = s + n[1] * n[1] * a;
 	v[2] = -n[1];
 }
+
+xform shape_coordinate_xform(const double origin[3], const double up[3], double radius, double length)
+{
+	double k[3], c, s;
+	if (fabs(up[2]) > 1 - 1e-10) {   /* along z: a turn about x, by 0 or 180 degrees */
+		k[0] = 1, k[1] = 0, k[2] = 0;
+		c = up[2] < 0 ? -1 : 1;
+		s = 0;
+	} else {
+		double len = sqrt(up[0] * up[0] + up[1] * up[1]);
+		k[0] = -up[1] / len, k[1] = up[0] / len, k[2] = 0;
+		c = up[2];
+		s = sin(acos(up[2]));
+	}
+	/* Rodrigues' rotation by the angle whose cosine is c about k, then the scale */
+	double r[3][3] = {
+		{ c + (1 - c) * k[0] * k[0], (1 - c) * k[0] * k[1] - s * k[2], (1 - c) * k[0] * k[2] + s * k[1] },
+		{ (1 - c) * k[1] * k[0] + s * k[2], c + (1 - c) * k[1] * k[1], (1 - c) * k[1] * k[2] - s * k[0] },
+		{ (1 - c) * k[2] * k[0] - s * k[1], (1 - c) * k[2] * k[1] + s * k[0], c + (1 - c) * k[2] * k[2] },
+	};
+	double scale[3] = { radius, radius, length };
+	xform t;
+	for (int i = 0; i < 3; i++) {
+		for (int j = 0; j < 3; j++)
+			t.m[i][j] = r[i][j] * scale[j];
+		t.m[i][3] = origin[i];
+	}
+	return t;
+}

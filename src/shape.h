@@ -74,6 +74,12 @@ void shape_grow_box(double lo[3], double hi[3], const double p[3]);
 void shape_grow_xformed_box(const xform *xf, const double a[3], const double b[3], double lo[3], double hi[3]);
 /* A unit vector and two more making a right-handed orthonormal frame with it. */
 void shape_frame(const double n[3], double u[3], double v[3]);
+/* POV-Ray's Compute_Coordinate_Transform: the map from a shape's own space to
+ * object space that scales x and y by radius and z by length, turns z onto the
+ * unit vector up (about the axis z x up) and moves the origin to origin. The
+ * cylinder, cone and disc are kept in such spaces, so their boxes (and
+ * min_extent) are POV-Ray's. */
+xform shape_coordinate_xform(const double origin[3], const double up[3], double radius, double length);
 
 /* ---- --dump-scene's words (scene.c) ---- */
 
@@ -99,6 +105,11 @@ bool lower_in_csg(const struct lowering *lw);
 /* Sets p's rows to the inverse of local-to-world (the shape's own space to the
  * world); -1 when it is singular. */
 int lower_local_rows(const xform *local_to_world, dev_prim *p);
+/* As lower_local_rows, about a centre: *c is the centre in floats and the rows'
+ * w the map's value there, so the kernels take a point x to the shape's space
+ * as rows . (x - c) + w (intersect_to_local_about), and far from the origin
+ * round only x - c, not x and the map's translation, which cancel. */
+int lower_local_rows_about(const xform *local_to_world, const double centre[3], dev_prim *p, float4 *c);
 /* A placed mesh (shape_mesh.c's lowering). */
 int lower_mesh_instance(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id);
 

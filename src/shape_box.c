@@ -1,6 +1,7 @@
 /* shape_box.c: box { <Corner1>, <Corner2> }. On the device a box is the map
- * from world space to the cube [-1, 1]^3 (kernels/shape_box.cl), so a rotated
- * box is one primitive with an inside. An emissive box outside CSG is twelve
+ * from world space to the cube [-1, 1]^3 about its centre, which its PRIM_DATA
+ * record holds (kernels/shape_box.cl), so a rotated box is one primitive with
+ * an inside, as precise far from the origin as near it. An emissive box outside CSG is twelve
  * triangles instead, so that the path tracer samples it as a light, and so is
  * a flat box (two corners sharing a coordinate), which has no inside. */
 #include <math.h>
@@ -123,11 +124,15 @@ static int lower(struct lowering *lw, const scene *s, const scene_object *o, int
 	xform unit = scene_xform_scale(half), move = scene_xform_translate(mid);
 	unit = scene_xform_then(&unit, &move);
 	xform to_world = scene_xform_then(&unit, &o->xf);
-	dev_prim p = { .type = PRIM_BOX, .link = -1 };
-	if (lower_local_rows(&to_world, &p)) {   /* flat: its faces with an area, as POV-Ray draws it */
+	dev_prim p = { .type = PRIM_BOX };
+	double centre[3];
+	float4 cf;
+	scene_xform_point(&o->xf, mid, centre);
+	if (lower_local_rows_about(&to_world, centre, &p, &cf)) {   /* flat: its faces with an area, as POV-Ray draws it */
 		lower_triangles(lw, o, mat, id);
 		return 0;
 	}
+	p.link = lower_add_data(lw, cf);
 	double blo[3] = { INFINITY, INFINITY, INFINITY }, bhi[3] = { -INFINITY, -INFINITY, -INFINITY };
 	bounds(s, o, blo, bhi);
 	lower_add_prim(lw, p, mat, id, blo, bhi);
