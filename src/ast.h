@@ -268,7 +268,9 @@ enum kw_class {
  *   slope_map (eval_material.c); in image_map { }: image_map itself, the file
  *   formats (png, jpeg, tiff, exr, hdr, gif, tga, ppm, sys), map_type,
  *   interpolate, gamma, premultiplied, all, use_color, use_colour, use_index
- *   (eval_pattern.c) */
+ *   (eval_pattern.c)
+ *   the shapes torus and superellipsoid (src/shape_torus.c,
+ *   src/shape_superellipsoid.c), and sturm after a torus's radii (eval_object.c) */
 #define AST_WORD_MESH_FILE "file"
 #define AST_WORD_AOI "aoi"
 #define AST_WORD_CUBIC "cubic"
@@ -312,6 +314,9 @@ enum kw_class {
 #define AST_WORD_TGA "tga"
 #define AST_WORD_PPM "ppm"
 #define AST_WORD_SYS "sys"
+#define AST_WORD_TORUS "torus"
+#define AST_WORD_SUPERELLIPSOID "superellipsoid"
+#define AST_WORD_STURM "sturm"
 
 enum ast_keyword {
 	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */

@@ -18,7 +18,7 @@ const char *eval_pov_word(const char *name)
 		"bicubic_patch", "blob", "cone", "cubic", "cylinder", "difference", "disc", "height_field",
 		"intersection", "isosurface", "julia_fractal", "lathe", "light_group", "merge", "ovus",
 		"parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
-		"sphere_sweep", "superellipsoid", "text", "torus",
+		"sphere_sweep", "text",
 	};
 	static const char *const statements[] = { "fog", "rainbow", "media" };
 	static const char *const patterns[] = {

@@ -121,14 +121,18 @@ typedef struct {
  *   sphere: p[0] centre, radius;  triangle: p[0..2] corners;
  *   smooth_triangle: p[0..2] corners, n[0..2] normals;  box: p[0], p[1] opposite corners;
  *   plane: p[0] normal, radius = distance along it;
- *   mesh: mesh, an index into scene.meshes, shared by every copy. */
+ *   mesh: mesh, an index into scene.meshes, shared by every copy;
+ *   torus: radius the major radius, param[0] the minor;
+ *   superellipsoid: p[0] <E, N, 0>. */
 #define SCENE_SHAPES(X) \
 	X(SPHERE, sphere) \
 	X(TRIANGLE, triangle) \
 	X(SMOOTH_TRIANGLE, smooth_triangle) \
 	X(BOX, box) \
 	X(PLANE, plane) \
-	X(MESH, mesh)
+	X(MESH, mesh) \
+	X(TORUS, torus) \
+	X(SUPERELLIPSOID, superellipsoid)
 #define SCENE_SHAPE_ENUM_ROW(NAME, name) SHAPE_##NAME,
 typedef enum { SCENE_SHAPES(SCENE_SHAPE_ENUM_ROW) SHAPE_KINDS } scene_shape;
 
