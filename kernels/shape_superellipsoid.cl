@@ -171,6 +171,15 @@ inline real se_bracketed(real3 o, real3 d, se_exp p, se_exp q, real3 oct, real a
  * a stack (a stretch's index at its level says where it is). */
 inline real se_first_crossing(real3 o, real3 d, se_exp p, se_exp q, real3 oct, real a, real b)
 {
+	real3 r = oct * d;   /* how fast |x|, |y|, |z| grow */
+	if ((r.x >= (real)0 && r.y >= (real)0 && r.z >= (real)0) || (r.x <= (real)0 && r.y <= (real)0 && r.z <= (real)0)) {
+		/* all grow, or all shrink: the function is monotonic, one crossing at most */
+		real fa = se_value(o, d, a, p, q, oct), fb = se_value(o, d, b, p, q, oct);
+		if (fb == (real)0)
+			return b;
+		return fa != (real)0 && (fa < (real)0) != (fb < (real)0) ? se_bracketed(o, d, p, q, oct, a, fa, b, fb)
+		                                                        : (real)-1;
+	}
 	int level = 0, idx = 0;
 	real t0 = a;
 	for (;;) {
