@@ -4,8 +4,8 @@
  * spindle torus: every root of the quartic is a surface, the spindle inside
  * included, and the inside is the union of the balls of radius Minor around
  * the circle. POV-Ray's sturm picks its slower, surer root finder; eclat's
- * finder (here and in kernels/shape_torus.cl) never loses a root, so sturm is
- * read and changes nothing.
+ * finder (here and in kernels/shape_torus.cl) loses no root but where a ray
+ * only touches the surface, so sturm is read and changes nothing.
  *
  * On the device a torus is the map from world space to the torus of major
  * radius 1 (kernels/shape_torus.cl), with Minor / Major in its PRIM_DATA record. */
