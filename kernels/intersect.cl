@@ -15,6 +15,35 @@
  * is fused may change with how the code around it is inlined. */
 #pragma OPENCL FP_CONTRACT OFF
 
+/* The precision of the shapes that search for their roots (torus,
+ * superellipsoid): double where the device has it, since float loses grazing
+ * rays' roots; float elsewhere. */
+#ifdef cl_khr_fp64
+typedef double real;
+typedef double3 real3;
+#define convert_real3 convert_double3
+#define REAL_EPSILON DBL_EPSILON
+#else
+typedef float real;
+typedef float3 real3;
+#define convert_real3 convert_float3
+#define REAL_EPSILON FLT_EPSILON
+#endif
+
+/* intersect_to_local and intersect_dir_to_local in that precision. */
+inline real3 intersect_to_local_real(global const dev_prim *p, float3 x)
+{
+	real3 v = convert_real3(x);
+	return (real3)(dot(convert_real3(p->a.xyz), v) + p->a.w, dot(convert_real3(p->b.xyz), v) + p->b.w,
+	               dot(convert_real3(p->c.xyz), v) + p->c.w);
+}
+
+inline real3 intersect_dir_to_local_real(global const dev_prim *p, float3 d)
+{
+	real3 v = convert_real3(d);
+	return (real3)(dot(convert_real3(p->a.xyz), v), dot(convert_real3(p->b.xyz), v), dot(convert_real3(p->c.xyz), v));
+}
+
 /* The component k (0, 1, 2) of v. */
 inline float intersect_axis(float3 v, int k)
 {

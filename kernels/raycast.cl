@@ -43,3 +43,28 @@ kernel void inside_points(global const dev_prim *prims, global const float4 *poi
 	int i = get_global_id(0);
 	inside[i] = shape_inside(prims, &prims[as_int(points[i].w)], points[i].xyz) ? 1 : 0;
 }
+
+/* The same, with the surface: each ray's closest hit, the shading normal
+ * there (as the shape gives it, not turned to face the ray) and whether the
+ * ray's origin is inside the primitive `shape` (its inside test): what
+ * tests/test_torus.c checks against the host's trace() and inside test.
+ * out: two float4 a ray, (t, the primitive as int bits, any hit, inside) and
+ * (the unit normal, 0). */
+kernel void shapecast(global const bvh_node *nodes, global const dev_prim *prims, int n_prims, int n_planes,
+                      global const float4 *rays, global float4 *out, int shape)
+{
+	int i = get_global_id(0);
+	float3 o = rays[2 * i].xyz, d = rays[2 * i + 1].xyz;
+	float tmax = rays[2 * i].w;
+	uint counts[COUNT_N] = { 0 };
+	traverse_hit h = traverse_closest(nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts, RAY_CAMERA);
+	bool any = traverse_any(nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts);
+	bool in = shape_inside(prims, &prims[shape], o);
+	/* the shading normal, which trace() gives (no smooth triangle here reads
+	 * the normals buffer, so the primitives stand in for it) */
+	float3 n = h.prim >= 0 && h.inst < 0
+	         ? intersect_surface_at(prims, (global const float4 *)prims, h.prim, -1, false, o + h.t * d).ns
+	         : (float3)(0.0f);
+	out[2 * i] = (float4)(h.t, as_float(h.prim), any ? 1.0f : 0.0f, in ? 1.0f : 0.0f);
+	out[2 * i + 1] = (float4)(n, 0.0f);
+}

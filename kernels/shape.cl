@@ -69,6 +69,8 @@ inline intersect_surface intersect_surface_at(global const dev_prim *prims, glob
 		if (dot(ns, ns) > 0.0f)   /* on the geometric normal's side, as the face's winding says */
 			s.ns = dot(ns, s.ng) < 0.0f ? -ns : ns;
 	}
+	if (p->type == PRIM_TORUS)   /* POV-Ray's, which is not the spindle's geometric one */
+		s.ns = torus_shading_normal(p, lx);
 	if (inst >= 0) {
 		s.ng = intersect_normal_to_world(&prims[inst], s.ng);
 		s.ns = intersect_normal_to_world(&prims[inst], s.ns);

@@ -67,7 +67,9 @@ typedef struct {
 	X(SOR, sor) \
 	X(CYLINDER, cylinder) \
 	X(CONE, cone) \
-	X(DISC, disc)
+	X(DISC, disc) \
+	X(TORUS, torus) \
+	X(SUPERELLIPSOID, superellipsoid)
 #define PRIM_ENUM_ROW(NAME, name) PRIM_##NAME,
 enum {
 	PRIM_SHAPES(PRIM_ENUM_ROW)
@@ -97,6 +99,10 @@ enum { PRISM_OPEN = 1, PRISM_FLAT = 2, PRISM_CONIC = 4 };
  *   the mesh's); the ray keeps its parameter t there. For such a shape, link is
  *   its PRIM_DATA record (its own numbers in a), or -1 when it needs none; for an
  *   instance, the root node of the mesh's BVH.
+ * Torus: the map to the torus of major radius 1 around the y axis; its record's
+ *   a.x is the minor radius over the major one (kernels/shape_torus.cl).
+ * Superellipsoid: the map to its own space, where it fills [-1, 1]^3; its
+ *   record's a.x + a.y is 2/E, a.z + a.w 2/N (kernels/shape_superellipsoid.cl).
  * CSG: a.x, a.y (ints): its first leaf and how many; a.z, a.w (ints): its
  *   program's first record and its length in ops (kernels/csg.cl); link: how
  *   many of its leaves rays may meet (the rest are clipped_by's, which only

@@ -334,6 +334,8 @@ enum kw_class {
 #define AST_WORD_QUADRIC "quadric"
 #define AST_WORD_SOR "sor"
 #define AST_WORD_LATHE "lathe"
+#define AST_WORD_TORUS "torus"
+#define AST_WORD_SUPERELLIPSOID "superellipsoid"
 
 enum ast_keyword {
 	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */

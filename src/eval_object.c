@@ -357,7 +357,7 @@ static int shape_flag(struct eval *e, const ast_node *item, struct objval *o)
 {
 	if (item->kind != AST_IDENT || eval_lookup(e, item->str))
 		return 1;
-	int flag = strcmp(item->str, AST_WORD_OPEN) == 0 ? SHAPE_OPEN : strcmp(item->str, "sturm") == 0 ? SHAPE_STURM : 0;
+	int flag = strcmp(item->str, AST_WORD_OPEN) == 0 ? SHAPE_OPEN : strcmp(item->str, AST_WORD_STURM) == 0 ? SHAPE_STURM : 0;
 	if (!flag)
 		return 1;
 	bool taken = flag == SHAPE_STURM;

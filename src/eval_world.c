@@ -18,7 +18,7 @@ const char *eval_pov_word(const char *name)
 		"bicubic_patch", "blob", "cubic", "height_field",
 		"isosurface", "julia_fractal", "lathe", "light_group", "ovus",
 		"parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
-		"sphere_sweep", "superellipsoid", "text", "torus",
+		"sphere_sweep", "text",
 	};
 	static const char *const statements[] = { "fog", "rainbow", "media" };
 	static const char *const patterns[] = {

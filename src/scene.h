@@ -138,7 +138,9 @@ typedef struct {
  *   sor, lathe: outline, its points (src/revolve.h);
  *   cylinder: p[0] base, p[1] cap, radius, shape_flags SHAPE_OPEN;
  *   cone: p[0] base, radius its radius, p[1] cap, param[0] its radius, SHAPE_OPEN;
- *   disc: p[0] centre, p[1] normal, radius, param[0] the hole's radius (0: none). */
+ *   disc: p[0] centre, p[1] normal, radius, param[0] the hole's radius (0: none);
+ *   torus: radius the major radius, param[0] the minor;
+ *   superellipsoid: p[0] <E, N, 0>. */
 #define SCENE_SHAPES(X) \
 	X(SPHERE, sphere) \
 	X(TRIANGLE, triangle) \
@@ -154,7 +156,9 @@ typedef struct {
 	X(LATHE, lathe) \
 	X(CYLINDER, cylinder) \
 	X(CONE, cone) \
-	X(DISC, disc)
+	X(DISC, disc) \
+	X(TORUS, torus) \
+	X(SUPERELLIPSOID, superellipsoid)
 #define SCENE_SHAPE_ENUM_ROW(NAME, name) SHAPE_##NAME,
 typedef enum { SCENE_SHAPES(SCENE_SHAPE_ENUM_ROW) SHAPE_KINDS } scene_shape;
 
