@@ -321,3 +321,31 @@ int prism_lower(struct lowering *lw, const prism_view *v, const scene_object *o,
 		lower_glyphs(lw, v, &to_world, g, g + 1, mat, id);
 	return 0;
 }
+
+/* ---- the class functions of polygon, prism and text (shape_polygon.c,
+ * shape_prism.c, shape_text.c) ---- */
+
+void prism_shape_bounds(const scene *s, const scene_object *o, double lo[3], double hi[3])
+{
+	prism_view v = prism_view_of(s, o);
+	prism_bounds(&v, &o->xf, lo, hi);
+}
+
+void prism_shape_trace(const scene *s, const scene_object *o, const double ro[3], const double rd[3], double tmin,
+                       shape_hit *h)
+{
+	prism_view v = prism_view_of(s, o);
+	prism_trace(&v, ro, rd, tmin, h);
+}
+
+bool prism_shape_inside(const scene *s, const scene_object *o, const double p[3])
+{
+	prism_view v = prism_view_of(s, o);
+	return prism_inside(&v, p);
+}
+
+int prism_shape_lower(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id)
+{
+	prism_view v = prism_view_of(s, o);
+	return prism_lower(lw, &v, o, mat, id);
+}

@@ -56,4 +56,11 @@ void prism_orient(scene_outline *ol);
 /* Whether the point (x, z) of the plane is inside glyphs [first, last) of ol. */
 bool prism_in_outline(const scene_outline *ol, int first, int last, double x, double z);
 
+/* The class functions (shape.h) of polygon, prism and text, on their outline. */
+void prism_shape_bounds(const scene *s, const scene_object *o, double lo[3], double hi[3]);
+void prism_shape_trace(const scene *s, const scene_object *o, const double ro[3], const double rd[3], double tmin,
+                       shape_hit *h);
+bool prism_shape_inside(const scene *s, const scene_object *o, const double p[3]);
+int prism_shape_lower(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id);
+
 #endif

@@ -483,3 +483,45 @@ int revolve_lower(struct lowering *lw, const revolve_profile *pr, const scene_ob
 	lower_add_prim(lw, p, mat, id, lo, hi);
 	return 0;
 }
+
+/* ---- the class functions of sor and lathe (shape_sor.c, shape_lathe.c) ---- */
+
+void revolve_shape_bounds(const scene *s, const scene_object *o, double lo[3], double hi[3])
+{
+	revolve_profile pr;
+	if (!revolve_profile_of(s, o, &pr))
+		revolve_bounds(&pr, &o->xf, lo, hi);
+	revolve_free(&pr);
+}
+
+void revolve_shape_trace(const scene *s, const scene_object *o, const double ro[3], const double rd[3], double tmin,
+                         shape_hit *h)
+{
+	revolve_profile pr;
+	if (!revolve_profile_of(s, o, &pr))
+		revolve_trace(&pr, ro, rd, tmin, h);
+	revolve_free(&pr);
+}
+
+bool revolve_shape_inside(const scene *s, const scene_object *o, const double p[3])
+{
+	revolve_profile pr;
+	bool in = !revolve_profile_of(s, o, &pr) && revolve_inside(&pr, p);
+	revolve_free(&pr);
+	return in;
+}
+
+int revolve_shape_lower(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id)
+{
+	revolve_profile pr;
+	const char *bad = revolve_profile_of(s, o, &pr);
+	int rc = 0;
+	if (bad) {
+		diag_error(o->loc, "%s", bad);
+		rc = -1;
+	} else {
+		rc = revolve_lower(lw, &pr, o, mat, id);
+	}
+	revolve_free(&pr);
+	return rc;
+}

@@ -56,4 +56,11 @@ int revolve_lower(struct lowering *lw, const revolve_profile *pr, const scene_ob
 const char *revolve_sor_points(const double (*P)[2], int n);
 const char *revolve_lathe_points(int kind, const double (*P)[2], int n);
 
+/* A sor's or lathe's class functions (shape.h), on its profile. */
+void revolve_shape_bounds(const scene *s, const scene_object *o, double lo[3], double hi[3]);
+void revolve_shape_trace(const scene *s, const scene_object *o, const double ro[3], const double rd[3], double tmin,
+                         shape_hit *h);
+bool revolve_shape_inside(const scene *s, const scene_object *o, const double p[3]);
+int revolve_shape_lower(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id);
+
 #endif

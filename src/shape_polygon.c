@@ -3,25 +3,6 @@
  * prism of one flat face. It has no inside. */
 #include "prism.h"
 
-static void bounds(const scene *s, const scene_object *o, double lo[3], double hi[3])
-{
-	prism_view v = prism_view_of(s, o);
-	prism_bounds(&v, &o->xf, lo, hi);
-}
-
-static void trace(const scene *s, const scene_object *o, const double ro[3], const double rd[3], double tmin,
-                  shape_hit *h)
-{
-	prism_view v = prism_view_of(s, o);
-	prism_trace(&v, ro, rd, tmin, h);
-}
-
-static int lower(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id)
-{
-	prism_view v = prism_view_of(s, o);
-	return prism_lower(lw, &v, o, mat, id);
-}
-
 static void dump(FILE *out, const scene_object *o)
 {
 	fprintf(out, "polygon outline %d", o->outline);
@@ -32,5 +13,5 @@ static void dump(FILE *out, const scene_object *o)
 
 const shape_class shape_polygon = {
 	.name = "polygon", .args = NULL, .needs = "a count and its points",
-	.bounds = bounds, .trace = trace, .lower = lower, .dump = dump,
+	.bounds = prism_shape_bounds, .trace = prism_shape_trace, .lower = prism_shape_lower, .dump = dump,
 };

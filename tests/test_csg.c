@@ -25,25 +25,16 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cast.h"
 #include "device.h"
 #include "diag.h"
 #include "eval.h"
 #include "lower.h"
 #include "parse.h"
 
-static uint64_t rng_state = 0x853c49e6748fea9bull;
-
-static double uniform(void)   /* splitmix64 */
-{
-	uint64_t z = (rng_state += 0x9e3779b97f4a7c15ull);
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-	return (double)((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
-}
-
 static double range(double lo, double hi)
 {
-	return lo + (hi - lo) * uniform();
+	return lo + (hi - lo) * cast_uniform();
 }
 
 /* ---- the tree and its reference ---- */
@@ -176,7 +167,7 @@ static void all_hits(const struct node *n, const double o[3], const double d[3],
 static struct node *leaf(void)
 {
 	struct node *n = calloc(1, sizeof *n);
-	n->kind = uniform() < 0.5 ? SPHERE : BOX;
+	n->kind = cast_uniform() < 0.5 ? SPHERE : BOX;
 	for (int k = 0; k < 3; k++)
 		n->c[k] = range(-0.6, 0.6);
 	n->r = range(0.4, 0.9);
@@ -185,7 +176,7 @@ static struct node *leaf(void)
 		n->lo[k] = n->c[k] - h;
 		n->hi[k] = n->c[k] + h;
 	}
-	n->inverse = uniform() < 0.1;
+	n->inverse = cast_uniform() < 0.1;
 	return n;
 }
 
@@ -193,10 +184,10 @@ static struct node *tree(int kind, int depth)
 {
 	struct node *n = calloc(1, sizeof *n);
 	n->kind = kind;
-	n->n_kids = uniform() < 0.5 ? 2 : 3;
+	n->n_kids = cast_uniform() < 0.5 ? 2 : 3;
 	for (int i = 0; i < n->n_kids; i++)
-		n->kid[i] = depth > 1 && uniform() < 0.6 ? tree(UNION + (int)(uniform() * 4), depth - 1) : leaf();
-	n->inverse = depth < 3 && uniform() < 0.15;
+		n->kid[i] = depth > 1 && cast_uniform() < 0.6 ? tree(UNION + (int)(cast_uniform() * 4), depth - 1) : leaf();
+	n->inverse = depth < 3 && cast_uniform() < 0.15;
 	return n;
 }
 
@@ -224,35 +215,6 @@ static void write_node(FILE *f, const struct node *n)
 }
 
 /* ---- the device ---- */
-
-static int cast(device_ctx *dev, cl_program prog, const lower_result *lr, const float *rays, int n, float *hits)
-{
-	cl_int err;
-	cl_kernel k = clCreateKernel(prog, "raycast", &err);
-	cl_mem b[4] = {
-		clCreateBuffer(dev->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lr->dev_node_bytes,
-		               (void *)lr->dev_nodes, &err),
-		clCreateBuffer(dev->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lr->n_all_prims * sizeof(dev_prim),
-		               lr->prims, &err),
-		clCreateBuffer(dev->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, (size_t)n * 8 * sizeof(float),
-		               (void *)rays, &err),
-		clCreateBuffer(dev->context, CL_MEM_WRITE_ONLY, (size_t)n * 4 * sizeof(float), NULL, &err),
-	};
-	clSetKernelArg(k, 0, sizeof(cl_mem), &b[0]);
-	clSetKernelArg(k, 1, sizeof(cl_mem), &b[1]);
-	clSetKernelArg(k, 2, sizeof(int), &lr->n_prims);
-	clSetKernelArg(k, 3, sizeof(int), &lr->n_planes);
-	clSetKernelArg(k, 4, sizeof(cl_mem), &b[2]);
-	clSetKernelArg(k, 5, sizeof(cl_mem), &b[3]);
-	size_t global = (size_t)n;
-	err = clEnqueueNDRangeKernel(dev->queue, k, 1, NULL, &global, NULL, 0, NULL, NULL);
-	if (err == CL_SUCCESS)
-		err = clEnqueueReadBuffer(dev->queue, b[3], CL_TRUE, 0, (size_t)n * 4 * sizeof(float), hits, 0, NULL, NULL);
-	for (int i = 0; i < 4; i++)
-		clReleaseMemObject(b[i]);
-	clReleaseKernel(k);
-	return err == CL_SUCCESS ? 0 : device_fail("raycast", err);
-}
 
 static int failures;
 
@@ -297,7 +259,7 @@ static void run_case(device_ctx *dev, cl_program prog, const char *what, struct 
 		rays[8 * i + 7] = 0;
 	}
 	int bad = 0, skipped = 0, hit = 0;
-	if (cast(dev, prog, &lr, rays, n_rays, hits))
+	if (cast_rays(dev, prog, "raycast", &lr, rays, n_rays, hits, 1, -1))
 		bad = n_rays;
 	for (int i = 0; i < n_rays && bad < n_rays; i++) {
 		double o[3], d[3];
@@ -346,6 +308,7 @@ static void run_case(device_ctx *dev, cl_program prog, const char *what, struct 
 int main(int argc, char **argv)
 {
 	int n_rays = argc > 1 ? atoi(argv[1]) : 20000;
+	cast_seed(0x853c49e6748fea9bull);
 	device_ctx dev;
 	if (device_open(&dev, -1))
 		return 1;

@@ -18,21 +18,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cast.h"
 #include "device.h"
 #include "lower.h"
 #include "revolve.h"
 
 static int failures;
-static uint64_t rng_state = 0x2545f4914f6cdd1dull;
-
-static double uniform(void)   /* splitmix64 */
-{
-	uint64_t z = (rng_state += 0x9e3779b97f4a7c15ull);
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-	return (double)((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
-}
-
 /* ---- the shapes ---- */
 
 enum { QUADRIC_HYPER, QUADRIC_CONE, SOR_CLOSED, SOR_OPEN, LATHE_LINEAR, LATHE_CUP, LATHE_QUADRATIC, LATHE_CUBIC,
@@ -90,65 +81,10 @@ static scene_object make_shape(scene *s, int which)
 
 /* ---- the host's answer in world space ---- */
 
-struct shape {
-	const scene *s;
-	const scene_object *o;
-	xform inv;
-};
-
-static double host_trace_from(const struct shape *sh, const double wo[3], const double wd[3], double tmin,
-                              double n[3])
-{
-	double o[3], d[3];
-	scene_xform_point(&sh->inv, wo, o);
-	scene_xform_vector(&sh->inv, wd, d);
-	shape_hit h = { .t = INFINITY };
-	shape_of(sh->o)->trace(sh->s, sh->o, o, d, tmin, &h);
-	if (n)
-		memcpy(n, h.n, sizeof h.n);
-	return h.t;
-}
-
-static double host_trace(const struct shape *sh, const double wo[3], const double wd[3], double n[3])
-{
-	return host_trace_from(sh, wo, wd, 0, n);
-}
-
 /* ---- the device ---- */
-
-static int cast(device_ctx *dev, cl_program prog, const lower_result *lr, const float *rays, int n, float *hits)
-{
-	cl_int err;
-	cl_kernel k = clCreateKernel(prog, "raycast", &err);
-	cl_mem b[4] = {
-		clCreateBuffer(dev->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lr->dev_node_bytes,
-		               (void *)lr->dev_nodes, &err),
-		clCreateBuffer(dev->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lr->n_all_prims * sizeof(dev_prim),
-		               lr->prims, &err),
-		clCreateBuffer(dev->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, (size_t)n * 8 * sizeof(float),
-		               (void *)rays, &err),
-		clCreateBuffer(dev->context, CL_MEM_WRITE_ONLY, (size_t)n * 4 * sizeof(float), NULL, &err),
-	};
-	clSetKernelArg(k, 0, sizeof(cl_mem), &b[0]);
-	clSetKernelArg(k, 1, sizeof(cl_mem), &b[1]);
-	clSetKernelArg(k, 2, sizeof(int), &lr->n_prims);
-	clSetKernelArg(k, 3, sizeof(int), &lr->n_planes);
-	clSetKernelArg(k, 4, sizeof(cl_mem), &b[2]);
-	clSetKernelArg(k, 5, sizeof(cl_mem), &b[3]);
-	size_t global = (size_t)n;
-	err = clEnqueueNDRangeKernel(dev->queue, k, 1, NULL, &global, NULL, 0, NULL, NULL);
-	if (err == CL_SUCCESS)
-		err = clEnqueueReadBuffer(dev->queue, b[3], CL_TRUE, 0, (size_t)n * 4 * sizeof(float), hits, 0, NULL, NULL);
-	for (int i = 0; i < 4; i++)
-		clReleaseMemObject(b[i]);
-	clReleaseKernel(k);
-	return err == CL_SUCCESS ? 0 : device_fail("raycast", err);
-}
 
 /* ---- rays ---- */
 
-static void random_unit(double d[3]);
-static double host_trace(const struct shape *sh, const double wo[3], const double wd[3], double n[3]);
 
 /* A point of the surface to aim at, in object space: on a piece of a sor's
  * or lathe's profile (often at its ends, the rims), or where a random ray
@@ -158,8 +94,8 @@ static bool surface_point(const scene *s, const scene_object *o, const revolve_p
 	if (o->shape == SHAPE_QUADRIC) {
 		double from[3], d[3], n[3];
 		for (int k = 0; k < 3; k++)
-			from[k] = 2 * uniform() - 1;
-		random_unit(d);
+			from[k] = 2 * cast_uniform() - 1;
+		cast_random_unit(d);
 		shape_hit h = { .t = INFINITY };
 		shape_of(o)->trace(s, o, from, d, 0, &h);
 		(void)n;
@@ -167,25 +103,19 @@ static bool surface_point(const scene *s, const scene_object *o, const revolve_p
 			p[k] = isfinite(h.t) && h.t < 3 ? from[k] + h.t * d[k] : from[k];
 		return false;
 	}
-	const revolve_piece *q = &pr->piece[(int)(uniform() * pr->n)];
-	double a = 2 * M_PI * uniform(), r, y;
-	bool rim = uniform() < 0.3;
+	const revolve_piece *q = &pr->piece[(int)(cast_uniform() * pr->n)];
+	double a = 2 * M_PI * cast_uniform(), r, y;
+	bool rim = cast_uniform() < 0.3;
 	if (q->kind == REVOLVE_DISC) {
-		double r2 = rim ? (uniform() < 0.5 ? q->c[0] : q->c[1]) : q->c[0] + uniform() * (q->c[1] - q->c[0]);
+		double r2 = rim ? (cast_uniform() < 0.5 ? q->c[0] : q->c[1]) : q->c[0] + cast_uniform() * (q->c[1] - q->c[0]);
 		r = sqrt(r2), y = q->h1;
 	} else {
-		y = rim ? (uniform() < 0.5 ? q->h1 : q->h2) : q->h1 + uniform() * (q->h2 - q->h1);
+		y = rim ? (cast_uniform() < 0.5 ? q->h1 : q->h2) : q->h1 + cast_uniform() * (q->h2 - q->h1);
 		double u = y - q->hc;
 		r = sqrt(fmax(((q->c[0] * u + q->c[1]) * u + q->c[2]) * u + q->c[3], 0));
 	}
 	p[0] = r * cos(a), p[1] = y, p[2] = r * sin(a);
 	return rim;
-}
-
-static void random_unit(double d[3])
-{
-	double z = 2 * uniform() - 1, a = 2 * M_PI * uniform(), r = sqrt(1 - z * z);
-	d[0] = r * cos(a), d[1] = r * sin(a), d[2] = z;
 }
 
 /* ---- one shape ---- */
@@ -196,7 +126,7 @@ static void test_shape(device_ctx *dev, cl_program prog, int which, int n_rays)
 	scene_init(&s);
 	scene_object o = make_shape(&s, which);
 	scene_add_object(&s, &o);
-	struct shape sh = { .s = &s, .o = &s.objects[0] };
+	cast_shape sh = { .s = &s, .o = &s.objects[0] };
 	lower_invert(&o.xf, &sh.inv);
 	revolve_profile pr = { 0 };
 	if (o.shape != SHAPE_QUADRIC)
@@ -226,12 +156,12 @@ static void test_shape(device_ctx *dev, cl_program prog, int which, int n_rays)
 	xform to_world = o.xf;
 	for (int i = 0; i < n; i++) {
 		double from[3], to[3], d[3];
-		random_unit(d);
+		cast_random_unit(d);
 		for (int k = 0; k < 3; k++)
 			from[k] = mid[k] + 2 * size * d[k];
 		if (i < n_rays) {   /* random: toward a point of the box */
 			for (int k = 0; k < 3; k++)
-				to[k] = lo[k] + uniform() * (hi[k] - lo[k]);
+				to[k] = lo[k] + cast_uniform() * (hi[k] - lo[k]);
 		} else {            /* aimed at the surface, its edges and corners */
 			double p[3];
 			on_edge[i] = surface_point(&s, &o, &pr, p);
@@ -245,7 +175,7 @@ static void test_shape(device_ctx *dev, cl_program prog, int which, int n_rays)
 		r[3] = 1e30f;
 		r[7] = 0;
 	}
-	if (cast(dev, prog, &lr, rays, n, hits)) {
+	if (cast_rays(dev, prog, "raycast", &lr, rays, n, hits, 1, -1)) {
 		failures++;
 		goto done;
 	}
@@ -258,7 +188,7 @@ static void test_shape(device_ctx *dev, cl_program prog, int which, int n_rays)
 		int prim;
 		memcpy(&prim, &hits[4 * i + 1], sizeof prim);
 		double hn[3], od[3];
-		double td = prim >= 0 ? hits[4 * i] : INFINITY, th = host_trace(&sh, wo, wd, hn);
+		double td = prim >= 0 ? hits[4 * i] : INFINITY, th = cast_trace(&sh, wo, wd, hn);
 		if (o.shape == SHAPE_QUADRIC) {   /* unbounded: only the hits in the cube the rays cross */
 			td = td < 2 ? td : INFINITY;
 			th = th < 2 ? th : INFINITY;
@@ -275,14 +205,14 @@ static void test_shape(device_ctx *dev, cl_program prog, int which, int n_rays)
 		 * is the host's next one */
 		double u[3], w[3], dn[3] = { wd[0] / len, wd[1] / len, wd[2] / len }, eps = 4 * tol / len;
 		shape_frame(dn, u, w);
-		double next = th < td ? host_trace_from(&sh, wo, wd, th + 2 * eps, NULL) : INFINITY;
+		double next = th < td ? cast_trace_from(&sh, wo, wd, th + 2 * eps, NULL) : INFINITY;
 		bool next_ok = th < td && ((isinf(td) && isinf(next)) || fabs(td - next) <= eps);
 		bool agrees = false, some_hit = false, some_miss = false;
 		for (int j = 0; j < 8 && !agrees; j++) {
 			double a = 2 * M_PI * j / 8, jo[3];
 			for (int k = 0; k < 3; k++)
 				jo[k] = wo[k] + tol * (cos(a) * u[k] + sin(a) * w[k]);
-			double tj = host_trace(&sh, jo, wd, NULL);
+			double tj = cast_trace(&sh, jo, wd, NULL);
 			agrees = (isinf(td) && isinf(tj)) || fabs(td - tj) <= eps || (next_ok && tj > th + eps);
 			some_hit |= isfinite(tj);
 			some_miss |= isinf(tj);
@@ -314,8 +244,8 @@ static void test_shape(device_ctx *dev, cl_program prog, int which, int n_rays)
 		for (int i = 0; i < 2000; i++) {
 			double p[3], d[3];
 			for (int k = 0; k < 3; k++)
-				p[k] = lo[k] + uniform() * (hi[k] - lo[k]);
-			random_unit(d);
+				p[k] = lo[k] + cast_uniform() * (hi[k] - lo[k]);
+			cast_random_unit(d);
 			double op[3], od[3];
 			scene_xform_point(&sh.inv, p, op);
 			bool in = shape_of(&o)->inside(&s, &o, op);
@@ -324,7 +254,7 @@ static void test_shape(device_ctx *dev, cl_program prog, int which, int n_rays)
 			double q[3];
 			memcpy(q, p, sizeof q);
 			for (int c = 0; c < 200; c++) {
-				double nrm[3], t = host_trace(&sh, q, d, nrm);
+				double nrm[3], t = cast_trace(&sh, q, d, nrm);
 				if (isinf(t))
 					break;
 				scene_xform_vector(&sh.inv, d, od);

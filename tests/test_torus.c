@@ -26,21 +26,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cast.h"
 #include "device.h"
 #include "lower.h"
 #include "shape.h"
 
 static int failures;
-static uint64_t rng_state = 0x2545f4914f6cdd1dull;
-
-static double uniform(void)   /* splitmix64 */
-{
-	uint64_t z = (rng_state += 0x9e3779b97f4a7c15ull);
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-	return (double)((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
-}
-
 static double dot3(const double a[3], const double b[3])
 {
 	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -48,7 +39,7 @@ static double dot3(const double a[3], const double b[3])
 
 static void unit_vector(double v[3])
 {
-	double z = 2 * uniform() - 1, phi = 2 * M_PI * uniform(), s = sqrt(1 - z * z);
+	double z = 2 * cast_uniform() - 1, phi = 2 * M_PI * cast_uniform(), s = sqrt(1 - z * z);
 	v[0] = s * cos(phi), v[1] = s * sin(phi), v[2] = z;
 }
 
@@ -109,37 +100,10 @@ struct dev_hit {
 static int cast(device_ctx *dev, cl_program prog, const lower_result *lr, int shape, const float *rays, int n,
                 struct dev_hit *out)
 {
-	cl_int err;
-	cl_kernel k = clCreateKernel(prog, "shapecast", &err);
-	if (!k)
-		return device_fail("clCreateKernel shapecast", err);
 	float *res = malloc((size_t)n * 8 * sizeof *res);
-	cl_mem b[4] = {
-		clCreateBuffer(dev->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lr->dev_node_bytes,
-		               (void *)lr->dev_nodes, &err),
-		clCreateBuffer(dev->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lr->n_all_prims * sizeof(dev_prim),
-		               lr->prims, &err),
-		clCreateBuffer(dev->context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, (size_t)n * 8 * sizeof(float),
-		               (void *)rays, &err),
-		clCreateBuffer(dev->context, CL_MEM_WRITE_ONLY, (size_t)n * 8 * sizeof(float), NULL, &err),
-	};
-	clSetKernelArg(k, 0, sizeof(cl_mem), &b[0]);
-	clSetKernelArg(k, 1, sizeof(cl_mem), &b[1]);
-	clSetKernelArg(k, 2, sizeof(int), &lr->n_prims);
-	clSetKernelArg(k, 3, sizeof(int), &lr->n_planes);
-	clSetKernelArg(k, 4, sizeof(cl_mem), &b[2]);
-	clSetKernelArg(k, 5, sizeof(cl_mem), &b[3]);
-	clSetKernelArg(k, 6, sizeof(int), &shape);
-	size_t global = (size_t)n;
-	err = clEnqueueNDRangeKernel(dev->queue, k, 1, NULL, &global, NULL, 0, NULL, NULL);
-	if (err == CL_SUCCESS)
-		err = clEnqueueReadBuffer(dev->queue, b[3], CL_TRUE, 0, (size_t)n * 8 * sizeof(float), res, 0, NULL, NULL);
-	for (int i = 0; i < 4; i++)
-		clReleaseMemObject(b[i]);
-	clReleaseKernel(k);
-	if (err != CL_SUCCESS) {
+	if (!res || cast_rays(dev, prog, "shapecast", lr, rays, n, res, 2, shape)) {
 		free(res);
-		return device_fail("shapecast", err);
+		return -1;
 	}
 	for (int i = 0; i < n; i++) {
 		const float *r = res + 8 * i;
@@ -175,14 +139,14 @@ static float *make_rays(const scene_object *o, const xform *inv, const struct bo
 		for (int tries = 0;; tries++) {
 			if (kind == RAYS_INSIDE) {
 				for (int k = 0; k < 3; k++)
-					org[k] = b->lo[k] + uniform() * (b->hi[k] - b->lo[k]);
+					org[k] = b->lo[k] + cast_uniform() * (b->hi[k] - b->lo[k]);
 				unit_vector(d);
 				break;
 			}
 			for (int k = 0; k < 3; k++) {
 				org[k] = b->c[k] + 2 * b->r * u[k];
-				target[k] = kind == RAYS_CENTRE ? centre[k] + 0.05 * b->r * (2 * uniform() - 1)
-				                                : b->lo[k] + uniform() * (b->hi[k] - b->lo[k]);
+				target[k] = kind == RAYS_CENTRE ? centre[k] + 0.05 * b->r * (2 * cast_uniform() - 1)
+				                                : b->lo[k] + cast_uniform() * (b->hi[k] - b->lo[k]);
 				d[k] = target[k] - org[k];
 			}
 			normalize3(d);
@@ -202,7 +166,7 @@ static float *make_rays(const scene_object *o, const xform *inv, const struct bo
 			tan[1] = a[2] * h.n[0] - a[0] * h.n[2];
 			tan[2] = a[0] * h.n[1] - a[1] * h.n[0];
 			normalize3(tan);
-			double off = b->r * 1e-3 * (2 * uniform() - 1) * (i % 3 == 0 ? 1e-3 : 1);
+			double off = b->r * 1e-3 * (2 * cast_uniform() - 1) * (i % 3 == 0 ? 1e-3 : 1);
 			for (int k = 0; k < 3; k++) {
 				d[k] = tan[k];
 				org[k] = x[k] + off * h.n[k] - 2 * b->r * tan[k];
