@@ -1,5 +1,6 @@
 /* cast.c: what the device property tests share (cast.h). */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "cast.h"
@@ -75,4 +76,41 @@ double cast_trace_from(const cast_shape *sh, const double wo[3], const double wd
 double cast_trace(const cast_shape *sh, const double wo[3], const double wd[3], double n[3])
 {
 	return cast_trace_from(sh, wo, wd, 0, n);
+}
+
+int cast_check_inside(const cast_shape *sh, const char *what, const double lo[3], const double hi[3], double size,
+                      int n)
+{
+	int bad = 0, bad_normal = 0, inside = 0;
+	for (int i = 0; i < n; i++) {
+		double p[3], d[3], op[3], od[3], q[3];
+		for (int k = 0; k < 3; k++)
+			p[k] = lo[k] + cast_uniform() * (hi[k] - lo[k]);
+		cast_random_unit(d);
+		scene_xform_point(&sh->inv, p, op);
+		bool in = shape_of(sh->o)->inside(sh->s, sh->o, op);
+		inside += in;
+		int crossings = 0;
+		memcpy(q, p, sizeof q);
+		for (int c = 0; c < 200; c++) {
+			double nrm[3], t = cast_trace(sh, q, d, nrm);
+			if (isinf(t))
+				break;
+			scene_xform_vector(&sh->inv, d, od);
+			double dot = nrm[0] * od[0] + nrm[1] * od[1] + nrm[2] * od[2];
+			/* leaving the solid (odd crossings so far from inside) faces out */
+			bool leaving = (crossings % 2 == 0) == in;
+			bad_normal += dot != 0 && (dot > 0) != leaving;
+			crossings++;
+			for (int k = 0; k < 3; k++)
+				q[k] += t * d[k];
+			for (int k = 0; k < 3; k++)
+				q[k] += 1e-9 * size * d[k];
+		}
+		bad += (crossings % 2 == 1) != in;
+	}
+	bool ok = bad <= 4 && bad_normal <= 4;
+	printf("%s: %s: %d points (%d inside), %d disagree with trace()'s crossings, %d normals face in\n",
+	       ok ? "ok" : "FAIL", what, n, inside, bad, bad_normal);
+	return ok ? 0 : -1;
 }

@@ -36,4 +36,12 @@ typedef struct {
 double cast_trace_from(const cast_shape *sh, const double wo[3], const double wd[3], double tmin, double n[3]);
 double cast_trace(const cast_shape *sh, const double wo[3], const double wd[3], double n[3]);
 
+/* The host's inside test against trace(): n random points of [lo, hi] (world
+ * space; size the shape's), each inside when a ray out of it crosses the
+ * surface an odd number of times, and every crossing's normal facing out.
+ * Prints one ok/FAIL line; 0, or -1 when more than 4 points or normals are
+ * wrong. */
+int cast_check_inside(const cast_shape *sh, const char *what, const double lo[3], const double hi[3], double size,
+                      int n);
+
 #endif

@@ -258,42 +258,8 @@ static void test_shape(device_ctx *dev, cl_program prog, int which, int n_rays)
 
 	/* the host's inside against trace(): crossings of a ray out of the point,
 	 * and the normals at the crossings point out */
-	if (shape_of(&o)->inside && !(o.shape_flags & SHAPE_OPEN)) {
-		int bad = 0, bad_normal = 0, inside = 0;
-		for (int i = 0; i < 2000; i++) {
-			double p[3], d[3];
-			for (int k = 0; k < 3; k++)
-				p[k] = lo[k] + cast_uniform() * (hi[k] - lo[k]);
-			cast_random_unit(d);
-			double op[3], od[3];
-			scene_xform_point(&sh.inv, p, op);
-			bool in = shape_of(&o)->inside(&s, &o, op);
-			inside += in;
-			int crossings = 0;
-			double q[3];
-			memcpy(q, p, sizeof q);
-			for (int c = 0; c < 200; c++) {
-				double nrm[3], t = cast_trace(&sh, q, d, nrm);
-				if (isinf(t))
-					break;
-				scene_xform_vector(&sh.inv, d, od);
-				double dot = nrm[0] * od[0] + nrm[1] * od[1] + nrm[2] * od[2];
-				/* leaving the solid (odd crossings so far from inside) faces out */
-				bool leaving = (crossings % 2 == 0) == in;
-				bad_normal += dot != 0 && (dot > 0) != leaving;
-				crossings++;
-				for (int k = 0; k < 3; k++)
-					q[k] += t * d[k];
-				for (int k = 0; k < 3; k++)
-					q[k] += 1e-9 * size * d[k];
-			}
-			bad += (crossings % 2 == 1) != in;
-		}
-		bool ok2 = bad <= 4 && bad_normal <= 4;
-		printf("%s: %s: 2000 points (%d inside), %d disagree with trace()'s crossings, %d normals face in\n",
-		       ok2 ? "ok" : "FAIL", names[which], inside, bad, bad_normal);
-		failures += !ok2;
-	}
+	if (shape_of(&o)->inside && !(o.shape_flags & SHAPE_OPEN))
+		failures += cast_check_inside(&sh, names[which], lo, hi, size, 2000) != 0;
 done:
 	free(rays);
 	free(hits);
