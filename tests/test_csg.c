@@ -230,13 +230,13 @@ static void run_case(device_ctx *dev, cl_program prog, const char *what, struct 
 	fclose(f);
 	scene s;
 	scene_init(&s);
-	ast_node *ast = parse_text(what, text, len);
+	ast_node *ast = parse_text(what, text, len);   /* the source table owns text now */
 	lower_result lr;
 	int ok = ast && eval_scene(ast, &s, NULL) == 0 && diag_error_count() == 0 && lower_scene(&s, NULL, &lr) == 0;
 	if (!ok) {
 		printf("FAIL: %s: the scene did not evaluate and lower:\n%s\n", what, text);
 		failures++;
-		free(text);
+		ast_free(ast);
 		scene_free(&s);
 		return;
 	}
@@ -300,7 +300,7 @@ static void run_case(device_ctx *dev, cl_program prog, const char *what, struct 
 	failures += bad > 0;
 	free(rays);
 	free(hits);
-	free(text);
+	ast_free(ast);
 	lower_free(&lr);
 	scene_free(&s);
 }
