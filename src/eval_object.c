@@ -258,9 +258,10 @@ static int add_part(struct eval *e, const ast_node *item, struct objval *o);
 
 /* Appends to p the formula of o's shapes, their leaf numbers moved up by
  * shift: a CSG object's program, a shape standing alone as one leaf, and
- * several of them as a union, which keeps their inner surfaces. Nothing is an
- * empty part, inside nowhere. */
-static void csg_formula(const struct objval *o, csg_prog *p, int shift)
+ * several of them combined by join (CSG_UNION for a union, which keeps their
+ * inner surfaces; CSG_AND for the parts of a clip). Nothing is an empty part,
+ * inside nowhere. */
+static void csg_parts(const struct objval *o, csg_prog *p, int shift, int join)
 {
 	int parts = 0;
 	for (int i = 0; i < o->n_objs;) {
@@ -276,10 +277,15 @@ static void csg_formula(const struct objval *o, csg_prog *p, int shift)
 			i++;
 		}
 		if (++parts > 1)
-			csg_push(p, CSG_UNION, 2);
+			csg_push(p, join, 2);
 	}
 	if (parts == 0)
 		csg_push(p, CSG_LEAF, CSG_NO_LEAF);
+}
+
+static void csg_formula(const struct objval *o, csg_prog *p, int shift)
+{
+	csg_parts(o, p, shift, CSG_UNION);
 }
 
 /* Makes all of o's shapes the leaves of one CSG object with program p. */
@@ -423,22 +429,11 @@ static int clipped_by(struct eval *e, const ast_node *b, struct objval *o)
 		return -1;
 	csg_prog p = { 0 };
 	csg_formula(o, &p, 0);
-	int shift = o->n_objs;
 	struct objval *c = v.obj;
 	for (int i = 0; i < c->n_objs; i++)
 		c->objs[i].clip = true;
-	for (int i = 0; i < c->n_objs;) {   /* inside every clipping object: each part of the clip */
-		const struct objcsg *g = NULL;
-		for (int k = 0; k < c->n_csgs; k++)
-			if (c->csgs[k].first == i)
-				g = &c->csgs[k];
-		if (g) {
-			csg_append(&p, g->ops, g->n_ops, shift + i);
-			i += g->n_leaves;
-		} else {
-			csg_push(&p, CSG_LEAF, shift + i);
-			i++;
-		}
+	if (c->n_objs > 0) {   /* inside every clipping object: each part of the clip */
+		csg_parts(c, &p, o->n_objs, CSG_AND);
 		csg_push(&p, CSG_AND, 2);
 	}
 	for (int i = 0; i < c->n_objs; i++)
@@ -611,6 +606,17 @@ static int union_block(struct eval *e, const ast_node *b, value *out)
 	return rc || err ? -1 : 0;
 }
 
+/* The parts of a CSG block are complete: its program becomes the object's. */
+static void csg_close(struct eval *e, const ast_node *b, const char *an, struct objval *o, csg_prog *p, int parts)
+{
+	if (parts < 2)
+		eval_warning(e, b->loc, "%s should have at least 2 objects (POV-Ray's warning)", an);
+	if (parts == 0)
+		csg_push(p, CSG_LEAF, CSG_NO_LEAF);
+	csg_group(o, p, b->loc);
+	*p = (csg_prog){ 0 };
+}
+
 /* merge | intersection | difference { OBJECT... [OBJECT_MODIFIERS...] }: one
  * CSG object whose leaves are all the shapes of its parts. A difference is its
  * first part less the others; fewer than two parts draw what POV-Ray draws,
@@ -631,14 +637,8 @@ static int csg_block(struct eval *e, const ast_node *b, value *out)
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
 		if (!eval_is_object_block(item)) {
-			if (!modifiers_seen) {   /* the parts are complete: the program is too */
-				if (parts < 2)
-					eval_warning(e, b->loc, "%s should have at least 2 objects (POV-Ray's warning)", an);
-				if (parts == 0)
-					csg_push(&p, CSG_LEAF, CSG_NO_LEAF);
-				csg_group(out->obj, &p, b->loc);
-				p = (csg_prog){ 0 };
-			}
+			if (!modifiers_seen)
+				csg_close(e, b, an, out->obj, &p, parts);
 			modifiers_seen = 1;
 			rc = object_modifier(e, &c, item, out->obj, name);
 			continue;
@@ -654,33 +654,16 @@ static int csg_block(struct eval *e, const ast_node *b, value *out)
 			break;
 		}
 		resolve_texture(part.obj);
-		if (part.obj->unsupported && !out->obj->unsupported) {
-			out->obj->unsupported = part.obj->unsupported;
-			out->obj->unsupported_loc = part.obj->unsupported_loc;
-		}
 		csg_formula(part.obj, &p, out->obj->n_objs);
 		if (difference && parts > 0)
 			csg_push(&p, CSG_NOT, 0);
 		if (++parts > 1)
 			csg_push(&p, op, 2);
-		struct objval *o = out->obj;
-		for (int i = 0; i < part.obj->n_objs; i++)
-			eval_objval_add(o, &part.obj->objs[i]);
-		for (int i = 0; i < part.obj->n_lights; i++) {
-			struct lightval l = part.obj->lights[i];
-			part.obj->lights[i].looks = NULL;
-			eval_objval_add_light(o, &l);
-		}
+		eval_objval_merge(out->obj, part.obj);   /* its CSG objects are in p now: csg_close drops them */
 		eval_value_free(&part);
 	}
-	if (rc == 0 && !err && !modifiers_seen) {
-		if (parts < 2)
-			eval_warning(e, b->loc, "%s should have at least 2 objects (POV-Ray's warning)", an);
-		if (parts == 0)
-			csg_push(&p, CSG_LEAF, CSG_NO_LEAF);
-		csg_group(out->obj, &p, b->loc);
-		p = (csg_prog){ 0 };
-	}
+	if (rc == 0 && !err && !modifiers_seen)
+		csg_close(e, b, an, out->obj, &p, parts);
 	free(p.ops);
 	eval_cursor_free(&c);
 	if (rc || err)
