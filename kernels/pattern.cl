@@ -757,6 +757,11 @@ float pattern_at(global const dev_pattern *pt, global const dev_warp *warps, flo
 	case PATTERN_WRINKLES:
 		v = pattern_wrinkles(p, generator);
 		break;
+	case PATTERN_FUNCTION:   /* POV-Ray wraps values above 1, not those below 0 */
+		v = scene_function_pattern((int)pt->params[0].x, p);
+		if (v > 1.0f)
+			v = fmod(v, 1.0f);
+		break;
 	default:
 		return 0.0f;
 	}

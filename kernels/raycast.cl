@@ -68,3 +68,11 @@ kernel void shapecast(global const bvh_node *nodes, global const dev_prim *prims
 	out[2 * i] = (float4)(h.t, as_float(h.prim), any ? 1.0f : 0.0f, in ? 1.0f : 0.0f);
 	out[2 * i + 1] = (float4)(n, 0.0f);
 }
+
+/* test_function: the scene's function f at each point, as patterns see it
+ * (before a pattern wraps it). */
+kernel void function_values(int f, global const float4 *points, global float *out)
+{
+	int i = get_global_id(0);
+	out[i] = scene_function_pattern(f, points[i].xyz);
+}

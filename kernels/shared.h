@@ -178,6 +178,7 @@ enum {                       /* ORDER: the names in src/eval_pattern.c */
 	PATTERN_SPIRAL2, PATTERN_SPOTTED, PATTERN_SQUARE, PATTERN_TRIANGULAR, PATTERN_WAVES,
 	PATTERN_WOOD, PATTERN_WRINKLES,
 	PATTERN_IMAGE_MAP,   /* a colour, not a value: texture.cl's texture_image */
+	PATTERN_FUNCTION,    /* function { }: the scene's function params[0].x (function.cl) */
 	PATTERN_COUNT
 };
 /* POV-Ray's wave types, applied to a continuous pattern's value. */
@@ -243,6 +244,7 @@ typedef struct {
  *              1 spherical, 2 cylindrical, 5 torus), z interpolate (0 none,
  *              2 bilinear, 4 normalized distance), w 1 for once;
  *              params[1].x filter all, y transmit all; no map
+ *   function:  params[0].x the scene's function (scene.functions)
  *   granite, leopard, ...: none */
 typedef struct {
 	float4 rows[3];

@@ -168,7 +168,7 @@ static void print_build_log(device_ctx *d, cl_program prog)
 	free(log);
 }
 
-cl_program device_build(device_ctx *d, const char *kernel_dir, const char *options)
+cl_program device_build(device_ctx *d, const char *kernel_dir, const char *options, const char *extra)
 {
 	int n = 0;
 	while (device_sources[n].name)
@@ -177,11 +177,13 @@ cl_program device_build(device_ctx *d, const char *kernel_dir, const char *optio
 	if (kernel_dir && !disk)
 		return NULL;
 	const char *texts[64];
-	for (int i = 0; i < n && i < 64; i++)
+	for (int i = 0; i < n && i < 63; i++)
 		texts[i] = disk ? disk[i] : device_sources[i].text;
+	if (extra)
+		texts[n++] = extra;
 	cl_int err;
 	cl_program prog = clCreateProgramWithSource(d->context, n, texts, NULL, &err);
-	for (int i = 0; disk && i < n; i++)
+	for (int i = 0; disk && i < n - (extra != NULL); i++)
 		free(disk[i]);
 	free(disk);
 	if (!prog) {

@@ -30,8 +30,9 @@ int device_list(FILE *out);
 int device_open(device_ctx *d, int index);
 
 /* Builds the program from the embedded sources, or from the same files under
- * kernel_dir when it is not NULL. Returns NULL after printing the build log. */
-cl_program device_build(device_ctx *d, const char *kernel_dir, const char *options);
+ * kernel_dir when it is not NULL, then extra when it is not NULL (the scene's
+ * functions, lower_result.functions). Returns NULL after printing the build log. */
+cl_program device_build(device_ctx *d, const char *kernel_dir, const char *options, const char *extra);
 
 void device_close(device_ctx *d);
 

@@ -510,6 +510,14 @@ static int pattern_start(struct eval *e, const ast_node *item, struct pattern *p
 		start_pattern(p, item, item->str);
 		return 0;
 	}
+	if (item->kind == AST_FUNCTION) {   /* function { }: the device runs it */
+		start_pattern(p, item, scene_pattern_name(PATTERN_FUNCTION));
+		int f;
+		if (eval_function_index(e, item, &f))
+			return -1;
+		p->pg.params[0][0] = f;
+		return 0;
+	}
 	return 1;
 }
 
@@ -646,7 +654,7 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	if ((item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) ||
 	    item->kind == AST_FUNCTION || (item->kind == AST_BLOCK && item->kw == KW_OBJECT)) {
 		const char *name = item->kind == AST_FUNCTION ? "function" : item->kw == KW_OBJECT ? "object" : item->str;
-		start_pattern(p, item, name);   /* image_map, function, object... */
+		start_pattern(p, item, name);   /* image_map, object... */
 		return 0;
 	}
 	if (item->kind == AST_FLAG && item->kw == KW_ONCE)

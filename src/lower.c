@@ -910,6 +910,9 @@ static int widen_trees(lower_result *out)
 
 const char *lower_kernel_options(const lower_result *lr)
 {
+	if (lr->functions)
+		return lr->layout == LOWER_LAYOUT_WIDE ? "-cl-std=CL1.2 -DBVH_WIDE=1 -DSCENE_FUNCTIONS=1"
+		                                        : "-cl-std=CL1.2 -DSCENE_FUNCTIONS=1";
 	return lr->layout == LOWER_LAYOUT_WIDE ? "-cl-std=CL1.2 -DBVH_WIDE=1" : "-cl-std=CL1.2";
 }
 
@@ -972,6 +975,7 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 		rc = widen_trees(out);
 	if (rc == 0)
 		lower_emitters(out);
+	out->functions = lower_function_source(s);
 	for (int m = 0; m < s->n_meshes; m++) {
 		free(lw.meshes[m].prims.p);
 		bvh_free(&lw.meshes[m].bvh);
@@ -986,6 +990,7 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 
 void lower_free(lower_result *r)
 {
+	free(r->functions);
 	free(r->nodes);
 	free(r->wnodes);
 	free(r->normals);

@@ -80,14 +80,19 @@ typedef struct {
 	lower_bvh_stats *stats;   /* [0] the top level, then one per mesh placed */
 	int n_stats;
 	dev_params params;        /* camera and background; the renderer fills the rest */
+	char *functions;          /* the scene's functions as OpenCL C (lower_function.c), built
+	                           * after the kernels' files; NULL when it has none */
 } lower_result;
 
 /* Returns 0, or -1 after printing errors against the objects' source lines. */
 int lower_scene(const scene *s, const lower_options *opt, lower_result *out);
 void lower_free(lower_result *r);
 
-/* The OpenCL build options for lr's kernels (the node layout is a -D). */
+/* The OpenCL build options for lr's kernels (the node layout is a -D, and
+ * SCENE_FUNCTIONS says that lr->functions follows the kernels' files). */
 const char *lower_kernel_options(const lower_result *lr);
+/* The scene's functions as OpenCL C, or NULL when it has none (or on out of memory). */
+char *lower_function_source(const scene *s);
 
 /* A POV-Ray texture and interior as the kernels read them (ambient multiplied
  * by ambient_light); its pattern pigments go into lt. local: a mesh's own

@@ -537,7 +537,7 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	catch_signals();
 	int ran = -1;   /* 1: failed after some passes, whose samples f holds */
 	if (device_open(&dev, o->device) == 0 &&
-	    (prog = device_build(&dev, o->kernel_dir, lower_kernel_options(&lr))) != NULL)
+	    (prog = device_build(&dev, o->kernel_dir, lower_kernel_options(&lr), lr.functions)) != NULL)
 		ran = render_run(&dev, prog, &lr, &rs, &f, &st);
 	if (ran >= 0) {
 		if (!o->quiet && ran == 0)

@@ -180,6 +180,9 @@ int scene_add_csg(scene *s, const scene_csg *c)
 
 void scene_free(scene *s)
 {
+	for (int i = 0; i < s->n_functions; i++)
+		free(s->functions[i].ops);
+	free(s->functions);
 	for (int i = 0; i < s->n_csgs; i++)
 		free(s->csgs[i].ops);
 	free(s->csgs);
@@ -537,7 +540,7 @@ static const char *const pattern_names[] = {
 	"solid", "agate", "aoi", "boxed", "bozo", "brick", "bumps", "cells", "checker", "crackle", "cubic",
 	"cylindrical", "dents", "facets", "gradient", "granite", "hexagon", "leopard", "marble", "onion",
 	"planar", "quilted", "radial", "ripples", "spherical", "spiral1", "spiral2", "spotted", "square",
-	"triangular", "waves", "wood", "wrinkles", "image_map",
+	"triangular", "waves", "wood", "wrinkles", "image_map", "function",
 };
 _Static_assert(sizeof pattern_names / sizeof *pattern_names == PATTERN_COUNT, "a name for each pattern");
 

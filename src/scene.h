@@ -263,6 +263,48 @@ typedef struct {
 	src_loc loc;
 } scene_csg;
 
+/* A POV-Ray function { } as a closed program (src/eval_function.c): its
+ * parameters are p0 .. n_params - 1, every declared value it named is a
+ * constant, and a function it calls is an earlier one of the pool. The ops are
+ * postfix: each pops its operands and pushes its result; the last leaves the
+ * function's value. Lowering writes each function as OpenCL C from these ops
+ * alone (src/lower_function.c), so nothing the scene wrote, no name and no
+ * text, reaches the kernels' source; scene_function_eval runs the same program
+ * on the host in double. */
+#define SCENE_FOPS(X) \
+	X(CONST, 0)  X(PARAM, 0)  X(CALL, 0) \
+	X(NEG, 1)    X(NOT, 1)    X(ABS, 1)   X(ACOS, 1)  X(ASIN, 1)  X(ATAN, 1) \
+	X(ACOSH, 1)  X(ASINH, 1)  X(ATANH, 1) X(CEIL, 1)  X(COS, 1)   X(COSH, 1) \
+	X(DEGREES, 1) X(EXP, 1)   X(FLOOR, 1) X(INT, 1)   X(LN, 1)    X(LOG, 1) \
+	X(RADIANS, 1) X(SIN, 1)   X(SINH, 1)  X(SQRT, 1)  X(TAN, 1)   X(TANH, 1) \
+	X(ADD, 2)    X(SUB, 2)    X(MUL, 2)   X(DIV, 2)   X(LT, 2)    X(LE, 2) \
+	X(GT, 2)     X(GE, 2)     X(EQ, 2)    X(NE, 2)    X(AND, 2)   X(OR, 2) \
+	X(MIN, 2)    X(MAX, 2)    X(ATAN2, 2) X(POW, 2)   X(MOD, 2)   X(IDIV, 2) \
+	X(COND, 3)   X(SELECT3, 3) X(SELECT4, 4)
+enum {
+#define X(name, arity) FOP_##name,
+	SCENE_FOPS(X)
+#undef X
+	FOP_COUNT
+};
+/* CONST pushes value; PARAM pushes parameter arg; CALL pops the callee's
+ * parameters (the last on top) and pushes function arg's value for them. */
+typedef struct {
+	int op, arg;
+	double value;
+} scene_fop;
+typedef struct {
+	int n_params;
+	scene_fop *ops;
+	int n_ops;
+	src_loc loc;
+	const void *key;         /* what it was made from: eval makes a function once */
+} scene_function;
+/* The most a program may push, and the most ops in all a scene's functions may
+ * have (eval_function.c refuses more): a kernel must stay small enough to build. */
+#define SCENE_FUNCTION_STACK 64
+#define SCENE_MAX_FOPS 200000
+
 typedef struct {
 	scene_camera camera;
 	scene_object *objects;
@@ -273,6 +315,8 @@ typedef struct {
 	int n_meshes, cap_meshes;
 	scene_csg *csgs;
 	int n_csgs, cap_csgs;
+	scene_function *functions;  /* the functions patterns and shapes run on the device */
+	int n_functions, cap_functions, n_fops;
 	scene_outline *outlines;
 	int n_outlines, cap_outlines;
 	scene_pigment *pigments;   /* the pattern pigments' pool, scene_material.pattern */
@@ -313,6 +357,14 @@ int scene_add_image(scene *s, const scene_image *im);
 int scene_add_mesh(scene *s, scene_mesh *m);
 /* Takes ownership of c's ops; returns its index. */
 int scene_add_csg(scene *s, const scene_csg *c);
+/* Takes ownership of f's ops; returns its index. */
+int scene_add_function(scene *s, const scene_function *f);
+/* The value of function f for its parameters' values args, as the device computes it
+ * but in double: the host's twin of the OpenCL that lowering writes. */
+double scene_function_eval(const scene *s, int f, const double *args);
+/* An FOP_'s operand count and name ("add"). */
+int scene_fop_arity(int op);
+const char *scene_fop_name(int op);
 /* Takes ownership of o's arrays; returns its index. */
 int scene_add_outline(scene *s, const scene_outline *o);
 void scene_free(scene *s);

@@ -313,7 +313,7 @@ int main(int argc, char **argv)
 	if (device_open(&dev, -1))
 		return 1;
 	lower_result probe = { .layout = LOWER_LAYOUT_DEFAULT };
-	cl_program prog = device_build(&dev, getenv("ECLAT_KERNEL_DIR"), lower_kernel_options(&probe));
+	cl_program prog = device_build(&dev, getenv("ECLAT_KERNEL_DIR"), lower_kernel_options(&probe), NULL);
 	if (!prog)
 		return 1;
 	for (int kind = UNION; kind <= DIFFERENCE; kind++) {   /* each operation alone */

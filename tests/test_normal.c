@@ -160,7 +160,7 @@ static const char *test_kernel =
 	"	out[i] = (float4)(pattern_perturb(pt, warps, maps, points[i].xyz, (float3)(0.0f, 0.0f, -1.0f)), 0.0f);\n"
 	"}\n";
 
-static const char *const kernel_files[] = { "kernels/shared.h", "kernels/pattern_tables.cl", "kernels/pattern.cl",
+static const char *const kernel_files[] = { "kernels/shared.h", "kernels/function.cl", "kernels/pattern_tables.cl", "kernels/pattern.cl",
                                             "kernels/normal.cl" };
 
 static void fill_pattern(const struct ncase *c, dev_pattern *pt, dev_warp *warps, dev_map_entry *maps)
@@ -232,7 +232,7 @@ static void shade(float4 n, double rgb[3])
 static int compare(const char *dir)
 {
 	struct plane_device pd;
-	if (plane_open(&pd, kernel_files, 4, test_kernel, "normal_test", "test_normal") != 0)
+	if (plane_open(&pd, kernel_files, sizeof kernel_files / sizeof *kernel_files, test_kernel, "normal_test", "test_normal") != 0)
 		return 1;
 	int failures = 0;
 	static float4 normal[W * H];

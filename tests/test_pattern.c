@@ -226,7 +226,7 @@ static const char *test_kernel =
 	"	out[i] = pattern_value(pt, warps, points[i].xyz, normal.xyz, dirs[i].xyz);\n"
 	"}\n";
 
-static const char *const kernel_files[] = { "kernels/shared.h", "kernels/pattern_tables.cl", "kernels/pattern.cl" };
+static const char *const kernel_files[] = { "kernels/shared.h", "kernels/function.cl", "kernels/pattern_tables.cl", "kernels/pattern.cl" };
 
 static void fill_pattern(const struct pcase *c, dev_pattern *pt, dev_warp *warps)
 {
@@ -265,7 +265,7 @@ static int evaluate(struct plane_device *pd, const struct pcase *c, float *out)
 static int compare(const char *dir)
 {
 	struct plane_device pd;
-	if (plane_open(&pd, kernel_files, 3, test_kernel, "pattern_test", "test_pattern") != 0)
+	if (plane_open(&pd, kernel_files, sizeof kernel_files / sizeof *kernel_files, test_kernel, "pattern_test", "test_pattern") != 0)
 		return 1;
 	int failures = 0;
 	static float value[W * H], pov[W * H];

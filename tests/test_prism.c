@@ -276,7 +276,7 @@ int main(int argc, char **argv)
 		return 1;
 	printf("device: %s\n", dev.name);
 	lower_result probe = { .layout = LOWER_LAYOUT_BINARY };
-	cl_program prog = device_build(&dev, getenv("ECLAT_KERNEL_DIR"), lower_kernel_options(&probe));
+	cl_program prog = device_build(&dev, getenv("ECLAT_KERNEL_DIR"), lower_kernel_options(&probe), NULL);
 	if (!prog)
 		return 1;
 	for (int which = 0; which < SHAPES; which++)

@@ -428,7 +428,7 @@ int main(int argc, char **argv)
 		rounding_eps = 16 * FLT_EPSILON;
 	printf("device: %s, %s\n", dev.name, fp64 ? "roots in double" : "no double: roots in float");
 	lower_result probe = { .layout = LOWER_LAYOUT_DEFAULT };
-	cl_program prog = device_build(&dev, getenv("ECLAT_KERNEL_DIR"), lower_kernel_options(&probe));
+	cl_program prog = device_build(&dev, getenv("ECLAT_KERNEL_DIR"), lower_kernel_options(&probe), NULL);
 	if (!prog)
 		return 1;
 	const double none[3] = { 0, 0, 0 }, one[3] = { 1, 1, 1 };

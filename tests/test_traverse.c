@@ -600,7 +600,7 @@ int main(int argc, char **argv)
 	for (layout = LOWER_LAYOUT_BINARY; layout <= LOWER_LAYOUT_WIDE; layout++) {
 		/* the options come from a lowered scene; any scene of the layout gives them */
 		lower_result probe = { .layout = layout };
-		cl_program prog = device_build(&dev, getenv("ECLAT_KERNEL_DIR"), lower_kernel_options(&probe));
+		cl_program prog = device_build(&dev, getenv("ECLAT_KERNEL_DIR"), lower_kernel_options(&probe), NULL);
 		if (!prog)
 			return 1;
 		printf("layout: %s\n", layout == LOWER_LAYOUT_WIDE ? "wide" : "binary");

@@ -1,0 +1,135 @@
+/* lower_function.c: the scene's functions (scene.functions) written as OpenCL
+ * C, appended to the kernels' program when the scene has any
+ * (kernels/function.cl declares what they define).
+ *
+ * The text comes from the ops alone: each op is one statement from the table
+ * below, on numbered temporaries, and a constant is printed by printf from a
+ * double. No name, string or text of the scene reaches the kernels' source, so
+ * whatever a scene writes, the program is well-formed and does only
+ * arithmetic. The host's twin is scene_function_eval. */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "lower.h"
+
+/* Each op's expression on its operands #0, #1, ...: the same as apply() in
+ * scene_function.c. */
+static const char *const templates[FOP_COUNT] = {
+	[FOP_NEG] = "-#0", [FOP_NOT] = "(#0 == 0 ? 1 : 0)",
+	[FOP_ABS] = "fabs(#0)", [FOP_ACOS] = "acos(#0)", [FOP_ASIN] = "asin(#0)", [FOP_ATAN] = "atan(#0)",
+	[FOP_ACOSH] = "acosh(#0)", [FOP_ASINH] = "asinh(#0)", [FOP_ATANH] = "atanh(#0)", [FOP_CEIL] = "ceil(#0)",
+	[FOP_COS] = "cos(#0)", [FOP_COSH] = "cosh(#0)", [FOP_DEGREES] = "#0 * (real)57.295779513082323",
+	[FOP_EXP] = "exp(#0)", [FOP_FLOOR] = "floor(#0)", [FOP_INT] = "trunc(#0)", [FOP_LN] = "log(#0)",
+	[FOP_LOG] = "log10(#0)", [FOP_RADIANS] = "#0 * (real)0.017453292519943295", [FOP_SIN] = "sin(#0)",
+	[FOP_SINH] = "sinh(#0)", [FOP_SQRT] = "sqrt(#0)", [FOP_TAN] = "tan(#0)", [FOP_TANH] = "tanh(#0)",
+	[FOP_ADD] = "#0 + #1", [FOP_SUB] = "#0 - #1", [FOP_MUL] = "#0 * #1", [FOP_DIV] = "#0 / #1",
+	[FOP_LT] = "(#0 < #1 ? 1 : 0)", [FOP_LE] = "(#0 <= #1 ? 1 : 0)", [FOP_GT] = "(#0 > #1 ? 1 : 0)",
+	[FOP_GE] = "(#0 >= #1 ? 1 : 0)", [FOP_EQ] = "(#0 == #1 ? 1 : 0)", [FOP_NE] = "(#0 != #1 ? 1 : 0)",
+	[FOP_AND] = "(#0 != 0 && #1 != 0 ? 1 : 0)", [FOP_OR] = "(#0 != 0 || #1 != 0 ? 1 : 0)",
+	[FOP_MIN] = "fmin(#0, #1)", [FOP_MAX] = "fmax(#0, #1)", [FOP_ATAN2] = "atan2(#0, #1)",
+	[FOP_POW] = "pow(#0, #1)", [FOP_MOD] = "fmod(#0, #1)", [FOP_IDIV] = "trunc(#0 / #1)",
+	[FOP_COND] = "(#0 != 0 ? #1 : #2)", [FOP_SELECT3] = "(#0 < 0 ? #1 : #2)",
+	[FOP_SELECT4] = "(#0 < 0 ? #1 : #0 == 0 ? #2 : #3)",
+};
+
+struct text {
+	char *s;
+	size_t len, cap;
+	bool failed;
+};
+
+static void put(struct text *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+static void put(struct text *t, const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	int n = vsnprintf(NULL, 0, fmt, ap);
+	va_end(ap);
+	if (t->failed || n < 0)
+		return;
+	if (t->len + n + 1 > t->cap) {
+		size_t cap = (t->len + n + 1) * 2;
+		char *s = realloc(t->s, cap);
+		if (!s) {
+			t->failed = true;
+			return;
+		}
+		t->s = s;
+		t->cap = cap;
+	}
+	va_start(ap, fmt);
+	vsnprintf(t->s + t->len, t->cap - t->len, fmt, ap);
+	va_end(ap);
+	t->len += n;
+}
+
+/* One op as "real tN = ...;" on the temporaries named by stack. */
+static void statement(struct text *t, const scene *s, const scene_fop *o, int *stack, int *top, int temp)
+{
+	put(t, "\treal t%d = ", temp);
+	if (o->op == FOP_CONST) {
+		put(t, "(real)(%.17g);\n", o->value);
+	} else if (o->op == FOP_PARAM) {
+		put(t, "p%d;\n", o->arg);
+	} else if (o->op == FOP_CALL) {
+		int n = s->functions[o->arg].n_params;
+		*top -= n;
+		put(t, "scene_fn%d(", o->arg);
+		for (int i = 0; i < n; i++)
+			put(t, "%st%d", i ? ", " : "", stack[*top + i]);
+		put(t, ");\n");
+	} else {
+		int n = scene_fop_arity(o->op);
+		*top -= n;
+		for (const char *c = templates[o->op]; *c; c++) {
+			if (c[0] == '#' && c[1] >= '0' && c[1] < '0' + n)
+				put(t, "t%d", stack[*top + *++c - '0']);
+			else
+				put(t, "%c", *c);
+		}
+		put(t, ";\n");
+	}
+	stack[(*top)++] = temp;
+}
+
+static void function(struct text *t, const scene *s, int f)
+{
+	const scene_function *fn = &s->functions[f];
+	put(t, "real scene_fn%d(", f);
+	for (int i = 0; i < fn->n_params; i++)
+		put(t, "%sreal p%d", i ? ", " : "", i);
+	put(t, ")\n{\n");
+	int stack[SCENE_FUNCTION_STACK], top = 0;
+	for (int i = 0; i < fn->n_ops; i++)
+		statement(t, s, &fn->ops[i], stack, &top, i);
+	if (top > 0)
+		put(t, "\treturn t%d;\n}\n\n", stack[top - 1]);
+	else
+		put(t, "\treturn 0;\n}\n\n");
+}
+
+char *lower_function_source(const scene *s)
+{
+	if (s->n_functions == 0)
+		return NULL;
+	struct text t = { 0 };
+	put(&t, "/* The scene's functions, written by src/lower_function.c. */\n");
+	for (int f = 0; f < s->n_functions; f++)
+		function(&t, s, f);
+	put(&t, "float scene_function_pattern(int f, float3 p)\n{\n\tswitch (f) {\n");
+	for (int f = 0; f < s->n_functions; f++) {
+		put(&t, "\tcase %d: return (float)scene_fn%d(", f, f);
+		for (int i = 0; i < s->functions[f].n_params; i++)
+			put(&t, "%s%s", i ? ", " : "", i == 0 ? "p.x" : i == 1 ? "p.y" : i == 2 ? "p.z" : "0");
+		put(&t, ");\n");
+	}
+	put(&t, "\t}\n\treturn 0.0f;\n}\n");
+	if (t.failed) {
+		free(t.s);
+		return NULL;
+	}
+	return t.s;
+}

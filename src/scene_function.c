@@ -1,0 +1,128 @@
+/* scene_function.c: the pool of POV-Ray functions made into programs
+ * (scene.h, scene_function), and their host evaluation: the same ops, in the
+ * same order, as the OpenCL that lowering writes, in double. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "scene.h"
+
+static const struct {
+	const char *name;
+	int arity;
+} fops[] = {
+#define X(name, arity) { #name, arity },
+	SCENE_FOPS(X)
+#undef X
+};
+
+int scene_fop_arity(int op)
+{
+	return op >= 0 && op < FOP_COUNT ? fops[op].arity : 0;
+}
+
+const char *scene_fop_name(int op)
+{
+	return op >= 0 && op < FOP_COUNT ? fops[op].name : "?";
+}
+
+int scene_add_function(scene *s, const scene_function *f)
+{
+	if (s->n_functions == s->cap_functions) {
+		int cap = s->cap_functions ? 2 * s->cap_functions : 8;
+		scene_function *p = realloc(s->functions, cap * sizeof *p);
+		if (!p)
+			abort();
+		s->functions = p;
+		s->cap_functions = cap;
+	}
+	s->functions[s->n_functions] = *f;
+	s->n_fops += f->n_ops;
+	return s->n_functions++;
+}
+
+static double truth(bool b)
+{
+	return b ? 1.0 : 0.0;
+}
+
+/* One op on its operands a[0 .. arity - 1]. */
+static double apply(int op, const double *a)
+{
+	switch (op) {
+	case FOP_NEG: return -a[0];
+	case FOP_NOT: return truth(a[0] == 0);
+	case FOP_ABS: return fabs(a[0]);
+	case FOP_ACOS: return acos(a[0]);
+	case FOP_ASIN: return asin(a[0]);
+	case FOP_ATAN: return atan(a[0]);
+	case FOP_ACOSH: return acosh(a[0]);
+	case FOP_ASINH: return asinh(a[0]);
+	case FOP_ATANH: return atanh(a[0]);
+	case FOP_CEIL: return ceil(a[0]);
+	case FOP_COS: return cos(a[0]);
+	case FOP_COSH: return cosh(a[0]);
+	case FOP_DEGREES: return a[0] * (180.0 / M_PI);
+	case FOP_EXP: return exp(a[0]);
+	case FOP_FLOOR: return floor(a[0]);
+	case FOP_INT: return trunc(a[0]);
+	case FOP_LN: return log(a[0]);
+	case FOP_LOG: return log10(a[0]);
+	case FOP_RADIANS: return a[0] * (M_PI / 180.0);
+	case FOP_SIN: return sin(a[0]);
+	case FOP_SINH: return sinh(a[0]);
+	case FOP_SQRT: return sqrt(a[0]);
+	case FOP_TAN: return tan(a[0]);
+	case FOP_TANH: return tanh(a[0]);
+	case FOP_ADD: return a[0] + a[1];
+	case FOP_SUB: return a[0] - a[1];
+	case FOP_MUL: return a[0] * a[1];
+	case FOP_DIV: return a[0] / a[1];
+	case FOP_LT: return truth(a[0] < a[1]);
+	case FOP_LE: return truth(a[0] <= a[1]);
+	case FOP_GT: return truth(a[0] > a[1]);
+	case FOP_GE: return truth(a[0] >= a[1]);
+	case FOP_EQ: return truth(a[0] == a[1]);
+	case FOP_NE: return truth(a[0] != a[1]);
+	case FOP_AND: return truth(a[0] != 0 && a[1] != 0);
+	case FOP_OR: return truth(a[0] != 0 || a[1] != 0);
+	case FOP_MIN: return fmin(a[0], a[1]);
+	case FOP_MAX: return fmax(a[0], a[1]);
+	case FOP_ATAN2: return atan2(a[0], a[1]);
+	case FOP_POW: return pow(a[0], a[1]);
+	case FOP_MOD: return fmod(a[0], a[1]);
+	case FOP_IDIV: return trunc(a[0] / a[1]);
+	case FOP_COND: return a[0] != 0 ? a[1] : a[2];
+	case FOP_SELECT3: return a[0] < 0 ? a[1] : a[2];
+	case FOP_SELECT4: return a[0] < 0 ? a[1] : a[0] == 0 ? a[2] : a[3];
+	default: return 0;
+	}
+}
+
+/* The programs are checked when made (eval_function.c): the stack stays within
+ * SCENE_FUNCTION_STACK and a call names an earlier function, so this recursion
+ * is as deep as the chain of calls. */
+double scene_function_eval(const scene *s, int f, const double *args)
+{
+	const scene_function *fn = &s->functions[f];
+	double stack[SCENE_FUNCTION_STACK];
+	int top = 0;
+	for (int i = 0; i < fn->n_ops; i++) {
+		const scene_fop *o = &fn->ops[i];
+		if (o->op == FOP_CONST) {
+			stack[top++] = o->value;
+		} else if (o->op == FOP_PARAM) {
+			stack[top++] = args[o->arg];
+		} else if (o->op == FOP_CALL) {
+			int n = s->functions[o->arg].n_params;
+			top -= n;
+			stack[top] = scene_function_eval(s, o->arg, stack + top);
+			top++;
+		} else {
+			int n = fops[o->op].arity;
+			top -= n;
+			stack[top] = apply(o->op, stack + top);
+			top++;
+		}
+	}
+	return top > 0 ? stack[top - 1] : 0;
+}
