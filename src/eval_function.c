@@ -10,6 +10,8 @@
  * comparisons, the math functions, select() and calls of other functions; a
  * called function becomes a function of the pool, made once. */
 #include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -27,9 +29,31 @@ struct fcomp {
 	scene_function f;
 	int cap, top;              /* ops allocated; the stack's height after them */
 	int depth;                 /* of calls: this function's */
+	bool *skipped;             /* set when --skip-unsupported turned an error into a warning */
 };
 
 static const char *const xyz[] = { "x", "y", "z" };
+
+/* What eclat cannot run on the device yet (not what is wrong in the scene):
+ * an error, or with --skip-unsupported a warning, and the pattern is averaged. */
+static int unsupported(struct eval *e, bool *skipped, src_loc loc, const char *fmt, ...)
+	__attribute__((format(printf, 4, 5)));
+
+static int unsupported(struct eval *e, bool *skipped, src_loc loc, const char *fmt, ...)
+{
+	char msg[256];
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof msg, fmt, ap);
+	va_end(ap);
+	if (!e->opt->skip_unsupported) {
+		eval_error(e, loc, "%s", msg);
+	} else {
+		eval_warn_once(e, loc, msg, "%s; the pattern is averaged", msg);
+		*skipped = true;
+	}
+	return -1;
+}
 
 static int param_index(const struct fcomp *c, const char *name)
 {
@@ -80,7 +104,8 @@ static int emit(struct fcomp *c, const ast_node *at, int op, int arg, double v)
 
 static int compile(struct fcomp *c, const ast_node *n);
 
-static int function_of(struct eval *e, const ast_node *def, const char *name, src_loc use, int depth, int *index);
+static int function_of(struct eval *e, const ast_node *def, const char *name, src_loc use, int depth, bool *skipped,
+                       int *index);
 
 static int operands(struct fcomp *c, const ast_node *n, int first, int count)
 {
@@ -167,10 +192,9 @@ static int builtin(struct fcomp *c, const ast_node *n)
 	default:
 		break;
 	}
-	if (op < 0) {
-		eval_error(c->e, n->loc, "%s() of the function's parameters cannot be computed on the device", name);
-		return -1;
-	}
+	if (op < 0)
+		return unsupported(c->e, c->skipped, n->loc, "%s() of the function's parameters cannot be computed on "
+		                   "the device", name);
 	if (n->n_kids != want) {
 		eval_error(c->e, n->loc, "%s() takes %d argument%s, not %d", name, want, want == 1 ? "" : "s", n->n_kids);
 		return -1;
@@ -186,7 +210,7 @@ static int call(struct fcomp *c, const ast_node *n)
 		return -1;
 	}
 	int callee;
-	if (function_of(c->e, v->node, n->str, n->loc, c->depth + 1, &callee))
+	if (function_of(c->e, v->node, n->str, n->loc, c->depth + 1, c->skipped, &callee))
 		return -1;
 	int want = c->e->s->functions[callee].n_params;
 	if (n->n_kids != want) {
@@ -235,15 +259,15 @@ static int compile(struct fcomp *c, const ast_node *n)
 		eval_error(c->e, n->loc, "'.%s' of a float has no meaning in a function", n->str);
 		return -1;
 	default:
-		eval_error(c->e, n->loc, "this expression of the function's parameters cannot be computed on the device "
-		           "(a function computes with floats)");
-		return -1;
+		return unsupported(c->e, c->skipped, n->loc, "this expression of the function's parameters cannot be "
+		                   "computed on the device (a function computes with floats)");
 	}
 }
 
 /* The pool's function made from def, made now unless it was before. name: how
  * the scene calls it (for messages), use: where. */
-static int function_of(struct eval *e, const ast_node *def, const char *name, src_loc use, int depth, int *index)
+static int function_of(struct eval *e, const ast_node *def, const char *name, src_loc use, int depth, bool *skipped,
+                       int *index)
 {
 	for (int i = 0; i < e->s->n_functions; i++)
 		if (e->s->functions[i].key == def) {
@@ -256,16 +280,14 @@ static int function_of(struct eval *e, const ast_node *def, const char *name, sr
 		return -1;
 	}
 	const ast_node *params = def->kids[0], *body = def->kids[1];
-	if (body->n_kids != 1 || !AST_IS_EXPRESSION(body->kids[0]->kind)) {
-		eval_error(e, use, "'%s' is a pattern or pigment function, which the device cannot run yet", name);
-		return -1;
-	}
-	if (body->kids[0]->kind == AST_CALL && strcmp(body->kids[0]->str, "internal") == 0) {
-		eval_error(e, use, "'%s' is one of POV-Ray's internal functions, which eclat does not have", name);
-		return -1;
-	}
+	if (body->n_kids != 1 || !AST_IS_EXPRESSION(body->kids[0]->kind))
+		return unsupported(e, skipped, use, "'%s' is a pattern or pigment function, which the device cannot run "
+		                   "yet", name);
+	if (body->kids[0]->kind == AST_CALL && strcmp(body->kids[0]->str, "internal") == 0)
+		return unsupported(e, skipped, use, "'%s' is one of POV-Ray's internal functions, which eclat does not "
+		                   "have yet", name);
 	struct fcomp c = { .e = e, .def = def, .names = params->n_kids ? NULL : xyz,
-	                   .n_params = params->n_kids ? params->n_kids : 3, .depth = depth };
+	                   .n_params = params->n_kids ? params->n_kids : 3, .depth = depth, .skipped = skipped };
 	c.f.n_params = c.n_params;
 	c.f.loc = def->loc;
 	c.f.key = def;
@@ -279,5 +301,7 @@ static int function_of(struct eval *e, const ast_node *def, const char *name, sr
 
 int eval_function_index(struct eval *e, const ast_node *def, int *index)
 {
-	return function_of(e, def, "function", def->loc, 0, index);
+	bool skipped = false;
+	int rc = function_of(e, def, "function", def->loc, 0, &skipped, index);
+	return rc && skipped ? 1 : rc;
 }

@@ -255,7 +255,8 @@ bool eval_is_defined(struct eval *e, const ast_node *n);
 bool eval_truth(double f);
 int eval_call_function(struct eval *e, const ast_node *call, const value *fn, value *out);
 /* The device's program (scene.functions) for the function def (an AST_FUNCTION),
- * made once (eval_function.c). */
+ * made once (eval_function.c). 0; -1 after an error; 1 when it uses what the
+ * device cannot run and --skip-unsupported made that a warning. */
 int eval_function_index(struct eval *e, const ast_node *def, int *index);
 /* Evaluates a function's body with its parameters (names, or the definition's
  * when NULL) bound to args in a scope of their own. */
