@@ -1,14 +1,21 @@
 /* function.cl: the scene's POV-Ray functions. lower_function.c writes them as
  * OpenCL C after the kernels' files when the scene has any (and builds with
- * SCENE_FUNCTIONS); this declares what they define, so that patterns can call
- * them, and defines it when there are none. */
+ * SCENE_FUNCTIONS); this declares what they define, so that patterns and
+ * shapes can call them, and defines it when there are none. */
 
-/* Function f of the scene (scene.functions) at p: x, y and z are p's. */
-float scene_function_pattern(int f, float3 p);
+/* Function f of the scene (scene.functions) at (x, y, z), its first three
+ * parameters (the others 0), in double where the device has it. */
+real scene_function_at(int f, real x, real y, real z);
 
 #ifndef SCENE_FUNCTIONS
-float scene_function_pattern(int f, float3 p)
+real scene_function_at(int f, real x, real y, real z)
 {
-	return 0.0f;
+	return (real)0;
 }
 #endif
+
+/* As a pattern sees it: at a point of the pattern's space. */
+inline float scene_function_pattern(int f, float3 p)
+{
+	return (float)scene_function_at(f, (real)p.x, (real)p.y, (real)p.z);
+}

@@ -336,6 +336,15 @@ enum kw_class {
 #define AST_WORD_LATHE "lathe"
 #define AST_WORD_TORUS "torus"
 #define AST_WORD_SUPERELLIPSOID "superellipsoid"
+#define AST_WORD_ISOSURFACE "isosurface"
+/* isosurface's own words (eval_isosurface.c) */
+#define AST_WORD_CONTAINED_BY "contained_by"
+#define AST_WORD_THRESHOLD "threshold"
+#define AST_WORD_MAX_GRADIENT "max_gradient"
+#define AST_WORD_MAX_TRACE "max_trace"
+#define AST_WORD_ALL_INTERSECTIONS "all_intersections"
+#define AST_WORD_POLARITY "polarity"
+#define AST_WORD_EVALUATE "evaluate"
 
 enum ast_keyword {
 	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */

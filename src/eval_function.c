@@ -32,6 +32,9 @@ struct fcomp {
 	bool *skipped;             /* set when --skip-unsupported turned an error into a warning */
 };
 
+/* What --skip-unsupported does instead, for its warning: "the pattern is averaged". */
+static const char *fallback;
+
 static const char *const xyz[] = { "x", "y", "z" };
 
 /* What eclat cannot run on the device yet (not what is wrong in the scene):
@@ -49,7 +52,7 @@ static int unsupported(struct eval *e, bool *skipped, src_loc loc, const char *f
 	if (!e->opt->skip_unsupported) {
 		eval_error(e, loc, "%s", msg);
 	} else {
-		eval_warn_once(e, loc, msg, "%s; the pattern is averaged", msg);
+		eval_warn_once(e, loc, msg, "%s; %s", msg, fallback);
 		*skipped = true;
 	}
 	return -1;
@@ -299,9 +302,10 @@ static int function_of(struct eval *e, const ast_node *def, const char *name, sr
 	return 0;
 }
 
-int eval_function_index(struct eval *e, const ast_node *def, int *index)
+int eval_function_index(struct eval *e, const ast_node *def, const char *instead, int *index)
 {
 	bool skipped = false;
+	fallback = instead;
 	int rc = function_of(e, def, "function", def->loc, 0, &skipped, index);
 	return rc && skipped ? 1 : rc;
 }

@@ -256,8 +256,11 @@ bool eval_truth(double f);
 int eval_call_function(struct eval *e, const ast_node *call, const value *fn, value *out);
 /* The device's program (scene.functions) for the function def (an AST_FUNCTION),
  * made once (eval_function.c). 0; -1 after an error; 1 when it uses what the
- * device cannot run and --skip-unsupported made that a warning. */
-int eval_function_index(struct eval *e, const ast_node *def, int *index);
+ * device cannot run and --skip-unsupported made that a warning, which ends
+ * with instead ("the pattern is averaged"). */
+int eval_function_index(struct eval *e, const ast_node *def, const char *instead, int *index);
+/* isosurface { }'s own items, up to its object modifiers (eval_isosurface.c). */
+int eval_isosurface_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 /* Evaluates a function's body with its parameters (names, or the definition's
  * when NULL) bound to args in a scope of their own. */
 int eval_function_body(struct eval *e, const ast_node *def, const char *const *names, const double *args, int n,

@@ -119,14 +119,14 @@ char *lower_function_source(const scene *s)
 	put(&t, "/* The scene's functions, written by src/lower_function.c. */\n");
 	for (int f = 0; f < s->n_functions; f++)
 		function(&t, s, f);
-	put(&t, "float scene_function_pattern(int f, float3 p)\n{\n\tswitch (f) {\n");
+	put(&t, "real scene_function_at(int f, real x, real y, real z)\n{\n\tswitch (f) {\n");
 	for (int f = 0; f < s->n_functions; f++) {
-		put(&t, "\tcase %d: return (float)scene_fn%d(", f, f);
+		put(&t, "\tcase %d: return scene_fn%d(", f, f);
 		for (int i = 0; i < s->functions[f].n_params; i++)
-			put(&t, "%s%s", i ? ", " : "", i == 0 ? "p.x" : i == 1 ? "p.y" : i == 2 ? "p.z" : "0");
+			put(&t, "%s%s", i ? ", " : "", i == 0 ? "x" : i == 1 ? "y" : i == 2 ? "z" : "0");
 		put(&t, ");\n");
 	}
-	put(&t, "\t}\n\treturn 0.0f;\n}\n");
+	put(&t, "\t}\n\treturn 0;\n}\n");
 	if (t.failed) {
 		free(t.s);
 		return NULL;

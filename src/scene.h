@@ -158,7 +158,8 @@ typedef struct {
 	X(CONE, cone) \
 	X(DISC, disc) \
 	X(TORUS, torus) \
-	X(SUPERELLIPSOID, superellipsoid)
+	X(SUPERELLIPSOID, superellipsoid) \
+	X(ISOSURFACE, isosurface)
 #define SCENE_SHAPE_ENUM_ROW(NAME, name) SHAPE_##NAME,
 typedef enum { SCENE_SHAPES(SCENE_SHAPE_ENUM_ROW) SHAPE_KINDS } scene_shape;
 
@@ -182,6 +183,7 @@ typedef struct {
 	bool clip;           /* a clipped_by shape: it only says what is inside, and is never seen */
 	int mesh;
 	int outline;         /* polygon, prism, text: an index into scene.outlines */
+	int function;        /* isosurface: its function (scene.functions), -1 for none */
 	xform xf;            /* object to world */
 	scene_material material;
 	bool textured;       /* false: takes the texture of an enclosing union, else the default */

@@ -9,6 +9,12 @@
  * scene wrote: strings that look like code, folded into constants, must leave
  * no quote, '#' or comment in it.
  *
+ * Isosurfaces: rays cast through the kernels (kernels/raycast.cl) at each of a
+ * few isosurfaces hit where the host's trace() (src/shape_isosurface.c, the
+ * same search in double) says, within the search's own step, accuracy, and
+ * trace() agrees with the sphere's closed form; the host's inside test agrees
+ * with trace()'s crossings (tests/cast.c).
+ *
  *   test_function [POINTS] */
 #include <math.h>
 #include <stdio.h>
@@ -93,6 +99,24 @@ static const struct {
 
 static int failures;
 
+/* The isosurfaces, each moved 20 units along x from the one before. */
+static const struct {
+	const char *name, *text;
+	double radius;   /* > 0: the sphere of this radius about the origin, in closed form */
+} isos[] = {
+	{ "a sphere", "function { x * x + y * y + z * z - 0.64 } accuracy 0.0001 max_gradient 4", 0.8 },
+	{ "a wavy ball in a sphere, turned and scaled",
+	  "function { x * x + y * y + z * z - 0.6 + 0.1 * sin(6 * x) * sin(6 * y) } contained_by { sphere { 0, 1 } }"
+	  " max_gradient 3 scale <1, 0.7, 1.2> rotate <20, 30, 40>", 0 },
+	{ "an open wave", "function { y + 0.3 * sin(3 * x) * cos(2 * z) } open max_gradient 1.5", 0 },
+	{ "a cylinder capped by its box, every crossing",
+	  "function { x * x + z * z } threshold 0.25 contained_by { box { <-1, -0.5, -1>, <1, 0.5, 1> } } "
+	  "all_intersections max_gradient 3 accuracy 0.0001", 0 },
+	{ "a shell of positive polarity", "function { x * x + y * y + z * z } threshold 0.3 polarity 1 "
+	  "max_trace 4 max_gradient 2 accuracy 0.0001 contained_by { sphere { 0, 0.9 } }", 0 },
+};
+#define N_ISO (int)(sizeof isos / sizeof *isos)
+
 static char *scene_text(size_t *len)
 {
 	char *text = NULL;
@@ -101,7 +125,7 @@ static char *scene_text(size_t *len)
 	      "#declare F0 = function(a, b) { sin(a * K) * cos(b * K) }\n"
 	      "#declare F1 = function { F0(x, z) + F0(z, y) * F0(y, x) }\n", f);
 	for (int i = 0; i < N_CASES; i++) {
-		fputs("plane { y, 0 pigment { function { ", f);
+		fputs("sphere { 1000, 0.001 pigment { function { ", f);
 		if (cases[i].body) {
 			fputs(cases[i].body, f);
 		} else {   /* c_nested: s = (s + x) * 0.5 + y * z / 8, forty times */
@@ -115,6 +139,8 @@ static char *scene_text(size_t *len)
 		}
 		fputs(" } } }\n", f);
 	}
+	for (int i = 0; i < N_ISO; i++)
+		fprintf(f, "isosurface { %s translate <%d, 0, 0> }\n", isos[i].text, 20 * i);
 	fclose(f);
 	return text;
 }
@@ -161,6 +187,109 @@ static void check_source(const char *src)
 	failures += !clean;
 }
 
+/* The sphere of radius r about c: the ray's nearest hit after 0, or INFINITY. */
+static double sphere_hit(const double c[3], double r, const double o[3], const double d[3])
+{
+	double oc[3] = { o[0] - c[0], o[1] - c[1], o[2] - c[2] };
+	double a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], b = oc[0] * d[0] + oc[1] * d[1] + oc[2] * d[2];
+	double disc = b * b - a * (oc[0] * oc[0] + oc[1] * oc[1] + oc[2] * oc[2] - r * r);
+	if (disc < 0)
+		return INFINITY;
+	double t0 = (-b - sqrt(disc)) / a, t1 = (-b + sqrt(disc)) / a;
+	return t0 > 0 ? t0 : t1 > 0 ? t1 : INFINITY;
+}
+
+static void test_isosurface(device_ctx *dev, cl_program prog, const scene *s, const lower_result *lr, int i,
+                            int n_rays)
+{
+	const scene_object *o = &s->objects[N_CASES + i];
+	cast_shape sh = { .s = s, .o = o };
+	lower_invert(&o->xf, &sh.inv);
+	double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY }, mid[3];
+	shape_of(o)->bounds(s, o, lo, hi);
+	double size = 0;
+	for (int k = 0; k < 3; k++) {
+		mid[k] = (lo[k] + hi[k]) / 2;
+		size = fmax(size, hi[k] - lo[k]);
+	}
+	float *rays = malloc((size_t)n_rays * 8 * sizeof *rays), *hits = malloc((size_t)n_rays * 4 * sizeof *hits);
+	for (int r = 0; r < n_rays; r++) {   /* from around it toward a point of its box, unit length */
+		double d[3], to[3], l = 0;
+		cast_random_unit(d);
+		for (int k = 0; k < 3; k++) {
+			to[k] = lo[k] + cast_uniform() * (hi[k] - lo[k]);
+			d[k] = to[k] - (mid[k] + 2 * size * d[k]);
+			l += d[k] * d[k];
+		}
+		for (int k = 0; k < 3; k++) {
+			rays[8 * r + k] = (float)(to[k] - d[k]);
+			rays[8 * r + 4 + k] = (float)(d[k] / sqrt(l));
+		}
+		rays[8 * r + 3] = 1e30f;
+		rays[8 * r + 7] = 0;
+	}
+	if (cast_rays(dev, prog, "raycast", lr, rays, n_rays, hits, 1, -1)) {
+		failures++;
+		free(rays);
+		free(hits);
+		return;
+	}
+	/* Both search the same grid of steps shorter than accuracy from where the
+	 * ray enters the container; the float ray moves the grid a little, so a
+	 * hit may land one step off, and a ray that grazes a sliver of the surface
+	 * thinner than a step may see it on one side only. */
+	int wrong = 0, grazing = 0, hit_count = 0, closed_form_bad = 0;
+	double step = 2 * o->param[1] * fmax(1, size);
+	for (int r = 0; r < n_rays; r++) {
+		const float *ray = rays + 8 * r;
+		double wo[3] = { ray[0], ray[1], ray[2] }, wd[3] = { ray[4], ray[5], ray[6] };
+		int prim;
+		memcpy(&prim, &hits[4 * r + 1], sizeof prim);
+		bool mine = prim >= 0 && lr->prims[prim].object == N_CASES + i;
+		double td = mine ? hits[4 * r] : INFINITY, th = cast_trace(&sh, wo, wd, NULL);
+		hit_count += isfinite(th);
+		if (isos[i].radius > 0) {   /* the sphere: trace() against the closed form */
+			double c[3] = { o->xf.m[0][3], o->xf.m[1][3], o->xf.m[2][3] };
+			double ta = sphere_hit(c, isos[i].radius, wo, wd), oc[3], along = 0, miss = 0;
+			for (int k = 0; k < 3; k++) {
+				oc[k] = c[k] - wo[k];
+				along += oc[k] * wd[k];
+			}
+			for (int k = 0; k < 3; k++)
+				miss += (oc[k] - along * wd[k]) * (oc[k] - along * wd[k]);
+			bool grazes = fabs(sqrt(miss) - isos[i].radius) < 1e-3;   /* the silhouette's sliver */
+			closed_form_bad += isfinite(ta) != isfinite(th) ? !grazes : isfinite(ta) && fabs(ta - th) > step;
+		}
+		if ((isinf(td) && isinf(th)) || fabs(td - th) <= step)
+			continue;
+		if (isinf(td) != isinf(th) || fabs(td - th) > step) {
+			double jo[3], tj;   /* grazing: a ray moved by a step sees the device's answer */
+			bool agrees = false;
+			for (int j = 0; j < 6 && !agrees; j++) {
+				for (int k = 0; k < 3; k++)
+					jo[k] = wo[k] + (k == j / 2 ? (j % 2 ? step : -step) : 0);
+				tj = cast_trace(&sh, jo, wd, NULL);
+				agrees = (isinf(td) && isinf(tj)) || fabs(td - tj) <= 2 * step;
+			}
+			if (agrees) {
+				grazing++;
+				continue;
+			}
+		}
+		if (wrong++ < 3)
+			printf("  ray <%.9g, %.9g, %.9g> <%.9g, %.9g, %.9g>: device t %.9g, host %.9g\n", wo[0], wo[1], wo[2],
+			       wd[0], wd[1], wd[2], td, th);
+	}
+	bool ok = wrong == 0 && grazing <= n_rays / 100 && closed_form_bad == 0 && hit_count > n_rays / 10;
+	printf("%s: isosurface, %s: %d rays (%d hit), %d disagree, %d graze it, %d off the closed form\n",
+	       ok ? "ok" : "FAIL", isos[i].name, n_rays, hit_count, wrong, grazing, closed_form_bad);
+	failures += !ok;
+	if (!(o->shape_flags & SHAPE_OPEN) && o->param[3] >= 4)   /* every crossing found: inside agrees */
+		failures += cast_check_inside(&sh, isos[i].name, lo, hi, size, 2000) != 0;
+	free(rays);
+	free(hits);
+}
+
 int main(int argc, char **argv)
 {
 	int n = argc > 1 ? atoi(argv[1]) : 4096;
@@ -205,6 +334,8 @@ int main(int argc, char **argv)
 		printf("%s: %s: %d points, %d disagree\n", bad ? "FAIL" : "ok", cases[c].name, n, bad);
 		failures += bad > 0;
 	}
+	for (int i = 0; i < N_ISO; i++)
+		test_isosurface(&dev, prog, &s, &lr, i, n);
 	free(pts);
 	free(out);
 	clReleaseProgram(prog);

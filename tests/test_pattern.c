@@ -226,7 +226,7 @@ static const char *test_kernel =
 	"	out[i] = pattern_value(pt, warps, points[i].xyz, normal.xyz, dirs[i].xyz);\n"
 	"}\n";
 
-static const char *const kernel_files[] = { "kernels/shared.h", "kernels/function.cl", "kernels/pattern_tables.cl", "kernels/pattern.cl" };
+static const char *const kernel_files[] = { "kernels/shared.h", "kernels/intersect.cl", "kernels/function.cl", "kernels/pattern_tables.cl", "kernels/pattern.cl" };
 
 static void fill_pattern(const struct pcase *c, dev_pattern *pt, dev_warp *warps)
 {

@@ -810,9 +810,10 @@ int main(int argc, char **argv)
 	/* every shape of the table has a maker, but a mesh (test_traverse's), a
 	 * smooth triangle (a triangle here), and the shapes whose arguments are
 	 * lists, which property tests of their own cover with the same rules:
-	 * tests/test_prism.c, test_revolve.c and test_torus.c */
+	 * tests/test_prism.c, test_revolve.c and test_torus.c, and the isosurface,
+	 * whose function is compiled into the kernels: tests/test_function.c */
 	static const char *const elsewhere[] = { "polygon", "prism", "text", "quadric", "sor", "lathe", "torus",
-	                                         "superellipsoid" };
+	                                         "superellipsoid", "isosurface" };
 	for (int s = 0; s < SHAPE_KINDS; s++) {
 		scene_object o = { .shape = (scene_shape)s };
 		const char *name = shape_of(&o)->name;
