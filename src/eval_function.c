@@ -286,9 +286,17 @@ static int function_of(struct eval *e, const ast_node *def, const char *name, sr
 	if (body->n_kids != 1 || !AST_IS_EXPRESSION(body->kids[0]->kind))
 		return unsupported(e, skipped, use, "'%s' is a pattern or pigment function, which the device cannot run "
 		                   "yet", name);
-	if (body->kids[0]->kind == AST_CALL && strcmp(body->kids[0]->str, "internal") == 0)
-		return unsupported(e, skipped, use, "'%s' is one of POV-Ray's internal functions, which eclat does not "
-		                   "have yet", name);
+	if (body->kids[0]->kind == AST_CALL && strcmp(body->kids[0]->str, "internal") == 0) {
+		const ast_node *call = body->kids[0];
+		int number;
+		if (call->n_kids != 1 || eval_expect_int(e, call->kids[0], &number))
+			return -1;
+		const ast_node *written = eval_internal_function(number);
+		if (!written)
+			return unsupported(e, skipped, use, "'%s' is one of POV-Ray's internal functions (internal(%d)), "
+			                   "which eclat does not have yet", name, number);
+		return function_of(e, written, name, use, depth + 1, skipped, index);
+	}
 	struct fcomp c = { .e = e, .def = def, .names = params->n_kids ? NULL : xyz,
 	                   .n_params = params->n_kids ? params->n_kids : 3, .depth = depth, .skipped = skipped };
 	c.f.n_params = c.n_params;

@@ -259,6 +259,9 @@ int eval_call_function(struct eval *e, const ast_node *call, const value *fn, va
  * device cannot run and --skip-unsupported made that a warning, which ends
  * with instead ("the pattern is averaged"). */
 int eval_function_index(struct eval *e, const ast_node *def, const char *instead, int *index);
+/* POV-Ray's internal function number (functions.inc's internal(N)) written in
+ * POV-Ray's language, or NULL when eclat has not written it (eval_internal.c). */
+const ast_node *eval_internal_function(int number);
 /* isosurface { }'s own items, up to its object modifiers (eval_isosurface.c). */
 int eval_isosurface_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 /* Evaluates a function's body with its parameters (names, or the definition's

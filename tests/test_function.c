@@ -75,10 +75,65 @@ static double c_nested(double x, double y, double z)
 	return -(-(-s));
 }
 
+/* POV-Ray's internal functions as POV-Ray 3.7 writes them (source/vm/fnintern.cpp),
+ * with the parameters the cases below give them; eclat writes them in POV-Ray's
+ * own language (src/eval_internal.c). */
+static double c_rounded_box(double x, double y, double z)
+{
+	double p0 = 0.2, p1 = 0.8, p2 = 0.5, p3 = 0.6;
+	double x2 = p1 - p0, y2 = p2 - p0, z2 = p3 - p0;
+	double x3 = x < x2 ? 0 : x - x2, y3 = y < y2 ? 0 : y - y2, z3 = z < z2 ? 0 : z - z2;
+	x2 = p0 - p1, y2 = p0 - p2, z2 = p0 - p3;
+	x = x > x2 ? 0 : x2 - x, y = y > y2 ? 0 : y2 - y, z = z > z2 ? 0 : z2 - z;
+	x = fmax(x, x3), y = fmax(y, y3), z = fmax(z, z3);
+	return -p0 + sqrt(x * x + y * y + z * z) - 1e-6;
+}
+static double c_torus_th_ph(double x, double y, double z)
+{
+	double r = sqrt(x * x + z * z) - 0.7;
+	return -0.25 + sqrt(r * r + y * y) + atan2(x, z) + atan2(sqrt(x * x + z * z), y) +
+	       (-0.5 + sqrt(x * x + y * y + z * z)) + sqrt(x * x + y * y + z * z) + sqrt(x * x * 4 + y * y + z * z * 9);
+}
+static double c_fields(double x, double y, double z)
+{
+	double x2 = x * x, y2 = y * y, z2 = z * z, ph = 0.5 * 0.5, th = 0.2 * 0.2;
+	double torus2 = -(x2 * x2 + y2 * y2 + z2 * z2 + 2 * x2 * y2 + 2 * x2 * z2 + 2 * y2 * z2 - 2 * (ph + th) * x2 +
+	                  2 * (ph - th) * y2 - 2 * (ph + th) * z2 + (ph - th) * (ph - th));
+	double heart = -((2 * x2 + y2 + z2 - 1) * (2 * x2 + y2 + z2 - 1) * (2 * x2 + y2 + z2 - 1) - 0.1 * x2 * z2 * z -
+	                 y2 * z2 * z);
+	double cross = fmax(exp(-(x2 * 2 + y2 * 2 + z2) * 3), exp(-(x2 * 2 + y2 + z2 * 2) * 3));
+	cross = 1 - fmax(cross, exp(-(x2 + y2 * 2 + z2 * 2) * 3)) * 0.5;
+	double super = 1 - pow(pow(pow(fabs(x), 2 / 0.5) + pow(fabs(y), 2 / 0.5), 0.5 / 0.7) + pow(fabs(z), 2 / 0.7),
+	                       0.7 * 0.5);
+	return fmin(10, fmax(1.5 * torus2, -10)) + fmin(10, fmax(0.3 * heart, -10)) + cross + super;
+}
+static double c_more_fields(double x, double y, double z)
+{
+	double x2 = x * x, y2 = y * y, z2 = z * z;
+	double flange = 1.2 - (exp(-(x2 * 2 + y2 * 2 + z2) * 3) + exp(-(x2 * 2 + y2 + z2 * 2) * 3) +
+	                       exp(-(x2 + y2 * 2 + z2 * 2) * 3)) * 0.5;
+	double mitre = -(4 * x2 * (x2 + y2 + z2) - y2 * (1 - y2 - z2));
+	double para = -(x2 - y + z2);
+	double qcyl = -((x2 + z2) * y2 + 0.4 * 0.4 * (x2 + z2) - 0.4 * 0.4 * 0.3 * 0.3);
+	double witch = -(0.6 * (y - 1) + (x2 + z2) * y);
+	return flange + fmin(10, fmax(2 * mitre, -10)) + fmin(10, fmax(1.5 * para, -10)) +
+	       fmin(10, fmax(3 * qcyl, -10)) + fmin(10, fmax(0.8 * witch, -10));
+}
+
 static const struct {
 	const char *name, *body;
 	double (*c)(double, double, double);
 } cases[] = {
+	{ "f_flange_cover, f_mitre, f_paraboloid, f_quartic_cylinder, f_witch_of_agnesi",
+	  "f_flange_cover(x, y, z, 2, 3, 0.5, 1.2) + f_mitre(x, y, z, 2) + f_paraboloid(x, y, z, 1.5)"
+	  " + f_quartic_cylinder(x, y, z, 3, 0.3, 0.4) + f_witch_of_agnesi(x, y, z, 0.8, 0.6)", c_more_fields },
+	{ "f_rounded_box", "f_rounded_box(x, y, z, 0.2, 0.8, 0.5, 0.6)", c_rounded_box },
+	{ "f_torus, f_th, f_ph, f_sphere, f_r, f_ellipsoid",
+	  "f_torus(x, y, z, 0.7, 0.25) + f_th(x, y, z) + f_ph(x, y, z) + f_sphere(x, y, z, 0.5) + f_r(x, y, z)"
+	  " + f_ellipsoid(x, y, z, 2, 1, 3)", c_torus_th_ph },
+	{ "f_torus2, f_heart, f_cross_ellipsoids, f_superellipsoid",
+	  "f_torus2(x, y, z, 1.5, 0.5, 0.2) + f_heart(x, y, z, 0.3) + f_cross_ellipsoids(x, y, z, 2, 3, 0.5, 1)"
+	  " + f_superellipsoid(x, y, z, 0.5, 0.7)", c_fields },
 	{ "arithmetic", "x * y - z / 2 + 1", c_arith },
 	{ "a declared function with named parameters", "F0(x, y)", c_declared },
 	{ "calls of calls", "F1(x, y, z)", c_calls },
@@ -124,6 +179,17 @@ static char *scene_text(size_t *len)
 	fputs("#version 3.7;\n#declare K = 3;\n#declare V = <1, 2, 3>;\n"
 	      "#declare F0 = function(a, b) { sin(a * K) * cos(b * K) }\n"
 	      "#declare F1 = function { F0(x, z) + F0(z, y) * F0(y, x) }\n", f);
+	static const char *const internal[] = { "f_cross_ellipsoids 10", "f_ellipsoid 17", "f_heart 23", "f_ph 47",
+	                                        "f_r 57", "f_rounded_box 60", "f_sphere 61", "f_superellipsoid 68",
+	                                        "f_th 69", "f_torus 70", "f_torus2 71", "f_flange_cover 19",
+	                                        "f_mitre 41", "f_paraboloid 45", "f_quartic_cylinder 56",
+	                                        "f_witch_of_agnesi 74" };
+	for (size_t i = 0; i < sizeof internal / sizeof *internal; i++) {   /* as functions.inc declares them */
+		char name[32];
+		int n;
+		sscanf(internal[i], "%31s %d", name, &n);
+		fprintf(f, "#declare %s = function { internal(%d) }\n", name, n);
+	}
 	for (int i = 0; i < N_CASES; i++) {
 		fputs("sphere { 1000, 0.001 pigment { function { ", f);
 		if (cases[i].body) {

@@ -1,0 +1,69 @@
+/* eval_internal.c: POV-Ray's internal functions (functions.inc's
+ * "function { internal(N) }"), written here in POV-Ray's own function
+ * language from their definitions in POV-Ray 3.7 (source/vm/fnintern.cpp),
+ * so that the device runs them like any function the scene declares: the
+ * text is parsed once when a scene first calls one and becomes a program of
+ * scene.functions (eval_function.c).
+ *
+ * A new one is a line of the table: its number, and its text, whose
+ * parameters are x, y, z and then P0, P1... as functions.inc lists them. */
+#include <stdio.h>
+#include <string.h>
+
+#include "eval_int.h"
+#include "parse.h"
+
+/* min(10, max(P0 * r, -10)): the "field strength" clamp many of them share. */
+#define FIELD(r) "min(10, max(P0 * (" r "), -10))"
+
+static const struct {
+	int number;
+	const char *text;
+} internals[] = {
+	{ 10, "function(x, y, z, P0, P1, P2, P3) { P3 - P2 * max(exp(-(x*x*P0 + y*y*P0 + z*z) * P1),"
+	      " exp(-(x*x*P0 + y*y + z*z*P0) * P1), exp(-(x*x + y*y*P0 + z*z*P0) * P1)) }" },   /* f_cross_ellipsoids */
+	{ 17, "function(x, y, z, P0, P1, P2) { sqrt(x*x*P0*P0 + y*y*P1*P1 + z*z*P2*P2) }" },   /* f_ellipsoid */
+	{ 19, "function(x, y, z, P0, P1, P2, P3) { P3 - P2 * (exp(-(x*x*P0 + y*y*P0 + z*z) * P1)"
+	      " + exp(-(x*x*P0 + y*y + z*z*P0) * P1) + exp(-(x*x + y*y*P0 + z*z*P0) * P1)) }" },   /* f_flange_cover */
+	{ 23, "function(x, y, z, P0) { " FIELD("-(pow(2*x*x + y*y + z*z - 1, 3) - 0.1*x*x*z*z*z - y*y*z*z*z)") " }" },
+	                                                                                      /* f_heart */
+	{ 41, "function(x, y, z, P0) { " FIELD("-(4*x*x*(x*x + y*y + z*z) - y*y*(1 - y*y - z*z))") " }" },   /* f_mitre */
+	{ 45, "function(x, y, z, P0) { " FIELD("-(x*x - y + z*z)") " }" },   /* f_paraboloid */
+	{ 47, "function { atan2(sqrt(x*x + z*z), y) }" },   /* f_ph */
+	{ 56, "function(x, y, z, P0, P1, P2) { " FIELD("-((x*x + z*z) * y*y + P2*P2 * (x*x + z*z) - P2*P2 * P1*P1)")
+	      " }" },   /* f_quartic_cylinder */
+	{ 57, "function { sqrt(x*x + y*y + z*z) }" },   /* f_r */
+	{ 60, "function(x, y, z, P0, P1, P2, P3) { -P0 + sqrt(pow(max(max(P0 - P1 - x, 0), max(x - (P1 - P0), 0)), 2)"
+	      " + pow(max(max(P0 - P2 - y, 0), max(y - (P2 - P0), 0)), 2)"
+	      " + pow(max(max(P0 - P3 - z, 0), max(z - (P3 - P0), 0)), 2)) - 1e-6 }" },   /* f_rounded_box */
+	{ 61, "function(x, y, z, P0) { -P0 + sqrt(x*x + y*y + z*z) }" },   /* f_sphere */
+	{ 68, "function(x, y, z, P0, P1) { 1 - pow(pow(pow(abs(x), 2 / P0) + pow(abs(y), 2 / P0), P0 / P1)"
+	      " + pow(abs(z), 2 / P1), P1 * 0.5) }" },   /* f_superellipsoid */
+	{ 69, "function { atan2(x, z) }" },   /* f_th */
+	{ 70, "function(x, y, z, P0, P1) { -P1 + sqrt(pow(sqrt(x*x + z*z) - P0, 2) + y*y) }" },   /* f_torus */
+	{ 71, "function(x, y, z, P0, P1, P2) { " FIELD("-(pow(x*x + y*y + z*z, 2) - 2*(P1*P1 + P2*P2)*x*x"
+	      " + 2*(P1*P1 - P2*P2)*y*y - 2*(P1*P1 + P2*P2)*z*z + pow(P1*P1 - P2*P2, 2))") " }" },   /* f_torus2 */
+	{ 74, "function(x, y, z, P0, P1) { " FIELD("-(P1 * (y - 1) + (x*x + z*z) * y)") " }" },   /* f_witch_of_agnesi */
+};
+
+const ast_node *eval_internal_function(int number)
+{
+	static ast_node *parsed[sizeof internals / sizeof *internals];
+	for (size_t i = 0; i < sizeof internals / sizeof *internals; i++) {
+		if (internals[i].number != number)
+			continue;
+		if (!parsed[i]) {   /* kept for the process: a few small trees */
+			char name[32], *text = NULL;
+			snprintf(name, sizeof name, "internal(%d)", number);
+			if (asprintf(&text, "#declare F = %s\n", internals[i].text) < 0)
+				return NULL;
+			ast_node *file = parse_text(name, text, strlen(text));
+			if (!file || file->n_kids != 1 || file->kids[0]->kind != AST_DECLARE ||
+			    file->kids[0]->kids[0]->kind != AST_FUNCTION)
+				return NULL;
+			parsed[i] = file;
+		}
+		return parsed[i]->kids[0]->kids[0];
+	}
+	return NULL;
+}
