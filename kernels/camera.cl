@@ -153,16 +153,18 @@ inline bool camera_ray(global const dev_params *p, int px, int py, float jx, flo
 }
 
 /* Focal blur, as POV-Ray's JitterCameraRay does it for every type: the ray
- * leaves a point of a lens of diameter aperture in the plane of right and up
- * about its origin, toward the point dir * focal / |direction| from the origin
- * (for the perspective camera, the plane at the focal distance along
- * direction). Returns the origin and makes dir a unit vector. */
+ * leaves a point of a lens in the plane of right and up about its origin,
+ * toward the point dir * focal / |direction| from the origin (for the
+ * perspective camera, the plane at the focal distance along direction).
+ * POV-Ray moves the eye by aperture / 2 times a point of its sample grid,
+ * which lies in a disc of radius 1/2: the lens's radius is aperture / 4.
+ * Returns the origin and makes dir a unit vector. */
 inline float3 camera_lens(global const dev_params *p, float3 o, float3 *dir, float2 disc)
 {
 	float dl = length(p->cam_direction.xyz);
 	if (p->lens.x > 0.0f && dl > 0.0f) {
 		float3 focus = o + *dir * (p->lens.y / dl);
-		o += 0.5f * p->lens.x * (disc.x * normalize(p->cam_right.xyz) + disc.y * normalize(p->cam_up.xyz));
+		o += 0.25f * p->lens.x * (disc.x * normalize(p->cam_right.xyz) + disc.y * normalize(p->cam_up.xyz));
 		*dir = focus - o;
 	}
 	*dir = normalize(*dir);
