@@ -139,7 +139,8 @@ int eval_not_valid(struct eval *e, const ast_node *item, const char *where)
 struct camera_items {
 	scene_camera c;
 	double sky[3], look_at[3], angle[2];
-	bool has_look_at, has_up, has_right;
+	double dir_length;       /* POV-Ray's Direction_Length, the default focal distance */
+	bool has_look_at, has_up, has_right, has_focal_point;
 	int n_angles;            /* the numbers after angle: 0, 1 or 2 */
 	src_loc angle_loc[2];
 	xform t;
@@ -155,7 +156,7 @@ static int camera_vector(struct eval *e, const ast_node *item, struct camera_ite
 	case KW_UP: dst = ci->c.up; ci->has_up = true; break;
 	case KW_SKY: dst = ci->sky; break;
 	case KW_LOOK_AT: dst = ci->look_at; ci->has_look_at = true; break;
-	case KW_FOCAL_POINT: dst = ci->c.focal_point; break;
+	case KW_FOCAL_POINT: dst = ci->c.focal_point; ci->has_focal_point = true; break;
 	default: return 1;
 	}
 	return eval_expect_vector(e, item->kids[0], dst);
@@ -344,6 +345,22 @@ static int camera_axes(struct eval *e, const ast_node *b, const scene_camera *c)
 	return -1;
 }
 
+/* The focal distance as POV-Ray 3.7 sets it (parse.cpp), before the
+ * transformations: a copied camera keeps its own unless focal_point is given. */
+static void camera_focus(struct camera_items *ci)
+{
+	scene_camera *c = &ci->c;
+	if (ci->has_focal_point) {
+		double d[3] = { c->focal_point[0] - c->location[0], c->focal_point[1] - c->location[1],
+		                c->focal_point[2] - c->location[2] };
+		c->focal_distance = length3(d);
+	} else if (c->focal_distance < 0) {
+		c->focal_distance = ci->dir_length;
+	}
+	if (c->focal_distance == 0)
+		c->focal_distance = 1;
+}
+
 /* POV-Ray 3.7's order, whatever the order in the file: the vectors, then angle,
  * then look_at, then the orthographic camera's area, then the transformations. */
 static int camera_finish(struct eval *e, const ast_node *b, struct camera_items *ci)
@@ -359,13 +376,17 @@ static int camera_finish(struct eval *e, const ast_node *b, struct camera_items 
 		double want = rl / tan(ci->angle[0] * M_PI / 360.0) / 2.0;
 		for (int k = 0; k < 3 && dl > 0; k++)
 			c->direction[k] *= want / dl;
+		ci->dir_length = want;
 	}
+	if (ci->has_look_at)
+		ci->dir_length = length3(c->direction);
 	int look = ci->has_look_at ? scene_camera_look_at(c, ci->look_at, ci->sky) : 0;
 	if (look < 0) {
 		eval_error(e, b->loc, "camera location and look_at point must be different");
 		return -1;
 	}
 	orthographic_area(ci);
+	camera_focus(ci);
 	if (look > 0)
 		eval_warning(e, b->loc, "the camera looks along its sky vector; keeping the right vector, as POV-Ray "
 		             "does (give another sky)");
@@ -382,7 +403,8 @@ static int camera_finish(struct eval *e, const ast_node *b, struct camera_items 
  *          [blur_samples N] [TRANSFORMATIONS...] } */
 int eval_camera(struct eval *e, const ast_node *b, scene_camera *out)
 {
-	struct camera_items ci = { .c = scene_default_camera(), .sky = { 0, 1, 0 }, .t = scene_xform_identity() };
+	struct camera_items ci = { .c = scene_default_camera(), .sky = { 0, 1, 0 }, .dir_length = 1,
+	                           .t = scene_xform_identity() };
 	ci.c.loc = b->loc;
 	ci.c.blur_samples = 0;
 	struct cursor c;

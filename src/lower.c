@@ -713,12 +713,7 @@ static int lower_camera(const scene *s, dev_params *p)
 	p->cam_up = f4(c->up, c->v_angle * deg);
 	const float *bg = s->background;
 	p->background = (float4){ bg[0], bg[1], bg[2], 0 };
-	double dl = sqrt(c->direction[0] * c->direction[0] + c->direction[1] * c->direction[1] +
-	                 c->direction[2] * c->direction[2]);
-	double focal = 0;
-	for (int i = 0; i < 3; i++)
-		focal += (c->focal_point[i] - c->location[i]) * c->direction[i] / dl;
-	p->lens = (float4){ (float)c->aperture, (float)(focal > 0 ? focal : dl), (float)c->type, 0 };
+	p->lens = (float4){ (float)c->aperture, (float)(c->focal_distance > 0 ? c->focal_distance : 1), (float)c->type, 0 };
 	return 0;
 }
 

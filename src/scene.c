@@ -249,6 +249,7 @@ scene_camera scene_default_camera(void)
 		.right = { 1.33, 0, 0 },
 		.up = { 0, 1, 0 },
 		.loc = SRC_NOWHERE,
+		.focal_distance = -1,   /* not yet known */
 		.type = CAMERA_PERSPECTIVE,
 		.angle = 90,
 		.h_angle = 360,
@@ -700,7 +701,7 @@ void scene_dump(const scene *s, FILE *out)
 	}
 	if (c->aperture > 0) {
 		fnum(out, "aperture", c->aperture);
-		vec(out, "focal_point", c->focal_point);
+		fnum(out, "focal_distance", c->focal_distance);
 		fprintf(out, " blur_samples %d", c->blur_samples);
 	}
 	fputc('\n', out);

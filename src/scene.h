@@ -226,7 +226,11 @@ typedef struct {
 	double location[3], direction[3], right[3], up[3];  /* final, after look_at */
 	/* focal blur: off when aperture is 0 */
 	double aperture;
-	double focal_point[3];  /* default <0,0,0>: the focal plane passes through it */
+	/* POV-Ray's focal distance: |focal_point - location| before the camera's
+	 * transformations; without focal_point, |direction| after angle and look_at
+	 * (1 without either); 0 becomes 1 */
+	double focal_distance;
+	double focal_point[3];
 	int blur_samples;
 	src_loc loc;
 	int type;               /* CAMERA_ (kernels/shared.h) */
