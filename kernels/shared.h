@@ -333,7 +333,7 @@ enum {
 typedef struct {
 	float4 cam_location, cam_direction, cam_right, cam_up;
 	float4 background;  /* rgb: what rays that leave the scene see */
-	float4 lens;        /* x: aperture (0: pinhole), y: focal distance along direction,
+	float4 lens;        /* x: aperture (0: pinhole), y: POV-Ray's focal distance,
 	                     * z: the camera's type, CAMERA_ */
 	int width, height, max_depth, seed;
 	int n_lights, sample_base, samples_per_pass, n_prims;
