@@ -713,7 +713,9 @@ static int lower_camera(const scene *s, dev_params *p)
 	p->cam_up = f4(c->up, c->v_angle * deg);
 	const float *bg = s->background;
 	p->background = (float4){ bg[0], bg[1], bg[2], 0 };
-	p->lens = (float4){ (float)c->aperture, (float)(c->focal_distance > 0 ? c->focal_distance : 1), (float)c->type, 0 };
+	/* POV-Ray blurs only with blur_samples, and a negative aperture as its opposite */
+	double aperture = c->blur_samples > 0 ? fabs(c->aperture) : 0;
+	p->lens = (float4){ (float)aperture, (float)(c->focal_distance > 0 ? c->focal_distance : 1), (float)c->type, 0 };
 	return 0;
 }
 
