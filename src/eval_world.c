@@ -288,7 +288,7 @@ static int camera_angles(struct eval *e, struct camera_items *ci)
 		eval_warn_once(e, ci->angle_loc[1], "vertical angle",
 		               "a second camera angle is ignored: only the spherical camera takes one");
 	double a = ci->angle[0];
-	if (flat && (a < 0 || a >= 180 || (a == 0 && c->type == CAMERA_PERSPECTIVE) || a != a)) {
+	if (flat && (!(a >= 0 && a < 180) || (a == 0 && c->type == CAMERA_PERSPECTIVE))) {
 		eval_error(e, ci->angle_loc[0], "camera angle must be between 0 and 180 degrees");
 		return -1;
 	}
