@@ -28,8 +28,10 @@ inline int path_skip(int depth, bool reflected)
 inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, first_hit *first)
 {
 	global const dev_params *p = sc->p;
-	float3 d = camera_ray_dir(p, px, py, rng_uniform(key, 0), rng_uniform(key, 1));
-	float3 o = camera_lens(p, &d, light_square_to_disc(rng_uniform(key, 2), rng_uniform(key, 3)));
+	float3 o, d;
+	if (!camera_ray(p, px, py, rng_uniform(key, 0), rng_uniform(key, 1), &o, &d))
+		return (float3)(0.0f);   /* no ray there: POV-Ray's pixel is black */
+	o = camera_lens(p, o, &d, light_square_to_disc(rng_uniform(key, 2), rng_uniform(key, 3)));
 	float3 radiance = (float3)(0.0f), beta = (float3)(1.0f), sigma = (float3)(0.0f);
 	float last_pdf = 0.0f;   /* 0: the last bounce was a single direction, or the camera */
 	bool reflected = false;

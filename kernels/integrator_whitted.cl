@@ -445,14 +445,16 @@ kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p
 	int px = pixel % p->width, py = pixel / p->width;
 	uint counts[COUNT_N] = { 0 };
 	scene_data sc = { SCENE_BUFFERS(SCENE_FIELD) p, counts };
-	float3 d = camera_ray_dir(p, px, py, 0.5f, 0.5f);
-	/* one ray through the pixel's centre: an orthographic camera's is parallel
-	 * to direction; focal blur, which needs many rays, is the path tracer's */
-	float3 o = p->lens.z > 0.0f ? camera_parallel(p, &d) : p->cam_location.xyz;
-	whitted_ray camera = whitted_child(o, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE);
+	/* one ray through the pixel's centre; focal blur, which needs many rays, is
+	 * the path tracer's. Where the camera makes no ray, POV-Ray's pixel is black. */
+	float3 o, d, l = (float3)(0.0f);
 	first_hit first = { (float3)(0.0f), (float3)(0.0f), 0.0f, -1 };
-	counts[COUNT_RAYS + RAY_CAMERA]++;
-	float3 l = film_finite(whitted_radiance(&sc, camera, &first));
+	if (camera_ray(p, px, py, 0.5f, 0.5f, &o, &d)) {
+		d = normalize(d);
+		whitted_ray camera = whitted_child(o, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE);
+		counts[COUNT_RAYS + RAY_CAMERA]++;
+		l = film_finite(whitted_radiance(&sc, camera, &first));
+	}
 	/* every pass adds the same deterministic colour, so the film's average is it */
 	film[pixel] += (float4)(l, (float)(counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA]));
 	if (p->aov)

@@ -311,6 +311,13 @@ typedef struct {
 	int prim;
 } dev_emitter;
 
+/* POV-Ray's camera types (dev_params.lens.z; kernels/camera.cl makes their rays). */
+enum {
+	CAMERA_PERSPECTIVE = 0, CAMERA_ORTHOGRAPHIC, CAMERA_FISHEYE, CAMERA_ULTRA_WIDE_ANGLE, CAMERA_OMNIMAX,
+	CAMERA_PANORAMIC, CAMERA_CYLINDER_1, CAMERA_CYLINDER_2, CAMERA_CYLINDER_3, CAMERA_CYLINDER_4,
+	CAMERA_SPHERICAL, CAMERA_TYPES
+};
+
 enum { INTEGRATOR_PATH = 0, INTEGRATOR_NAIVE = 1, INTEGRATOR_WHITTED = 2 };
 
 /* Ray kinds, and counters added up per pass by the kernel: rays of each kind, and
@@ -324,13 +331,15 @@ enum {
 };
 
 /* Everything a render pass needs besides the buffers, 176 bytes. The camera
- * vectors are POV-Ray's after look_at: a primary ray is direction + sx * right +
- * sy * up with sx, sy in [-0.5, 0.5], sy upwards. */
+ * vectors are POV-Ray's after look_at: a perspective ray is direction + sx * right +
+ * sy * up with sx, sy in [-0.5, 0.5], sy upwards. cam_right.w is the camera's
+ * angle (the spherical camera's horizontal one), cam_up.w the spherical camera's
+ * vertical angle, both in radians. */
 typedef struct {
 	float4 cam_location, cam_direction, cam_right, cam_up;
 	float4 background;  /* rgb: what rays that leave the scene see */
-	float4 lens;        /* x: aperture (0: pinhole), y: focal distance along direction,
-	                     * z: 1 for the orthographic camera */
+	float4 lens;        /* x: aperture (0: pinhole), y: POV-Ray's focal distance,
+	                     * z: the camera's type, CAMERA_ */
 	int width, height, max_depth, seed;
 	int n_lights, sample_base, samples_per_pass, n_prims;
 	int n_planes, n_emitters, integrator, aov;   /* aov: 1 when the aov buffer is there */

@@ -138,8 +138,11 @@ int eval_not_valid(struct eval *e, const ast_node *item, const char *where)
 
 struct camera_items {
 	scene_camera c;
-	double sky[3], look_at[3], angle;
-	bool has_look_at, has_up, has_right, has_angle;
+	double sky[3], look_at[3], angle[2];
+	double dir_length;       /* POV-Ray's Direction_Length, the default focal distance */
+	bool has_look_at, has_up, has_right, has_focal_point;
+	int n_angles;            /* the numbers after angle: 0, 1 or 2 */
+	src_loc angle_loc[2];
 	xform t;
 };
 
@@ -153,10 +156,29 @@ static int camera_vector(struct eval *e, const ast_node *item, struct camera_ite
 	case KW_UP: dst = ci->c.up; ci->has_up = true; break;
 	case KW_SKY: dst = ci->sky; break;
 	case KW_LOOK_AT: dst = ci->look_at; ci->has_look_at = true; break;
-	case KW_FOCAL_POINT: dst = ci->c.focal_point; break;
+	case KW_FOCAL_POINT: dst = ci->c.focal_point; ci->has_focal_point = true; break;
 	default: return 1;
 	}
 	return eval_expect_vector(e, item->kids[0], dst);
+}
+
+/* angle A [, V]: only the spherical camera takes the second number, but the
+ * type may come after the angle, so camera_angles checks them at the end. */
+static int camera_angle(struct eval *e, struct cursor *c, const ast_node *item, struct camera_items *ci)
+{
+	int err = 0;
+	if (eval_expect_float(e, item->kids[0], &ci->angle[0]))
+		return -1;
+	ci->angle_loc[0] = item->kids[0]->loc;
+	ci->n_angles = 1;
+	const ast_node *v = eval_next_optional(c, &err);
+	if (v) {
+		if (eval_expect_float(e, v, &ci->angle[1]))
+			return -1;
+		ci->angle_loc[1] = v->loc;
+		ci->n_angles = 2;
+	}
+	return err ? -1 : 0;
 }
 
 static int camera_float(struct eval *e, struct cursor *c, const ast_node *item, struct camera_items *ci)
@@ -165,16 +187,7 @@ static int camera_float(struct eval *e, struct cursor *c, const ast_node *item, 
 	int err = 0;
 	switch (item->kw) {
 	case KW_ANGLE:
-		if (eval_expect_float(e, item->kids[0], &ci->angle))
-			return -1;
-		ci->has_angle = true;
-		if ((ci->angle <= 0 && !(ci->c.orthographic && ci->angle == 0)) || ci->angle >= 180) {
-			eval_error(e, item->kids[0]->loc, "camera angle must be between 0 and 180 degrees");
-			return -1;
-		}
-		if (eval_next_optional(c, &err))   /* a vertical angle: for camera types eclat has not */
-			eval_warn_once(e, item->loc, "vertical angle", "a second camera angle is ignored");
-		return err ? -1 : 0;
+		return camera_angle(e, c, item, ci);
 	case KW_APERTURE:
 		return eval_expect_float(e, item->kids[0], &ci->c.aperture);
 	case KW_BLUR_SAMPLES:
@@ -189,15 +202,50 @@ static int camera_float(struct eval *e, struct cursor *c, const ast_node *item, 
 	}
 }
 
+/* cylinder N, the cylinder camera of type N (1 to 4). */
+static int camera_cylinder(struct eval *e, struct cursor *c, const ast_node *item, struct camera_items *ci)
+{
+	int err = 0;
+	double n;
+	const ast_node *v = eval_next_optional(c, &err);
+	if (err)
+		return -1;
+	if (!v) {
+		eval_error(e, item->loc, "expected the cylinder camera's type (1 to 4) after 'cylinder'");
+		return -1;
+	}
+	if (eval_expect_float(e, v, &n))
+		return -1;
+	if ((int)n < 1 || (int)n > 4 || !(n > -1e9 && n < 1e9)) {
+		eval_error(e, v->loc, "invalid cylinder camera type %g: the types are 1 to 4", n);
+		return -1;
+	}
+	ci->c.type = CAMERA_CYLINDER_1 + (int)n - 1;
+	return 0;
+}
+
+/* The camera type a flag names, or -1. */
+static int camera_type(int kw)
+{
+	switch (kw) {
+	case KW_PERSPECTIVE: return CAMERA_PERSPECTIVE;
+	case KW_ORTHOGRAPHIC: return CAMERA_ORTHOGRAPHIC;
+	case KW_FISHEYE: return CAMERA_FISHEYE;
+	case KW_ULTRA_WIDE_ANGLE: return CAMERA_ULTRA_WIDE_ANGLE;
+	case KW_OMNIMAX: return CAMERA_OMNIMAX;
+	case KW_PANORAMIC: return CAMERA_PANORAMIC;
+	case KW_SPHERICAL: return CAMERA_SPHERICAL;
+	default: return -1;
+	}
+}
+
 static int camera_item(struct eval *e, struct cursor *c, const ast_node *item, struct camera_items *ci, bool first)
 {
 	int rc = eval_transform_item(e, c, item, &ci->t);
 	if (rc != 0)
 		return rc < 0 ? -1 : 0;
-	if (item->kind == AST_IDENT && strcmp(item->str, "cylinder") == 0 && !eval_lookup(e, item->str)) {
-		eval_error(e, item->loc, "the cylinder camera is not supported yet");
-		return -1;
-	}
+	if (item->kind == AST_IDENT && strcmp(item->str, "cylinder") == 0 && !eval_lookup(e, item->str))
+		return camera_cylinder(e, c, item, ci);
 	if ((rc = eval_skip_pov_word(e, c, item)) <= 0)
 		return rc;
 	if (AST_IS_EXPRESSION(item->kind) && first) {
@@ -208,15 +256,9 @@ static int camera_item(struct eval *e, struct cursor *c, const ast_node *item, s
 		eval_value_free(&v);
 		return 0;
 	}
-	if (item->kind == AST_FLAG && (item->kw == KW_PERSPECTIVE || item->kw == KW_ORTHOGRAPHIC)) {
-		ci->c.orthographic = item->kw == KW_ORTHOGRAPHIC;
+	if (item->kind == AST_FLAG && camera_type(item->kw) >= 0) {
+		ci->c.type = camera_type(item->kw);
 		return 0;
-	}
-	if (item->kind == AST_FLAG && (item->kw == KW_FISHEYE ||
-	    item->kw == KW_ULTRA_WIDE_ANGLE || item->kw == KW_OMNIMAX || item->kw == KW_PANORAMIC ||
-	    item->kw == KW_SPHERICAL)) {
-		eval_error(e, item->loc, "the %s camera is not supported yet", ast_keyword_name(item->kw));
-		return -1;
 	}
 	if (item->kind == AST_ARG && (rc = camera_vector(e, item, ci)) <= 0)
 		return rc;
@@ -224,7 +266,43 @@ static int camera_item(struct eval *e, struct cursor *c, const ast_node *item, s
 		return rc;
 	if (item->kind == AST_BLOCK && item->kw == KW_NORMAL)
 		return eval_material_block(e, item, NULL);
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, "mesh_camera") == 0) {
+		eval_error(e, item->loc, "the mesh_camera is not supported yet (POV-Ray's other camera types are)");
+		return -1;
+	}
 	return eval_not_valid(e, item, "a camera");
+}
+
+/* The angle's numbers, as POV-Ray 3.7 reads them for the camera's type: the
+ * perspective and orthographic cameras' set the field of view (below 180
+ * degrees; the orthographic camera's may be 0), the spherical camera's are
+ * its horizontal and vertical angles (the vertical one half the horizontal
+ * unless given), and the other types keep theirs as it is, not negative. */
+static int camera_angles(struct eval *e, struct camera_items *ci)
+{
+	scene_camera *c = &ci->c;
+	bool flat = c->type == CAMERA_PERSPECTIVE || c->type == CAMERA_ORTHOGRAPHIC;
+	if (ci->n_angles == 0)
+		return 0;
+	if (ci->n_angles == 2 && c->type != CAMERA_SPHERICAL)
+		eval_warn_once(e, ci->angle_loc[1], "vertical angle",
+		               "a second camera angle is ignored: only the spherical camera takes one");
+	double a = ci->angle[0];
+	if (flat && (!(a >= 0 && a < 180) || (a == 0 && c->type == CAMERA_PERSPECTIVE))) {
+		eval_error(e, ci->angle_loc[0], "camera angle must be between 0 and 180 degrees");
+		return -1;
+	}
+	for (int i = 0; i < (c->type == CAMERA_SPHERICAL ? ci->n_angles : 1); i++)
+		if (!(ci->angle[i] >= 0) || !isfinite(ci->angle[i])) {
+			eval_error(e, ci->angle_loc[i], "camera angle must not be negative");
+			return -1;
+		}
+	if (c->type == CAMERA_SPHERICAL) {
+		c->h_angle = ci->angle[0];
+		c->v_angle = ci->n_angles == 2 ? ci->angle[1] : ci->angle[0] / 2;
+	}
+	c->angle = ci->angle[0];
+	return 0;
 }
 
 /* The orthographic camera without up and right, or with an angle, sees what the
@@ -234,7 +312,7 @@ static int camera_item(struct eval *e, struct cursor *c, const ast_node *item, s
 static void orthographic_area(struct camera_items *ci)
 {
 	scene_camera *c = &ci->c;
-	if (!c->orthographic || ((ci->has_up || ci->has_right) && !ci->has_angle))
+	if (c->type != CAMERA_ORTHOGRAPHIC || ((ci->has_up || ci->has_right) && ci->n_angles == 0))
 		return;
 	double at[3] = { 0, 0, 1 }, k1 = 0, k2 = 0;
 	if (ci->has_look_at)
@@ -253,25 +331,66 @@ static void orthographic_area(struct camera_items *ci)
 	}
 }
 
+static double length3(const double v[3])
+{
+	return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
+/* The types that bend their rays use direction, right and up as unit axes (and
+ * the lengths of right and up as the image's proportions): none may be 0. */
+static int camera_axes(struct eval *e, const ast_node *b, const scene_camera *c)
+{
+	if (c->type == CAMERA_PERSPECTIVE || c->type == CAMERA_ORTHOGRAPHIC || c->type == CAMERA_PANORAMIC)
+		return 0;
+	if (length3(c->direction) > 0 && length3(c->right) > 0 && length3(c->up) > 0)
+		return 0;
+	eval_error(e, b->loc, "the %s camera needs direction, right and up vectors that are not 0",
+	           scene_camera_name(c->type));
+	return -1;
+}
+
+/* The focal distance as POV-Ray 3.7 sets it (parse.cpp), before the
+ * transformations: a copied camera keeps its own unless focal_point is given. */
+static void camera_focus(struct camera_items *ci)
+{
+	scene_camera *c = &ci->c;
+	if (ci->has_focal_point) {
+		double d[3] = { c->focal_point[0] - c->location[0], c->focal_point[1] - c->location[1],
+		                c->focal_point[2] - c->location[2] };
+		c->focal_distance = length3(d);
+	} else if (c->focal_distance < 0) {
+		c->focal_distance = ci->dir_length;
+	}
+	if (c->focal_distance == 0)
+		c->focal_distance = 1;
+}
+
 /* POV-Ray 3.7's order, whatever the order in the file: the vectors, then angle,
  * then look_at, then the orthographic camera's area, then the transformations. */
 static int camera_finish(struct eval *e, const ast_node *b, struct camera_items *ci)
 {
 	scene_camera *c = &ci->c;
-	if (ci->angle > 0) {
+	if (camera_angles(e, ci))
+		return -1;
+	if ((c->type == CAMERA_PERSPECTIVE || c->type == CAMERA_ORTHOGRAPHIC) && ci->n_angles > 0 &&
+	    ci->angle[0] > 0) {
 		double dl = sqrt(c->direction[0] * c->direction[0] + c->direction[1] * c->direction[1] +
 		                 c->direction[2] * c->direction[2]);
 		double rl = sqrt(c->right[0] * c->right[0] + c->right[1] * c->right[1] + c->right[2] * c->right[2]);
-		double want = rl / tan(ci->angle * M_PI / 360.0) / 2.0;
+		double want = rl / tan(ci->angle[0] * M_PI / 360.0) / 2.0;
 		for (int k = 0; k < 3 && dl > 0; k++)
 			c->direction[k] *= want / dl;
+		ci->dir_length = want;
 	}
+	if (ci->has_look_at)
+		ci->dir_length = length3(c->direction);
 	int look = ci->has_look_at ? scene_camera_look_at(c, ci->look_at, ci->sky) : 0;
 	if (look < 0) {
 		eval_error(e, b->loc, "camera location and look_at point must be different");
 		return -1;
 	}
 	orthographic_area(ci);
+	camera_focus(ci);
 	if (look > 0)
 		eval_warning(e, b->loc, "the camera looks along its sky vector; keeping the right vector, as POV-Ray "
 		             "does (give another sky)");
@@ -279,15 +398,16 @@ static int camera_finish(struct eval *e, const ast_node *b, struct camera_items 
 	scene_xform_vector(&ci->t, c->direction, c->direction);
 	scene_xform_vector(&ci->t, c->right, c->right);
 	scene_xform_vector(&ci->t, c->up, c->up);
-	return 0;
+	return camera_axes(e, b, c);
 }
 
-/* camera { [CAMERA_IDENTIFIER] [perspective | orthographic] [location <L>] [direction <D>] [right <R>]
- *          [up <U>] [sky <S>] [angle A] [look_at <P>] [aperture F] [focal_point <P>]
+/* camera { [CAMERA_IDENTIFIER] [perspective | orthographic | fisheye | ultra_wide_angle | omnimax |
+ *          panoramic | cylinder N | spherical] [location <L>] [direction <D>] [right <R>]
+ *          [up <U>] [sky <S>] [angle A [, V]] [look_at <P>] [aperture F] [focal_point <P>]
  *          [blur_samples N] [TRANSFORMATIONS...] } */
 int eval_camera(struct eval *e, const ast_node *b, scene_camera *out)
 {
-	struct camera_items ci = { .c = scene_default_camera(), .sky = { 0, 1, 0 }, .angle = -1,
+	struct camera_items ci = { .c = scene_default_camera(), .sky = { 0, 1, 0 }, .dir_length = 1,
 	                           .t = scene_xform_identity() };
 	ci.c.loc = b->loc;
 	ci.c.blur_samples = 0;

@@ -694,6 +694,12 @@ static int lower_camera(const scene *s, dev_params *p)
 			           "single precision: bring the scene nearer the origin", LOWER_FAR);
 			return -1;
 		}
+	const double angles[3] = { c->angle, c->h_angle, c->v_angle };
+	if (!vector_in_range(angles)) {
+		diag_error(c->loc, "the camera's angle passes %g degrees, too much for the device's single "
+		           "precision", LOWER_FAR);
+		return -1;
+	}
 	const float *sky = s->has_sky ? s->sky : s->background;
 	if (!all_in_range(sky, 3)) {
 		diag_error(SRC_NOWHERE, "the %s colour passes %g, too much for the device's single "
@@ -702,16 +708,14 @@ static int lower_camera(const scene *s, dev_params *p)
 	}
 	p->cam_location = f4(c->location, 0);
 	p->cam_direction = f4(c->direction, 0);
-	p->cam_right = f4(c->right, 0);
-	p->cam_up = f4(c->up, 0);
+	double deg = M_PI / 180;
+	p->cam_right = f4(c->right, (c->type == CAMERA_SPHERICAL ? c->h_angle : c->angle) * deg);
+	p->cam_up = f4(c->up, c->v_angle * deg);
 	const float *bg = s->background;
 	p->background = (float4){ bg[0], bg[1], bg[2], 0 };
-	double dl = sqrt(c->direction[0] * c->direction[0] + c->direction[1] * c->direction[1] +
-	                 c->direction[2] * c->direction[2]);
-	double focal = 0;
-	for (int i = 0; i < 3; i++)
-		focal += (c->focal_point[i] - c->location[i]) * c->direction[i] / dl;
-	p->lens = (float4){ (float)c->aperture, (float)(focal > 0 ? focal : dl), c->orthographic ? 1.0f : 0.0f, 0 };
+	/* POV-Ray blurs only with blur_samples, and a negative aperture as its opposite */
+	double aperture = c->blur_samples > 0 ? fabs(c->aperture) : 0;
+	p->lens = (float4){ (float)aperture, (float)(c->focal_distance > 0 ? c->focal_distance : 1), (float)c->type, 0 };
 	return 0;
 }
 

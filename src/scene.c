@@ -252,7 +252,21 @@ scene_camera scene_default_camera(void)
 		.right = { 1.33, 0, 0 },
 		.up = { 0, 1, 0 },
 		.loc = SRC_NOWHERE,
+		.focal_distance = -1,   /* not yet known */
+		.type = CAMERA_PERSPECTIVE,
+		.angle = 90,
+		.h_angle = 360,
+		.v_angle = 180,
 	};
+}
+
+const char *scene_camera_name(int type)
+{
+	static const char *const names[CAMERA_TYPES] = {   /* ORDER CAMERA_ */
+		"perspective", "orthographic", "fisheye", "ultra_wide_angle", "omnimax", "panoramic",
+		"cylinder 1", "cylinder 2", "cylinder 3", "cylinder 4", "spherical",
+	};
+	return type >= 0 && type < CAMERA_TYPES ? names[type] : "unknown";
 }
 
 static double dot(const double a[3], const double b[3])
@@ -678,11 +692,19 @@ void scene_dump(const scene *s, FILE *out)
 	vec(out, "direction", c->direction);
 	vec(out, "right", c->right);
 	vec(out, "up", c->up);
-	if (c->orthographic)
-		fputs(" orthographic", out);
+	if (c->type != CAMERA_PERSPECTIVE)
+		fprintf(out, " %s", scene_camera_name(c->type));
+	if (c->type == CAMERA_SPHERICAL) {
+		fnum(out, "angle", c->h_angle);
+		fputc(' ', out);
+		num(out, c->v_angle);
+	} else if (c->type != CAMERA_PERSPECTIVE && c->type != CAMERA_ORTHOGRAPHIC && c->type != CAMERA_OMNIMAX &&
+	           c->type != CAMERA_PANORAMIC) {   /* the types whose rays use the angle */
+		fnum(out, "angle", c->angle);
+	}
 	if (c->aperture > 0) {
 		fnum(out, "aperture", c->aperture);
-		vec(out, "focal_point", c->focal_point);
+		fnum(out, "focal_distance", c->focal_distance);
 		fprintf(out, " blur_samples %d", c->blur_samples);
 	}
 	fputc('\n', out);

@@ -228,12 +228,18 @@ typedef struct {
 	double location[3], direction[3], right[3], up[3];  /* final, after look_at */
 	/* focal blur: off when aperture is 0 */
 	double aperture;
-	double focal_point[3];  /* default <0,0,0>: the focal plane passes through it */
+	/* POV-Ray's focal distance: |focal_point - location| before the camera's
+	 * transformations; without focal_point, |direction| after angle and look_at
+	 * (1 without either); 0 becomes 1 */
+	double focal_distance;
+	double focal_point[3];
 	int blur_samples;
 	src_loc loc;
-	/* POV-Ray's orthographic camera: rays parallel to direction, from location +
-	 * sx * right + sy * up */
-	bool orthographic;
+	int type;               /* CAMERA_ (kernels/shared.h) */
+	/* POV-Ray's angle in degrees, which the types other than perspective and
+	 * orthographic keep (default 90); the spherical camera's are h_angle
+	 * and v_angle (default 360 and 180) */
+	double angle, h_angle, v_angle;
 } scene_camera;
 
 typedef enum { LIGHT_POINT, LIGHT_SPOT, LIGHT_PARALLEL } scene_light_kind;
@@ -390,5 +396,7 @@ scene_camera scene_default_camera(void);
  * Returns -1 when p is the camera's location, 1 when the view is along sky
  * (right is then kept, as POV-Ray does), else 0. */
 int scene_camera_look_at(scene_camera *c, const double p[3], const double sky[3]);
+/* A camera type's words in a scene ("fisheye", "cylinder 1"). */
+const char *scene_camera_name(int type);
 
 #endif
