@@ -33,7 +33,8 @@
 
 #include "eval_int.h"
 
-/* The system's font folders, which text's fonts may come from. */
+/* The system's font folders, which text's fonts may come from: Debian's
+ * POV-Ray fonts in its include folder are links into /usr/share/fonts. */
 static const char *const font_dirs[] = { "/usr/share/fonts", "/usr/local/share/fonts" };
 
 struct folder {
