@@ -225,9 +225,14 @@ int eval_access(struct eval *e, const char *path, bool write, src_loc loc, const
 		return 0;
 	}
 	const char *verb = write ? "write" : "read";
-	if (!r) {
-		eval_error(e, loc, "refusing to %s '%s' for %s: %s (--io-security none allows it)", verb, path, what,
-		           errno == ENOENT ? "it is a link to nothing" : strerror(errno));
+	if (!r && errno == ENOENT) {
+		eval_error(e, loc, "refusing to %s '%s' for %s: it is a link to nothing (--io-security none allows it)",
+		           verb, path, what);
+		return -1;
+	}
+	if (!r) {   /* the open would fail the same way; the check fails first */
+		eval_error(e, loc, "refusing to %s '%s' for %s: cannot tell where it is: %s", verb, path, what,
+		           strerror(errno));
 		return -1;
 	}
 	char shown[PATH_MAX + 16] = "";
