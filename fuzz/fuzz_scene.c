@@ -7,7 +7,14 @@
  *   FUZZ_VERBOSE=1 fuzz/fuzz_scene crash-...   (replays one input with its messages)
  *
  * The limits are lowered so that a loop or a recursion that never ends costs
- * milliseconds, not the fuzzer's -timeout: the evaluator must stop it itself. */
+ * milliseconds, not the fuzzer's -timeout: the evaluator must stop it itself.
+ *
+ * An input is a scene that may #fopen and #write whatever it likes. It is read
+ * as the file fuzz.scn of a scratch folder of its own, and the current folder
+ * does not count as the command line's does, so the evaluator's file I/O
+ * security (src/eval_access.c, restricted) lets it write only there; the folder
+ * is emptied after each input, so that no input reads what another wrote. */
+#include <dirent.h>
 #include <fcntl.h>
 #include <stdio.h>
 #include <stdint.h>
@@ -31,6 +38,43 @@ int image_read(const char *path, long max_texels, image_data *out, char *err, si
 	memset(out, 0, sizeof *out);
 	snprintf(err, errlen, "the scene fuzzer reads no images");
 	return -1;
+}
+
+static char scratch[64];
+
+static void remove_scratch(void)
+{
+	DIR *d = opendir(scratch);
+	struct dirent *ent;
+	char path[sizeof scratch + 256];
+	while (d && (ent = readdir(d)) != NULL)
+		if (strcmp(ent->d_name, ".") != 0 && strcmp(ent->d_name, "..") != 0) {
+			snprintf(path, sizeof path, "%s/%s", scratch, ent->d_name);
+			unlink(path);
+		}
+	if (d)
+		closedir(d);
+}
+
+static void remove_scratch_folder(void)
+{
+	remove_scratch();
+	rmdir(scratch);
+}
+
+/* The scene's own folder, made once. */
+static const char *scratch_folder(void)
+{
+	if (scratch[0])
+		return scratch;
+	const char *tmp = getenv("TMPDIR");
+	snprintf(scratch, sizeof scratch, "%.40s/fuzz_scene.XXXXXX", tmp && *tmp ? tmp : "/tmp");
+	if (!mkdtemp(scratch)) {
+		perror(scratch);
+		abort();
+	}
+	atexit(remove_scratch_folder);
+	return scratch;
 }
 
 static int quiet_stderr(void)
@@ -60,14 +104,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		return 0;
 	memcpy(text, data, size);
 	text[size] = '\0';
+	char name[sizeof scratch + 16];
+	snprintf(name, sizeof name, "%s/fuzz.scn", scratch_folder());
 	int saved = quiet_stderr();
-	ast_node *tree = parse_text("fuzz.scn", text, size);   /* diag owns text now */
+	ast_node *tree = parse_text(name, text, size);   /* diag owns text now */
 	if (tree) {
 		eval_options opt = eval_options_default();
 		opt.max_loop_iterations = 20000;
 		opt.max_macro_depth = 64;
 		opt.max_include_depth = 8;
 		opt.mesh_time_limit = 3;   /* under libFuzzer's -timeout */
+		opt.io_security = EVAL_IO_RESTRICTED;   /* the default, said here because it matters */
 		scene s;
 		scene_init(&s);
 		if (eval_scene(tree, &s, &opt) == 0 && diag_error_count() == 0) {
@@ -80,5 +127,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	}
 	diag_free_all();
 	restore_stderr(saved);
+	remove_scratch();
 	return 0;
 }

@@ -782,8 +782,6 @@ static char *try_path(const char *list, const char *name)
 	return NULL;
 }
 
-#define POV_INCLUDE_DIR "/usr/share/povray-3.7/include"
-
 /* Where a file named in the scene is: next to the file that names it, then in
  * the -I folders, $ECLAT_INCLUDE_PATH, eclat's installed include folder,
  * POV-Ray's include folder. NULL if none;
@@ -803,16 +801,18 @@ static char *find_file(struct eval *e, int from_file, const char *name, char **f
 	if (!p && eval_installed_include_dir())
 		p = try_dir(eval_installed_include_dir(), strlen(eval_installed_include_dir()), name);
 	if (!p)
-		p = try_dir(POV_INCLUDE_DIR, strlen(POV_INCLUDE_DIR), name);
+		p = try_dir(EVAL_POV_INCLUDE_DIR, strlen(EVAL_POV_INCLUDE_DIR), name);
 	return p;
 }
 
+/* A file the scene may not read is one it cannot tell is there. */
 bool eval_file_exists(struct eval *e, int from_file, const char *name)
 {
 	char *first, *p = find_file(e, from_file, name, &first);
+	bool there = p && eval_access_allowed(e, p, false);
 	free(first);
 	free(p);
-	return p != NULL;
+	return there;
 }
 
 char *eval_find_file(struct eval *e, int from_file, const char *name)
@@ -844,9 +844,12 @@ static void run_include(struct cursor *c, const ast_node *inc)
 	}
 	char *first, *path = find_file(e, inc->loc.file, name, &first);
 	free(name);
-	ast_node *tree = parse_file(path ? path : first, inc->kids[0]->loc);
+	int refused = eval_access(e, path ? path : first, false, inc->loc, "#include");
+	ast_node *tree = refused ? NULL : parse_file(path ? path : first, inc->kids[0]->loc);
 	free(path);
 	free(first);
+	if (refused)
+		return;
 	if (!tree) {
 		context_notes(e);
 		check_error_limit(e);
@@ -1136,6 +1139,7 @@ eval_options eval_options_default(void)
 static void eval_free(struct eval *e)
 {
 	eval_files_close(e);
+	eval_access_free(e);
 	while (e->scope)
 		scope_pop(e);
 	for (int i = 0; i < e->n_trees; i++)
@@ -1171,6 +1175,7 @@ int eval_scene(const ast_node *root, scene *s, const eval_options *opt)
 	eval_options defaults = eval_options_default();
 	struct eval e = { .s = s, .opt = opt ? opt : &defaults, .version = 3.7,
 	                  .default_mat = scene_default_material(), .errors_at_start = diag_error_count() };
+	eval_access_init(&e, root->loc.file);
 	e.global = scope_new(256);
 	scope_push(&e, e.global);
 	declare_builtins(&e);

@@ -7,6 +7,14 @@
 #include "ast.h"
 #include "scene.h"
 
+/* POV-Ray's [File I/O Security] levels (--io-security); restricted, the
+ * default, is 0 so that options set to zero are the safe ones. */
+typedef enum {
+	EVAL_IO_RESTRICTED,  /* reads and writes only in the folders allowed */
+	EVAL_IO_READ_ONLY,   /* reads anywhere, writes only in the folders allowed */
+	EVAL_IO_NONE,        /* no restriction but the file system's */
+} eval_io_security;
+
 /* What the command line tells the evaluator. Zero-initialise, or use
  * eval_options_default, then set what is given. */
 typedef struct {
@@ -36,6 +44,17 @@ typedef struct {
 	long max_loop_iterations;
 	/* Seconds assimp may take on one mesh file (--mesh-time-limit); 0: no limit. */
 	unsigned mesh_time_limit;
+	/* File I/O security (eval_access.c): the files a scene may make eclat read
+	 * and write. The scene's own folder and the include folders always count;
+	 * io_current_folder adds the current one (the command line's), which the
+	 * fuzz target leaves out; --io-allow folders are read, --io-allow-write
+	 * folders read and written, each with its subfolders. */
+	eval_io_security io_security;
+	bool io_current_folder;
+	const char *const *io_read_dirs;
+	int n_io_read_dirs;
+	const char *const *io_write_dirs;
+	int n_io_write_dirs;
 } eval_options;
 
 #define EVAL_DEFAULT_INCLUDE_DEPTH 64

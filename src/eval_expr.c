@@ -28,7 +28,7 @@ static const char *standard_include_of(struct eval *e, const ast_node *n)
 	for (size_t i = 0; i < sizeof files / sizeof *files; i++) {
 		char *path = eval_find_file(e, n->loc.file, files[i]);
 		size_t size;
-		char *text = path ? diag_read_file(path, &size) : NULL;
+		char *text = path && eval_access_allowed(e, path, false) ? diag_read_file(path, &size) : NULL;
 		free(path);
 		bool found = false;
 		for (char *p = text; p && !found && (p = strstr(p, "#declare")) != NULL; p += 8) {

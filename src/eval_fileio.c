@@ -13,7 +13,7 @@
  * last, leaving the identifiers it did not reach as they were; #fclose of a
  * handle that is not open does nothing; #write puts a space after a vector and nothing between
  * items, and refuses colours. Files left open are closed at the end of the
- * scene. */
+ * scene. Which files a scene may open is eval_access.c's to say. */
 #include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
@@ -67,6 +67,11 @@ static void run_fopen(struct eval *e, const ast_node *d)
 	if (eval_expect_string(e, d->kids[1], &name))
 		return;
 	path = reading ? eval_find_file(e, d->loc.file, name) : NULL;
+	if (eval_access(e, path ? path : name, !reading, d->loc, "#fopen")) {
+		free(name);
+		free(path);
+		return;
+	}
 	FILE *f = fopen(path ? path : name, reading ? "r" : mode[0] == 'w' ? "w" : "a");
 	if (!f) {
 		eval_error(e, d->kids[1]->loc, "cannot open '%s' for %s: %s", name,

@@ -137,6 +137,7 @@ struct eval {
 	int n_pending;
 	struct eval_file *files; /* #fopen's open files (eval_fileio.c) */
 	int n_files;
+	struct eval_access *access;  /* the folders the scene may read and write (eval_access.c) */
 };
 
 /* Errors and warnings with the chain of includes and macro calls as notes. */
@@ -197,6 +198,21 @@ char *eval_find_file(struct eval *e, int from_file, const char *name);
 /* The include folder of the installed eclat (eval_path.c): PKGDATADIR/include,
  * found from where the binary runs; NULL when there is none. */
 const char *eval_installed_include_dir(void);
+
+#define EVAL_POV_INCLUDE_DIR "/usr/share/povray-3.7/include"
+
+/* ---- file I/O security (eval_access.c) ---- */
+/* The folders the scene whose file is scene_file may read and write, from
+ * e->opt; eval_access_free lets them go. */
+void eval_access_init(struct eval *e, int scene_file);
+void eval_access_free(struct eval *e);
+/* 0 when the scene may open path (as eclat would open it: relative to the
+ * current folder) for reading, or for writing when write is set; else -1 after
+ * an error at loc that starts with what ("#include") and names the resolved
+ * path and the option that would allow it. */
+int eval_access(struct eval *e, const char *path, bool write, src_loc loc, const char *what);
+/* The same without a message: for file_exists and hints. */
+bool eval_access_allowed(struct eval *e, const char *path, bool write);
 
 /* spline { ... } and calls of a spline (eval_spline.c) */
 int eval_spline_value(struct eval *e, const ast_node *b, value *out);

@@ -1006,8 +1006,8 @@ static int mesh_file(struct eval *e, struct cursor *c, const ast_node *item, str
 	char *path = beside_source(arg->loc, name);
 	free(name);
 	scene_mesh m;
-	int rc = mesh_io_load(path, e->opt->mesh_time_limit, &m, err, sizeof err);
-	if (rc)
+	int rc = eval_access(e, path, false, arg->loc, "a mesh");
+	if (rc == 0 && (rc = mesh_io_load(path, e->opt->mesh_time_limit, &m, err, sizeof err)) != 0)
 		eval_error(e, arg->loc, "cannot load the mesh '%s': %s", path, err);
 	free(path);
 	if (rc)

@@ -694,6 +694,8 @@ static int text_args(struct eval *e, struct cursor *c, const ast_node *b, scene_
 	int rc = -1;
 	if (!path) {
 		eval_error(e, font_loc, "cannot find the font file '%s'", font);
+	} else if (eval_access(e, path, false, font_loc, "text")) {
+		/* refused, and said so */
 	} else if (FT_Init_FreeType(&lib)) {
 		eval_error(e, font_loc, "cannot start FreeType to read '%s'", font);
 	} else {

@@ -415,6 +415,10 @@ static int image_load(struct eval *e, const char *name, double gamma, int premul
 		}
 	image_data d;
 	char why[512];
+	if (eval_access(e, use, false, loc, "an image_map")) {
+		free(path);
+		return -1;
+	}
 	if (image_read(use, IMAGE_MAX_TEXELS, &d, why, sizeof why)) {
 		eval_error(e, loc, "cannot read image '%s': %s", name, why);
 		free(path);

@@ -38,6 +38,9 @@ struct options {
 	int bvh, median_depth, bvh_layout, stats, skip_unsupported;
 	const char *include_dirs[MAX_LIST], *declares[MAX_LIST];
 	int n_include_dirs, n_declares;
+	int io_security;
+	const char *io_read_dirs[MAX_LIST], *io_write_dirs[MAX_LIST];
+	int n_io_read_dirs, n_io_write_dirs;
 	const char *aov_name[MAX_AOVS], *aov_file[MAX_AOVS];
 	int n_aovs;
 	int max_include_depth, max_macro_depth;   /* 0: the evaluator's defaults */
@@ -47,7 +50,8 @@ struct options {
 
 enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_DIR,
        OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_BVH_LAYOUT, OPT_STATS, OPT_SKIP_UNSUPPORTED, OPT_EXPORT_MESH2,
-       OPT_MAX_INCLUDE_DEPTH, OPT_MAX_MACRO_DEPTH, OPT_MAX_LOOP_ITERATIONS, OPT_MESH_TIME_LIMIT };
+       OPT_MAX_INCLUDE_DEPTH, OPT_MAX_MACRO_DEPTH, OPT_MAX_LOOP_ITERATIONS, OPT_MESH_TIME_LIMIT,
+       OPT_IO_SECURITY, OPT_IO_ALLOW, OPT_IO_ALLOW_WRITE };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -71,6 +75,9 @@ static const struct option long_options[] = {
 	{ "max-macro-depth", required_argument, NULL, OPT_MAX_MACRO_DEPTH },
 	{ "max-loop-iterations", required_argument, NULL, OPT_MAX_LOOP_ITERATIONS },
 	{ "mesh-time-limit", required_argument, NULL, OPT_MESH_TIME_LIMIT },
+	{ "io-security", required_argument, NULL, OPT_IO_SECURITY },
+	{ "io-allow", required_argument, NULL, OPT_IO_ALLOW },
+	{ "io-allow-write", required_argument, NULL, OPT_IO_ALLOW_WRITE },
 	{ "device", required_argument, NULL, OPT_DEVICE },
 	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
 	{ "kernel-dir", required_argument, NULL, OPT_KERNEL_DIR },
@@ -123,6 +130,12 @@ static void usage(FILE *out)
 		"      --max-loop-iterations N  stop a #while or #for after N turns (default %ld)\n"
 		"      --mesh-time-limit S  give up on a mesh file assimp is still reading after S\n"
 		"                        seconds (default %d; 0: no limit)\n"
+		"      --io-security LEVEL  the files a scene may read and write: restricted\n"
+		"                        (default): its folder, the include folders, the current\n"
+		"                        folder and those allowed; read-only: reads anywhere,\n"
+		"                        writes restricted; none: anything (see SECURITY in eclat(1))\n"
+		"      --io-allow DIR    let the scene read files in DIR and below (repeatable)\n"
+		"      --io-allow-write DIR  let it read and write files in DIR and below (repeatable)\n"
 		"      --check           check the scene for errors and warnings, render nothing\n"
 		"      --dump-ast        print the syntax tree and exit\n"
 		"      --dump-scene      print the evaluated scene in world space and exit\n"
@@ -198,6 +211,33 @@ static void list_arg(const char *opt, const char **list, int *n, const char *val
 		exit(1);
 	}
 	list[(*n)++] = value;
+}
+
+/* --io-security none | read-only | restricted: POV-Ray's levels */
+static int io_security_arg(const char *s)
+{
+	if (strcmp(s, "restricted") == 0)
+		return EVAL_IO_RESTRICTED;
+	if (strcmp(s, "read-only") == 0)
+		return EVAL_IO_READ_ONLY;
+	if (strcmp(s, "none") == 0)
+		return EVAL_IO_NONE;
+	fprintf(stderr, "eclat: --io-security is restricted, read-only or none, not '%s'\n", s);
+	exit(1);
+}
+
+/* --io-allow DIR: a folder that is not there is a typo, which would otherwise
+ * show only as a refusal later. */
+static void io_dir_arg(const char *opt, const char **list, int *n, const char *dir)
+{
+	struct stat st;
+	int there = stat(dir, &st) == 0;
+	if (!there || !S_ISDIR(st.st_mode)) {
+		fprintf(stderr, "eclat: %s needs a folder, not '%s': %s\n", opt, dir,
+		        there ? "not a folder" : strerror(errno));
+		exit(1);
+	}
+	list_arg(opt, list, n, dir);
 }
 
 /* --aov NAME=FILE */
@@ -303,6 +343,11 @@ static void parse_options(int argc, char **argv, struct options *o)
 			break;
 		case OPT_MESH_TIME_LIMIT:
 			o->mesh_time_limit = int_arg("--mesh-time-limit", optarg, 0, 86400);
+			break;
+		case OPT_IO_SECURITY: o->io_security = io_security_arg(optarg); break;
+		case OPT_IO_ALLOW: io_dir_arg("--io-allow", o->io_read_dirs, &o->n_io_read_dirs, optarg); break;
+		case OPT_IO_ALLOW_WRITE:
+			io_dir_arg("--io-allow-write", o->io_write_dirs, &o->n_io_write_dirs, optarg);
 			break;
 		case OPT_LIST_DEVICES: o->list_devices = 1; break;
 		case OPT_KERNEL_DIR: o->kernel_dir = optarg; break;
@@ -629,6 +674,12 @@ int main(int argc, char **argv)
 	eopt.max_macro_depth = o.max_macro_depth;
 	eopt.max_loop_iterations = o.max_loop_iterations;
 	eopt.mesh_time_limit = (unsigned)o.mesh_time_limit;
+	eopt.io_security = o.io_security;
+	eopt.io_current_folder = true;
+	eopt.io_read_dirs = o.io_read_dirs;
+	eopt.n_io_read_dirs = o.n_io_read_dirs;
+	eopt.io_write_dirs = o.io_write_dirs;
+	eopt.n_io_write_dirs = o.n_io_write_dirs;
 	eopt.image_width = o.width;
 	eopt.image_height = o.height;
 	ast_node *tree = parse_file(o.scene, SRC_NOWHERE);

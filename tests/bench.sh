@@ -39,7 +39,8 @@ trap 'rm -rf "$out"' EXIT
 run() { # run LABEL OPTIONS...: prints eclat's summary and statistics
 	label=$1; shift
 	echo "== $label"
-	"$ECLAT" --stats -W 1080 -H 1080 --max-depth 5 -D Mesh="\"$mesh\"" -o "$out/bench.exr" "$@" "$scene" \
+	"$ECLAT" --stats -W 1080 -H 1080 --max-depth 5 -D Mesh="\"$mesh\"" --io-allow "$MESH_DIR" -o "$out/bench.exr" \
+		"$@" "$scene" \
 		2> "$out/log" || { cat "$out/log"; exit 1; }
 	grep -v '^\r' "$out/log" | tr '\r' '\n' | grep -E '^(eclat|bvh|rays):' | sed 's/^/  /'
 }
@@ -55,7 +56,7 @@ build_ms() { # build_ms MESH: best and median milliseconds to build its BVH
 	printf '#declare M = mesh { file "%s" }\nobject { M }\n' "$1" > "$out/build.scn"
 	i=0
 	while [ "$i" -lt "$BUILDS" ]; do
-		"$ECLAT" --check --stats "$out/build.scn" 2>&1 | sed -n 's/^bvh: mesh .* built in \([0-9.]*\) ms.*/\1/p'
+		"$ECLAT" --check --stats --io-allow "$MESH_DIR" "$out/build.scn" 2>&1 | sed -n 's/^bvh: mesh .* built in \([0-9.]*\) ms.*/\1/p'
 		i=$((i + 1))
 	done | sort -n | awk '{ t[NR] = $1 } END { print t[1], t[int((NR + 1) / 2)] }'
 }
@@ -82,7 +83,7 @@ tr '\r' '\n' < "$out/log" | grep -E '^(eclat|bvh|rays):' | sed 's/^/  /'
 csg_paths=$(paths_of)
 
 echo "== 10,000 dragons (a billion triangles), 480x270, 4 samples"
-"$ECLAT" --stats -W 480 -H 270 -s 4 -D Mesh="\"$MESH_DIR/dragon.obj\"" -o "$out/dragons.png" \
+"$ECLAT" --stats -W 480 -H 270 -s 4 -D Mesh="\"$MESH_DIR/dragon.obj\"" --io-allow "$MESH_DIR" -o "$out/dragons.png" \
 	"$top_srcdir/tests/bench/dragons.scn" 2> "$out/log" || { cat "$out/log"; exit 1; }
 tr '\r' '\n' < "$out/log" | grep -E '^(eclat|bvh):' | sed 's/^/  /'
 
