@@ -35,11 +35,13 @@ typedef struct {
 	float weight;      /* POV-Ray's ray weight, against adc_bailout */
 	int level;         /* trace level when the ray is traced */
 	int kind;          /* WRAY_ */
+	int solids;        /* the solid (non-hollow) objects it is in: no fog while there is one */
 } whitted_ray;
 
 typedef struct {
 	whitted_ray ray;
 	float3 colour;     /* the ray's colour so far */
+	float fog_t;       /* how far the ray goes through fog (INFINITY: it leaves the scene), or -1 */
 	whitted_ray child[WHITTED_CHILDREN];
 	int n_child, next;
 } whitted_frame;
@@ -275,9 +277,10 @@ inline float3 whitted_reflectivity(global const dev_material *f, float3 pigment,
 	return r;
 }
 
-inline whitted_ray whitted_child(float3 o, float3 d, float3 mult, float exponent, float weight, int level, int kind)
+inline whitted_ray whitted_child(float3 o, float3 d, float3 mult, float exponent, float weight, int level, int kind,
+                                 int solids)
 {
-	whitted_ray r = { o, d, mult, exponent, weight, level, kind };
+	whitted_ray r = { o, d, mult, exponent, weight, level, kind, solids };
 	return r;
 }
 
@@ -290,7 +293,7 @@ inline void whitted_add_child(whitted_frame *fr, whitted_ray r)
 	for (int i = 0; i < fr->n_child; i++) {
 		whitted_ray *c = &fr->child[i];
 		if (all(c->o == r.o) && all(c->d == r.d) && c->exponent == r.exponent && c->kind == r.kind &&
-		    c->level == r.level) {
+		    c->level == r.level && c->solids == r.solids) {
 			c->mult += r.mult;
 			c->weight = fmax(c->weight, r.weight);
 			return;
@@ -354,6 +357,11 @@ inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_poi
 	int image = ray.kind & WRAY_IMAGE;
 	float cos_i = -dot(ray.d, top_n);
 	float3 ng = sp.ng;
+	/* through the surface, the ray enters or leaves the object (POV-Ray's
+	 * interior list, reduced to a count of the solid ones) */
+	int through = ray.solids;
+	if (!(sc->objects[sp.object] & OBJECT_HOLLOW))
+		through = entering ? through + 1 : max(through - 1, 0);
 	if (trans > p->classic.w) {
 		float tweight = ray.weight * whitted_max3(fabs(filcol));
 		float3 att = entering ? (float3)(1.0f) : visibility_fade(sp.m, t_hit);
@@ -361,18 +369,18 @@ inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_poi
 		float3 below = sp.x - sp.eps * ng;
 		if (fabs(ratio - 1.0f) < POV_EPSILON) {
 			whitted_add_child(fr, whitted_child(below, ray.d, w * att * filcol, 1.0f, tweight, level,
-			                                    image | WRAY_CONTINUED | (ray.kind & WRAY_REFLECTED)));
+			                                    image | WRAY_CONTINUED | (ray.kind & WRAY_REFLECTED), through));
 		} else {
 			float t = 1.0f + ratio * ratio * (cos_i * cos_i - 1.0f);
 			if (t < 0.0f) {   /* total internal reflection, unfiltered */
 				tir = true;
 				float3 r = ray.d + 2.0f * cos_i * top_n;
 				whitted_add_child(fr, whitted_child(sp.x + sp.eps * ng, normalize(r), w * att, 1.0f, tweight, level,
-				                                    WRAY_REFLECTED));
+				                                    WRAY_REFLECTED, ray.solids));
 			} else {
 				float3 dir = ratio * ray.d + (ratio * cos_i - sqrt(t)) * top_n;
 				whitted_add_child(fr, whitted_child(below, normalize(dir), w * att * filcol, 1.0f, tweight, level,
-				                                    image | (ray.kind & WRAY_REFLECTED)));
+				                                    image | (ray.kind & WRAY_REFLECTED), through));
 			}
 		}
 	}
@@ -381,7 +389,7 @@ inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_poi
 			continue;
 		float3 r = ray.d - 2.0f * dot(ray.d, refl_n[i]) * refl_n[i];
 		whitted_add_child(fr, whitted_child(sp.x + sp.eps * ng, normalize(r), w * refl_c[i], refl_e[i], refl_w[i],
-		                                    level, WRAY_REFLECTED));
+		                                    level, WRAY_REFLECTED, ray.solids));
 	}
 }
 
@@ -391,13 +399,16 @@ inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_
 	whitted_frame fr;
 	fr.ray = ray;
 	fr.colour = (float3)(0.0f);
+	fr.fog_t = -1.0f;
 	fr.n_child = fr.next = 0;
 	global const dev_params *p = sc->p;
 	if (ray.level >= p->max_depth || ray.weight < p->classic.w)
-		return fr;
+		return fr;   /* black, and unfogged, as POV-Ray's TraceRay returns early */
 	int skip = ray.kind & WRAY_REFLECTED ? OBJECT_NO_REFLECTION : OBJECT_NO_IMAGE;
 	int kind = ray.level == 0 ? RAY_CAMERA : RAY_BOUNCE;
 	traverse_hit hit = visibility_closest(sc, ray.o, ray.d, 0.0f, INFINITY, skip, kind);
+	if (ray.solids == 0 && p->n_fogs > 0)
+		fr.fog_t = hit.prim < 0 ? INFINITY : hit.t;
 	if (hit.prim < 0) {
 		fr.colour = texture_sky(sc, ray.d);
 		return fr;
@@ -428,6 +439,10 @@ inline float3 whitted_radiance(const scene_data *sc, whitted_ray camera, first_h
 		}
 		float3 c = top->colour;
 		whitted_ray r = top->ray;
+		if (top->fog_t >= 0.0f) {   /* the fog over the ray, after all it brought back */
+			fog_effect fe = fog_segment(sc, r.o, r.d, top->fog_t, false);
+			c = fe.add + fe.att * c;
+		}
 		if (--sp == 0)
 			result = c;
 		else
@@ -449,7 +464,7 @@ kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p
 	/* one ray through the pixel's centre: an orthographic camera's is parallel
 	 * to direction; focal blur, which needs many rays, is the path tracer's */
 	float3 o = p->lens.z > 0.0f ? camera_parallel(p, &d) : p->cam_location.xyz;
-	whitted_ray camera = whitted_child(o, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE);
+	whitted_ray camera = whitted_child(o, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE, p->camera_solids);
 	first_hit first = { (float3)(0.0f), (float3)(0.0f), 0.0f, -1 };
 	counts[COUNT_RAYS + RAY_CAMERA]++;
 	float3 l = film_finite(whitted_radiance(&sc, camera, &first));

@@ -20,7 +20,7 @@ const char *eval_pov_word(const char *name)
 		"parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
 		"sphere_sweep", "text",
 	};
-	static const char *const statements[] = { "fog", "rainbow", "media" };
+	static const char *const statements[] = { "rainbow", "media" };
 	static const char *const patterns[] = {
 		"aoi", "average", "density_file", "image_pattern", "julia", "magnet", "mandel", "pavement",
 		"pigment_pattern", "slope", "tiling",
@@ -731,6 +731,8 @@ int eval_block_value(struct eval *e, const ast_node *b, value *out)
 	}
 	case KW_SKY_SPHERE:
 		return sky_sphere(e, b, out);
+	case KW_FOG:
+		return eval_fog_value(e, b, out);
 	case KW_UNKNOWN:
 		if (strcmp(b->str, "layers") == 0)
 			return eval_material_value(e, b, out);
@@ -766,6 +768,7 @@ static int statement_block(struct eval *e, const ast_node *b)
 	case KW_CAMERA: return eval_camera(e, b, &e->s->camera);
 	case KW_BACKGROUND: return background(e, b);
 	case KW_GLOBAL_SETTINGS: return global_settings(e, b);
+	case KW_FOG: return eval_fog_statement(e, b);
 	case KW_SKY_SPHERE:
 		if (sky_sphere(e, b, &v))
 			return -1;

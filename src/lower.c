@@ -28,9 +28,10 @@ _Static_assert(sizeof(dev_pattern) == 144 && offsetof(dev_pattern, params) == 80
 _Static_assert(sizeof(dev_map_entry) == 32, "dev_map_entry is 32 bytes");
 _Static_assert(sizeof(dev_image) == 16, "dev_image is 16 bytes");
 _Static_assert(sizeof(dev_emitter) == 16, "dev_emitter is 16 bytes");
-_Static_assert(sizeof(dev_params) == 176, "dev_params is 176 bytes");
+_Static_assert(sizeof(dev_params) == 192, "dev_params is 192 bytes");
+_Static_assert(sizeof(dev_fog) == 80 && offsetof(dev_fog, distance) == 48, "dev_fog layout");
 _Static_assert((int)OBJECT_NO_SHADOW == (int)OBJ_NO_SHADOW && (int)OBJECT_NO_IMAGE == (int)OBJ_NO_IMAGE &&
-               (int)OBJECT_NO_REFLECTION == (int)OBJ_NO_REFLECTION &&
+               (int)OBJECT_NO_REFLECTION == (int)OBJ_NO_REFLECTION && (int)OBJECT_HOLLOW == (int)OBJ_HOLLOW &&
                (int)OBJECT_DOUBLE_ILLUMINATE == (int)OBJ_DOUBLE_ILLUMINATE,
                "the kernels' object flags are scene.h's");
 _Static_assert(offsetof(dev_params, width) == 96, "dev_params ints at 96");
@@ -959,8 +960,10 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	out->params.scene_flags = shadows_pass ? SCENE_SHADOWS_PASS : 0;
 	out->normals = lw.normals;
 	out->n_normals = lw.n_normals;
-	if (lower_camera(s, &out->params))
+	if (lower_camera(s, &out->params) || lower_fogs(s, out))
 		rc = -1;
+	out->params.n_fogs = out->n_fogs;
+	out->params.camera_solids = out->n_fogs ? lower_camera_solids(s) : 0;
 	if (rc == 0 && join(&lw, s, out))
 		rc = -1;
 	if (rc == 0)
@@ -995,6 +998,7 @@ void lower_free(lower_result *r)
 	lower_textures_free(&r->textures);
 	free(r->object_flags);
 	free(r->lights);
+	free(r->fogs);
 	free(r->emitters);
 	memset(r, 0, sizeof *r);
 }
