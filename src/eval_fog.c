@@ -6,6 +6,17 @@
 
 #include "eval_int.h"
 
+/* POV-Ray's negative distance makes light out of nothing. */
+static int fog_distance(struct eval *e, const ast_node *at, double d, scene_fog *f)
+{
+	if (d < 0) {
+		eval_error(e, at->loc, "a fog's distance must be positive, not %g", d);
+		return -1;
+	}
+	f->distance = d;
+	return 0;
+}
+
 /* An expression among a fog's items: a declared fog (first only), a colour,
  * or a bare float, which POV-Ray takes for the distance with a warning. */
 static int fog_expression(struct eval *e, const ast_node *item, scene_fog *f, bool first)
@@ -20,7 +31,7 @@ static int fog_expression(struct eval *e, const ast_node *item, scene_fog *f, bo
 		f->loc = loc;
 	} else if (v.kind == V_FLOAT) {
 		eval_warn_once(e, item->loc, "fog distance", "a fog's distance should follow the keyword distance");
-		f->distance = v.v[0];
+		rc = fog_distance(e, item, v.v[0], f);
 	} else if (v.kind == V_FOG) {
 		eval_error(e, item->loc, "a declared fog must come first in fog { }");
 		rc = -1;
@@ -59,7 +70,8 @@ static int fog_arg(struct eval *e, const ast_node *item, scene_fog *f)
 {
 	double x;
 	switch (item->kw) {
-	case KW_DISTANCE: return eval_expect_float(e, item->kids[0], &f->distance);
+	case KW_DISTANCE:
+		return eval_expect_float(e, item->kids[0], &x) ? -1 : fog_distance(e, item->kids[0], x, f);
 	case KW_FOG_OFFSET: return eval_expect_float(e, item->kids[0], &f->offset);
 	case KW_FOG_ALT: return eval_expect_float(e, item->kids[0], &f->alt);
 	case KW_TURB_DEPTH: return eval_expect_float(e, item->kids[0], &f->turb_depth);
@@ -99,10 +111,6 @@ static int fog_item(struct eval *e, struct cursor *c, const ast_node *item, scen
 /* What POV-Ray would draw wrong or not at all, refused or said. */
 static int fog_check(struct eval *e, const ast_node *b, scene_fog *f)
 {
-	if (f->distance < 0) {
-		eval_error(e, b->loc, "a fog's distance must be positive, not %g", f->distance);
-		return -1;
-	}
 	if (f->type == SCENE_FOG_GROUND && f->alt == 0) {
 		eval_error(e, b->loc, "a ground fog (fog_type 2) needs a fog_alt other than 0");
 		return -1;
