@@ -6,7 +6,8 @@
  * colour times 1 - att. Several fogs are each taken over the whole segment:
  * their transmittances multiply and their colours add, as POV-Ray adds them
  * (which is not the same as fogs one behind the other). A ray that leaves the
- * scene goes FOG_HUGE, POV-Ray's BOUND_HUGE. Shadow rays only lose light. */
+ * scene goes FOG_HUGE, POV-Ray's BOUND_HUGE. Shadow rays only lose light,
+ * and only toward a light_source with media_attenuation (fog_shadow). */
 
 #define FOG_HUGE 2e10f
 #define FOG_NOISE_GENERATOR 2   /* POV-Ray's default; eclat has no global noise_generator */
@@ -74,4 +75,15 @@ inline fog_effect fog_segment(const scene_data *sc, float3 o, float3 d, float t,
 			e.add += (1.0f - att) * rgb;
 	}
 	return e;
+}
+
+/* What is left of a light's colour after the fogs between x and the light,
+ * dist along dir: POV-Ray fogs shadow rays only toward a light_source with
+ * media_attenuation, and only outside solid objects (solids: those around x). */
+inline float3 fog_shadow(const scene_data *sc, global const dev_light *l, float3 x, float3 dir, float dist,
+                         int solids)
+{
+	if (!l->media_attenuation || solids > 0 || sc->p->n_fogs == 0)
+		return (float3)(1.0f);
+	return fog_segment(sc, x, dir, dist, true).att;
 }

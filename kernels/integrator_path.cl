@@ -71,7 +71,7 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 
 		material_lobes lobes = material_lobes_at(&m, dot(n, wo), sp.entering);
 		float3 xa = x + sp.eps * ng;   /* above the surface, on the side the ray came from */
-		radiance += beta * light_pov(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_AREA);
+		radiance += beta * light_pov(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_AREA, solids);
 		if (p->integrator == INTEGRATOR_PATH)
 			radiance += beta * light_emitters(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_EMITTER);
 

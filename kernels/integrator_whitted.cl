@@ -53,6 +53,7 @@ typedef struct {
 	float3 d;          /* the ray's direction */
 	float eps;         /* how far rays start off the surface */
 	int object;
+	int solids;        /* the solid objects around the point, for fog_shadow */
 } whitted_point;
 
 inline float whitted_max3(float3 c)
@@ -101,18 +102,19 @@ inline float3 whitted_grid_point(global const dev_light *l, int size1, int size2
 
 /* The light of one grid point that reaches x. */
 inline float3 whitted_grid_sample(const scene_data *sc, global const dev_light *l, int s1, int s2, int u, int v,
-                                  float3 a1, float3 a2, float3 x, float3 colour, float eps)
+                                  float3 a1, float3 a2, float3 x, float3 colour, float eps, int solids)
 {
 	float3 to = whitted_grid_point(l, s1, s2, u, v, a1, a2) - x;
 	float dist = length(to);
-	return dist > 0.0f ? visibility_shadow(sc, x, to / dist, eps, dist - eps, colour) : colour;
+	return dist > 0.0f ? visibility_shadow(sc, x, to / dist, eps, dist - eps, colour) *
+	                     fog_shadow(sc, l, x, to / dist, dist, solids) : colour;
 }
 
 /* An area light's shadow: POV-Ray samples the grid's corners and splits a region
  * in four while its corners differ (or down to the adaptive level), averaging
  * the four quarters; the grid is size1 x size2 lights, unjittered. */
 inline float3 whitted_area_shadow(const scene_data *sc, global const dev_light *l, float3 x, float3 to_light,
-                                  float3 colour, float eps)
+                                  float3 colour, float eps, int solids)
 {
 	int s1 = (int)l->grid.x, s2 = (int)l->grid.y;
 	float3 a1 = l->axis1.xyz, a2 = l->axis2.xyz;
@@ -133,10 +135,10 @@ inline float3 whitted_area_shadow(const scene_data *sc, global const dev_light *
 		sp--;
 		int4 r = stack[sp];
 		int level = depth[sp];
-		float3 c0 = whitted_grid_sample(sc, l, s1, s2, r.x, r.y, a1, a2, x, colour, eps);
-		float3 c1 = whitted_grid_sample(sc, l, s1, s2, r.z, r.y, a1, a2, x, colour, eps);
-		float3 c2 = whitted_grid_sample(sc, l, s1, s2, r.x, r.w, a1, a2, x, colour, eps);
-		float3 c3 = whitted_grid_sample(sc, l, s1, s2, r.z, r.w, a1, a2, x, colour, eps);
+		float3 c0 = whitted_grid_sample(sc, l, s1, s2, r.x, r.y, a1, a2, x, colour, eps, solids);
+		float3 c1 = whitted_grid_sample(sc, l, s1, s2, r.z, r.y, a1, a2, x, colour, eps, solids);
+		float3 c2 = whitted_grid_sample(sc, l, s1, s2, r.x, r.w, a1, a2, x, colour, eps, solids);
+		float3 c3 = whitted_grid_sample(sc, l, s1, s2, r.z, r.w, a1, a2, x, colour, eps, solids);
 		float3 d01 = fabs(c0 - c1), d13 = fabs(c1 - c3), d32 = fabs(c3 - c2), d20 = fabs(c2 - c0);
 		bool split = (r.z - r.x > 1 || r.w - r.y > 1) &&
 		             (level < (int)l->grid.z || d01.x + d01.y + d01.z > 0.1f || d13.x + d13.y + d13.z > 0.1f ||
@@ -231,9 +233,10 @@ inline float3 whitted_lights(const scene_data *sc, global const dev_material *f,
 			continue;
 		if (!l->shadowless) {
 			if (l->grid.x > 0.0f)
-				light = whitted_area_shadow(sc, l, from, dir, light, pt->eps);
+				light = whitted_area_shadow(sc, l, from, dir, light, pt->eps, pt->solids);
 			else
-				light = visibility_shadow(sc, from, dir, pt->eps, dist - pt->eps, light);
+				light = visibility_shadow(sc, from, dir, pt->eps, dist - pt->eps, light) *
+				        fog_shadow(sc, l, from, dir, dist, pt->solids);
 		}
 		if (fabs(light.x) <= POV_EPSILON && fabs(light.y) <= POV_EPSILON && fabs(light.z) <= POV_EPSILON)
 			continue;
@@ -325,6 +328,7 @@ inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_poi
 	pt.x = sp.x;
 	pt.eps = sp.eps;
 	pt.object = sp.object;
+	pt.solids = ray.solids;
 	for (int mi = material, layer = 0; mi >= 0 && trans > p->classic.w; mi = sp.m->below, layer++) {
 		texture_use(sc, &sp, mi);
 		pigment_colour pc = texture_pigment(sc, &sp);

@@ -302,7 +302,7 @@ typedef struct {
 	int octaves, type, turb_on;
 } dev_fog;
 
-/* A light_source, 112 bytes. POV-Ray's lights are invisible and do not fall off
+/* A light_source, 128 bytes. POV-Ray's lights are invisible and do not fall off
  * with distance unless fade_power is given; every vertex samples all of them. */
 enum { LIGHT_KIND_POINT = 0, LIGHT_KIND_SPOT = 1, LIGHT_KIND_PARALLEL = 2 };
 typedef struct {
@@ -315,6 +315,8 @@ typedef struct {
 	int kind, shadowless;
 	float4 grid;        /* area light as POV-Ray's grid: x, y: size1, size2 (0: not an
 	                     * area light), z: adaptive level, w: 1 for orient */
+	int media_attenuation;  /* 1: fogs dim its light on the way (fog_shadow) */
+	int pad[3];
 } dev_light;
 
 /* An emissive primitive, chosen for next-event estimation with probability

@@ -152,6 +152,7 @@ enum kw_class {
 	X(JITTER, "jitter", FLAG) \
 	X(LEOPARD, "leopard", FLAG) \
 	X(MARBLE, "marble", FLAG) \
+	X(MEDIA_ATTENUATION, "media_attenuation", FLAG) \
 	X(METALLIC, "metallic", FLAG) \
 	X(NO_IMAGE, "no_image", FLAG) \
 	X(NO_REFLECTION, "no_reflection", FLAG) \

@@ -21,7 +21,7 @@ _Static_assert(offsetof(bvh_wnode, qlo_x) == 16 && offsetof(bvh_wnode, child) ==
 _Static_assert(sizeof(dev_prim) == 64, "dev_prim is 64 bytes");
 _Static_assert(offsetof(dev_prim, type) == 48, "dev_prim ints at 48");
 _Static_assert(sizeof(dev_material) == 160 && offsetof(dev_material, pattern) == 144, "dev_material layout");
-_Static_assert(sizeof(dev_light) == 112, "dev_light is 112 bytes");
+_Static_assert(sizeof(dev_light) == 128, "dev_light is 128 bytes");
 _Static_assert(offsetof(dev_light, cos_falloff) == 80, "dev_light scalars at 80");
 _Static_assert(sizeof(dev_warp) == 64, "dev_warp is 64 bytes");
 _Static_assert(sizeof(dev_pattern) == 144 && offsetof(dev_pattern, params) == 80, "dev_pattern layout");
@@ -647,6 +647,7 @@ static dev_light lower_light(const scene_light *l)
 		                                                                          : LIGHT_KIND_POINT,
 		.shadowless = l->shadowless,
 		.grid = { l->area ? l->size1 : 0, l->area ? l->size2 : 0, l->adaptive, l->orient },
+		.media_attenuation = l->media_attenuation,
 	};
 }
 

@@ -537,6 +537,8 @@ static void dump_light(FILE *out, const scene_light *l)
 	}
 	if (l->shadowless)
 		fputs(" shadowless", out);
+	if (l->media_attenuation)
+		fputs(" media_attenuation", out);
 	if (l->fade_distance != 0 || l->fade_power != 0) {
 		fnum(out, "fade_distance", l->fade_distance);
 		fnum(out, "fade_power", l->fade_power);

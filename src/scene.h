@@ -248,6 +248,7 @@ typedef struct {
 	int size1, size2, adaptive;   /* adaptive: 100 when not given, as in POV-Ray */
 	bool jitter, circular, orient;
 	bool shadowless;
+	bool media_attenuation;      /* fogs dim its light on the way (POV-Ray's, default off) */
 	float fade_distance, fade_power; /* 0, 0: no falloff, as in POV-Ray */
 	int looks_like;              /* first object index of its looks_like shape, or -1 */
 	src_loc loc;
