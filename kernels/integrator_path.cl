@@ -35,10 +35,16 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 	float3 radiance = (float3)(0.0f), beta = (float3)(1.0f), sigma = (float3)(0.0f);
 	float last_pdf = 0.0f;   /* 0: the last bounce was a single direction, or the camera */
 	bool reflected = false;
+	int solids = p->camera_solids;   /* solid objects around the ray: no fog in them */
 	sc->counts[COUNT_RAYS + RAY_CAMERA]++;
 	for (int depth = 0;; depth++) {
 		traverse_hit hit = visibility_closest(sc, o, d, 0.0f, INFINITY, path_skip(depth, reflected),
 		                                      depth == 0 ? RAY_CAMERA : RAY_BOUNCE);
+		if (solids == 0 && p->n_fogs > 0) {   /* the fogs' emission and absorption over the segment */
+			fog_effect fe = fog_segment(sc, o, d, hit.prim < 0 ? INFINITY : hit.t, false);
+			radiance += beta * fe.add;
+			beta *= fe.att;
+		}
 		if (hit.prim < 0) {
 			radiance += beta * texture_sky(sc, d);
 			break;
@@ -67,7 +73,7 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 
 		material_lobes lobes = material_lobes_at(&m, dot(n, wo), sp.entering);
 		float3 xa = x + sp.eps * ng;   /* above the surface, on the side the ray came from */
-		radiance += beta * light_pov(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_AREA);
+		radiance += beta * light_pov(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_AREA, solids);
 		if (p->integrator == INTEGRATOR_PATH)
 			radiance += beta * light_emitters(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_EMITTER);
 
@@ -86,6 +92,8 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 		last_pdf = s.pdf;
 		reflected = !s.transmitted;
 		if (s.transmitted) {
+			if (!(sc->objects[sp.object] & OBJECT_HOLLOW))
+				solids = sp.entering ? solids + 1 : max(solids - 1, 0);
 			o = x - sp.eps * ng;
 			sigma = sp.entering ? m.absorb.xyz : (float3)(0.0f);
 		} else {

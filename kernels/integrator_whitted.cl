@@ -35,11 +35,13 @@ typedef struct {
 	float weight;      /* POV-Ray's ray weight, against adc_bailout */
 	int level;         /* trace level when the ray is traced */
 	int kind;          /* WRAY_ */
+	int solids;        /* the solid (non-hollow) objects it is in: no fog while there is one */
 } whitted_ray;
 
 typedef struct {
 	whitted_ray ray;
 	float3 colour;     /* the ray's colour so far */
+	float fog_t;       /* how far the ray goes through fog (INFINITY: it leaves the scene), or -1 */
 	whitted_ray child[WHITTED_CHILDREN];
 	int n_child, next;
 } whitted_frame;
@@ -51,6 +53,7 @@ typedef struct {
 	float3 d;          /* the ray's direction */
 	float eps;         /* how far rays start off the surface */
 	int object;
+	int solids;        /* the solid objects around the point, for fog_shadow */
 } whitted_point;
 
 inline float whitted_max3(float3 c)
@@ -99,18 +102,19 @@ inline float3 whitted_grid_point(global const dev_light *l, int size1, int size2
 
 /* The light of one grid point that reaches x. */
 inline float3 whitted_grid_sample(const scene_data *sc, global const dev_light *l, int s1, int s2, int u, int v,
-                                  float3 a1, float3 a2, float3 x, float3 colour, float eps)
+                                  float3 a1, float3 a2, float3 x, float3 colour, float eps, int solids)
 {
 	float3 to = whitted_grid_point(l, s1, s2, u, v, a1, a2) - x;
 	float dist = length(to);
-	return dist > 0.0f ? visibility_shadow(sc, x, to / dist, eps, dist - eps, colour) : colour;
+	return dist > 0.0f ? visibility_shadow(sc, x, to / dist, eps, dist - eps, colour) *
+	                     fog_shadow(sc, l, x, to / dist, dist, solids) : colour;
 }
 
 /* An area light's shadow: POV-Ray samples the grid's corners and splits a region
  * in four while its corners differ (or down to the adaptive level), averaging
  * the four quarters; the grid is size1 x size2 lights, unjittered. */
 inline float3 whitted_area_shadow(const scene_data *sc, global const dev_light *l, float3 x, float3 to_light,
-                                  float3 colour, float eps)
+                                  float3 colour, float eps, int solids)
 {
 	int s1 = (int)l->grid.x, s2 = (int)l->grid.y;
 	float3 a1 = l->axis1.xyz, a2 = l->axis2.xyz;
@@ -131,10 +135,10 @@ inline float3 whitted_area_shadow(const scene_data *sc, global const dev_light *
 		sp--;
 		int4 r = stack[sp];
 		int level = depth[sp];
-		float3 c0 = whitted_grid_sample(sc, l, s1, s2, r.x, r.y, a1, a2, x, colour, eps);
-		float3 c1 = whitted_grid_sample(sc, l, s1, s2, r.z, r.y, a1, a2, x, colour, eps);
-		float3 c2 = whitted_grid_sample(sc, l, s1, s2, r.x, r.w, a1, a2, x, colour, eps);
-		float3 c3 = whitted_grid_sample(sc, l, s1, s2, r.z, r.w, a1, a2, x, colour, eps);
+		float3 c0 = whitted_grid_sample(sc, l, s1, s2, r.x, r.y, a1, a2, x, colour, eps, solids);
+		float3 c1 = whitted_grid_sample(sc, l, s1, s2, r.z, r.y, a1, a2, x, colour, eps, solids);
+		float3 c2 = whitted_grid_sample(sc, l, s1, s2, r.x, r.w, a1, a2, x, colour, eps, solids);
+		float3 c3 = whitted_grid_sample(sc, l, s1, s2, r.z, r.w, a1, a2, x, colour, eps, solids);
 		float3 d01 = fabs(c0 - c1), d13 = fabs(c1 - c3), d32 = fabs(c3 - c2), d20 = fabs(c2 - c0);
 		bool split = (r.z - r.x > 1 || r.w - r.y > 1) &&
 		             (level < (int)l->grid.z || d01.x + d01.y + d01.z > 0.1f || d13.x + d13.y + d13.z > 0.1f ||
@@ -229,9 +233,10 @@ inline float3 whitted_lights(const scene_data *sc, global const dev_material *f,
 			continue;
 		if (!l->shadowless) {
 			if (l->grid.x > 0.0f)
-				light = whitted_area_shadow(sc, l, from, dir, light, pt->eps);
+				light = whitted_area_shadow(sc, l, from, dir, light, pt->eps, pt->solids);
 			else
-				light = visibility_shadow(sc, from, dir, pt->eps, dist - pt->eps, light);
+				light = visibility_shadow(sc, from, dir, pt->eps, dist - pt->eps, light) *
+				        fog_shadow(sc, l, from, dir, dist, pt->solids);
 		}
 		if (fabs(light.x) <= POV_EPSILON && fabs(light.y) <= POV_EPSILON && fabs(light.z) <= POV_EPSILON)
 			continue;
@@ -275,9 +280,10 @@ inline float3 whitted_reflectivity(global const dev_material *f, float3 pigment,
 	return r;
 }
 
-inline whitted_ray whitted_child(float3 o, float3 d, float3 mult, float exponent, float weight, int level, int kind)
+inline whitted_ray whitted_child(float3 o, float3 d, float3 mult, float exponent, float weight, int level, int kind,
+                                 int solids)
 {
-	whitted_ray r = { o, d, mult, exponent, weight, level, kind };
+	whitted_ray r = { o, d, mult, exponent, weight, level, kind, solids };
 	return r;
 }
 
@@ -290,7 +296,7 @@ inline void whitted_add_child(whitted_frame *fr, whitted_ray r)
 	for (int i = 0; i < fr->n_child; i++) {
 		whitted_ray *c = &fr->child[i];
 		if (all(c->o == r.o) && all(c->d == r.d) && c->exponent == r.exponent && c->kind == r.kind &&
-		    c->level == r.level) {
+		    c->level == r.level && c->solids == r.solids) {
 			c->mult += r.mult;
 			c->weight = fmax(c->weight, r.weight);
 			return;
@@ -322,6 +328,7 @@ inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_poi
 	pt.x = sp.x;
 	pt.eps = sp.eps;
 	pt.object = sp.object;
+	pt.solids = ray.solids;
 	for (int mi = material, layer = 0; mi >= 0 && trans > p->classic.w; mi = sp.m->below, layer++) {
 		texture_use(sc, &sp, mi);
 		pigment_colour pc = texture_pigment(sc, &sp);
@@ -354,6 +361,11 @@ inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_poi
 	int image = ray.kind & WRAY_IMAGE;
 	float cos_i = -dot(ray.d, top_n);
 	float3 ng = sp.ng;
+	/* through the surface, the ray enters or leaves the object (POV-Ray's
+	 * interior list, reduced to a count of the solid ones) */
+	int through = ray.solids;
+	if (!(sc->objects[sp.object] & OBJECT_HOLLOW))
+		through = entering ? through + 1 : max(through - 1, 0);
 	if (trans > p->classic.w) {
 		float tweight = ray.weight * whitted_max3(fabs(filcol));
 		float3 att = entering ? (float3)(1.0f) : visibility_fade(sp.m, t_hit);
@@ -361,18 +373,18 @@ inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_poi
 		float3 below = sp.x - sp.eps * ng;
 		if (fabs(ratio - 1.0f) < POV_EPSILON) {
 			whitted_add_child(fr, whitted_child(below, ray.d, w * att * filcol, 1.0f, tweight, level,
-			                                    image | WRAY_CONTINUED | (ray.kind & WRAY_REFLECTED)));
+			                                    image | WRAY_CONTINUED | (ray.kind & WRAY_REFLECTED), through));
 		} else {
 			float t = 1.0f + ratio * ratio * (cos_i * cos_i - 1.0f);
 			if (t < 0.0f) {   /* total internal reflection, unfiltered */
 				tir = true;
 				float3 r = ray.d + 2.0f * cos_i * top_n;
 				whitted_add_child(fr, whitted_child(sp.x + sp.eps * ng, normalize(r), w * att, 1.0f, tweight, level,
-				                                    WRAY_REFLECTED));
+				                                    WRAY_REFLECTED, ray.solids));
 			} else {
 				float3 dir = ratio * ray.d + (ratio * cos_i - sqrt(t)) * top_n;
 				whitted_add_child(fr, whitted_child(below, normalize(dir), w * att * filcol, 1.0f, tweight, level,
-				                                    image | (ray.kind & WRAY_REFLECTED)));
+				                                    image | (ray.kind & WRAY_REFLECTED), through));
 			}
 		}
 	}
@@ -381,7 +393,7 @@ inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_poi
 			continue;
 		float3 r = ray.d - 2.0f * dot(ray.d, refl_n[i]) * refl_n[i];
 		whitted_add_child(fr, whitted_child(sp.x + sp.eps * ng, normalize(r), w * refl_c[i], refl_e[i], refl_w[i],
-		                                    level, WRAY_REFLECTED));
+		                                    level, WRAY_REFLECTED, ray.solids));
 	}
 }
 
@@ -391,13 +403,16 @@ inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_
 	whitted_frame fr;
 	fr.ray = ray;
 	fr.colour = (float3)(0.0f);
+	fr.fog_t = -1.0f;
 	fr.n_child = fr.next = 0;
 	global const dev_params *p = sc->p;
 	if (ray.level >= p->max_depth || ray.weight < p->classic.w)
-		return fr;
+		return fr;   /* black, and unfogged, as POV-Ray's TraceRay returns early */
 	int skip = ray.kind & WRAY_REFLECTED ? OBJECT_NO_REFLECTION : OBJECT_NO_IMAGE;
 	int kind = ray.level == 0 ? RAY_CAMERA : RAY_BOUNCE;
 	traverse_hit hit = visibility_closest(sc, ray.o, ray.d, 0.0f, INFINITY, skip, kind);
+	if (ray.solids == 0 && p->n_fogs > 0)
+		fr.fog_t = hit.prim < 0 ? INFINITY : hit.t;
 	if (hit.prim < 0) {
 		fr.colour = texture_sky(sc, ray.d);
 		return fr;
@@ -428,6 +443,10 @@ inline float3 whitted_radiance(const scene_data *sc, whitted_ray camera, first_h
 		}
 		float3 c = top->colour;
 		whitted_ray r = top->ray;
+		if (top->fog_t >= 0.0f) {   /* the fog over the ray, after all it brought back */
+			fog_effect fe = fog_segment(sc, r.o, r.d, top->fog_t, false);
+			c = fe.add + fe.att * c;
+		}
 		if (--sp == 0)
 			result = c;
 		else
@@ -451,7 +470,7 @@ kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p
 	first_hit first = { (float3)(0.0f), (float3)(0.0f), 0.0f, -1 };
 	if (camera_ray(p, px, py, 0.5f, 0.5f, &o, &d)) {
 		d = normalize(d);
-		whitted_ray camera = whitted_child(o, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE);
+		whitted_ray camera = whitted_child(o, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE, p->camera_solids);
 		counts[COUNT_RAYS + RAY_CAMERA]++;
 		l = film_finite(whitted_radiance(&sc, camera, &first));
 	}

@@ -50,9 +50,10 @@ inline float light_spot(global const dev_light *l, float3 to_surface)
 	return k;
 }
 
-/* The sum over all light_sources of their contribution at x (normal n, facing wo). */
+/* The sum over all light_sources of their contribution at x (normal n, facing
+ * wo); solids: the solid objects around x, for fog_shadow. */
 inline float3 light_pov(const scene_data *sc, const bsdf *m, const material_lobes *lobes,
-                        float3 x, float3 ng, float3 n, float3 wo, uint key, uint dim)
+                        float3 x, float3 ng, float3 n, float3 wo, uint key, uint dim, int solids)
 {
 	float3 sum = (float3)(0.0f);
 	for (int i = 0; i < sc->p->n_lights; i++) {
@@ -84,7 +85,7 @@ inline float3 light_pov(const scene_data *sc, const bsdf *m, const material_lobe
 			continue;
 		float3 light = k * l->color.xyz;
 		if (!l->shadowless && dist > 0.0f)
-			light = visibility_shadow(sc, x, wi, 0.0f, dist, light);
+			light = visibility_shadow(sc, x, wi, 0.0f, dist, light) * fog_shadow(sc, l, x, wi, dist, solids);
 		sum += M_PI_F * light * f;
 	}
 	return sum;

@@ -285,9 +285,29 @@ enum { IMAGE_PREMULTIPLIED = 1 };
 
 /* The objects buffer: one int of POV-Ray's object flags per scene object (the
  * values of scene.h's OBJ_ flags), indexed by dev_prim.object. */
-enum { OBJECT_NO_SHADOW = 1, OBJECT_NO_IMAGE = 2, OBJECT_NO_REFLECTION = 4, OBJECT_DOUBLE_ILLUMINATE = 16 };
+enum {
+	OBJECT_NO_SHADOW = 1, OBJECT_NO_IMAGE = 2, OBJECT_NO_REFLECTION = 4, OBJECT_HOLLOW = 8,
+	OBJECT_DOUBLE_ILLUMINATE = 16,
+};
 
-/* A light_source, 112 bytes. POV-Ray's lights are invisible and do not fall off
+/* A fog { }, 80 bytes: POV-Ray 3.7's fog (kernels/fog.cl). A ray that is not
+ * inside a solid (non-hollow) object sees every fog over its whole length.
+ * type: FOG_CONSTANT or FOG_GROUND (ground fog: density 1 below offset along
+ *   up, 1 / (1 + h^2) at h = (height - offset) / alt above it).
+ * turb_on: 1 when the fog is turbulent: the distance through it shrinks by
+ *   turbulence at the segment's middle (turb.xyz scales the point), turb.w
+ *   turb_depth, with omega, lambda and octaves. */
+enum { FOG_CONSTANT = 1, FOG_GROUND = 2 };
+typedef struct {
+	float4 colour;      /* rgb; w: filter */
+	float4 up;          /* xyz: unit up (ground fog); w: transmit, the least transmittance */
+	float4 turb;        /* xyz: turbulence; w: turb_depth */
+	float distance, offset, alt, omega;
+	float lambda;
+	int octaves, type, turb_on;
+} dev_fog;
+
+/* A light_source, 128 bytes. POV-Ray's lights are invisible and do not fall off
  * with distance unless fade_power is given; every vertex samples all of them. */
 enum { LIGHT_KIND_POINT = 0, LIGHT_KIND_SPOT = 1, LIGHT_KIND_PARALLEL = 2 };
 typedef struct {
@@ -300,6 +320,8 @@ typedef struct {
 	int kind, shadowless;
 	float4 grid;        /* area light as POV-Ray's grid: x, y: size1, size2 (0: not an
 	                     * area light), z: adaptive level, w: 1 for orient */
+	int media_attenuation;  /* 1: fogs dim its light on the way (fog_shadow) */
+	int pad[3];
 } dev_light;
 
 /* An emissive primitive, chosen for next-event estimation with probability
@@ -330,7 +352,7 @@ enum {
 	COUNT_N = 3 * RAY_KINDS,
 };
 
-/* Everything a render pass needs besides the buffers, 176 bytes. The camera
+/* Everything a render pass needs besides the buffers, 192 bytes. The camera
  * vectors are POV-Ray's after look_at: a perspective ray is direction + sx * right +
  * sy * up with sx, sy in [-0.5, 0.5], sy upwards. cam_right.w is the camera's
  * angle (the spherical camera's horizontal one), cam_up.w the spherical camera's
@@ -347,7 +369,10 @@ typedef struct {
 	int scene_flags;    /* SCENE_ */
 	int sky;            /* the sky_sphere's first material, or -1: the background alone */
 	int sky_layers;     /* its pigments are materials sky .. sky + sky_layers - 1 */
-	int pad;
+	int n_fogs;         /* dev_fog records */
+	int camera_solids;  /* the solid (non-hollow) objects around the camera: POV-Ray fogs no
+	                     * camera ray inside one */
+	int pad[3];
 } dev_params;
 /* SCENE_SHADOWS_PASS: some surface lets shadow rays through (no_shadow, filter,
  * transmit), so shadow rays look at what they meet instead of stopping at the first. */
@@ -369,7 +394,8 @@ enum { SCENE_SHADOWS_PASS = 1 };
 	X(dev_warp, warps) \
 	X(dev_map_entry, maps) \
 	X(dev_image, images) \
-	X(float4, texels)
+	X(float4, texels) \
+	X(dev_fog, fogs)
 
 /* The aov buffer, when asked for: three float4 a pixel, sums over its samples.
  * [0] rgb: albedo of the first surface; w: samples that hit a surface

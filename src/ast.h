@@ -39,6 +39,7 @@ enum kw_class {
 	X(COLOUR_MAP, "colour_map", BLOCK) \
 	X(FACE_INDICES, "face_indices", BLOCK) \
 	X(FINISH, "finish", BLOCK) \
+	X(FOG, "fog", BLOCK) \
 	X(GLOBAL_SETTINGS, "global_settings", BLOCK) \
 	X(INTERIOR, "interior", BLOCK) \
 	X(INTERSECTION, "intersection", BLOCK) \
@@ -82,6 +83,7 @@ enum kw_class {
 	X(DIFFUSE, "diffuse", ARG) \
 	X(DIRECTION, "direction", ARG) \
 	X(DISPERSION, "dispersion", ARG) \
+	X(DISTANCE, "distance", ARG) \
 	X(EMISSION, "emission", ARG) \
 	X(EXPONENT, "exponent", ARG) \
 	X(FADE_COLOR, "fade_color", ARG) \
@@ -90,6 +92,9 @@ enum kw_class {
 	X(FADE_POWER, "fade_power", ARG) \
 	X(FALLOFF, "falloff", ARG) \
 	X(FOCAL_POINT, "focal_point", ARG) \
+	X(FOG_ALT, "fog_alt", ARG) \
+	X(FOG_OFFSET, "fog_offset", ARG) \
+	X(FOG_TYPE, "fog_type", ARG) \
 	X(FREQUENCY, "frequency", ARG) \
 	X(GRADIENT, "gradient", ARG) \
 	X(INSIDE_VECTOR, "inside_vector", ARG) \
@@ -119,6 +124,7 @@ enum kw_class {
 	X(TIGHTNESS, "tightness", ARG) \
 	X(TRANSFORM, "transform", ARG) \
 	X(TRANSLATE, "translate", ARG) \
+	X(TURB_DEPTH, "turb_depth", ARG) \
 	X(TURBULENCE, "turbulence", ARG) \
 	X(UP, "up", ARG) \
 	X(UV_VECTORS, "uv_vectors", ARG) \
@@ -146,6 +152,7 @@ enum kw_class {
 	X(JITTER, "jitter", FLAG) \
 	X(LEOPARD, "leopard", FLAG) \
 	X(MARBLE, "marble", FLAG) \
+	X(MEDIA_ATTENUATION, "media_attenuation", FLAG) \
 	X(METALLIC, "metallic", FLAG) \
 	X(NO_IMAGE, "no_image", FLAG) \
 	X(NO_REFLECTION, "no_reflection", FLAG) \

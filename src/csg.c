@@ -93,6 +93,13 @@ bool csg_classify(const int *ops, int n, int k, bool (*inside)(void *ctx, int le
 	return on;
 }
 
+bool csg_inside(const int *ops, int n, bool (*inside)(void *ctx, int leaf), void *ctx)
+{
+	bool outside;   /* no leaf -1: the program's plain answer, which flip holds negated */
+	csg_classify(ops, n, -1, inside, ctx, &outside);
+	return !outside;
+}
+
 void csg_bounds(const int *ops, int n, int n_leaves, const double (*lo)[3], const double (*hi)[3],
                 double out_lo[3], double out_hi[3])
 {

@@ -44,6 +44,9 @@ int csg_depth(const int *ops, int n);
  * leaf's outside there. kernels/csg.cl's csg_classify does the same. */
 bool csg_classify(const int *ops, int n, int k, bool (*inside)(void *ctx, int leaf), void *ctx, bool *flip);
 
+/* Whether a point is inside the CSG object, its leaves answering inside(ctx, leaf). */
+bool csg_inside(const int *ops, int n, bool (*inside)(void *ctx, int leaf), void *ctx);
+
 /* The program's box from its leaves' boxes (lo[i], hi[i] for the n_leaves
  * leaves; an operand past them is empty): an intersection's is the overlap of
  * its parts', a union's their union, an inverse's all space (+-CSG_HUGE). An

@@ -12,7 +12,7 @@ typedef enum { /* ORDER: eval_kind_name */
 	V_NONE,      /* an array element not set yet */
 	V_FLOAT, V_VECTOR, V_COLOR, V_STRING,
 	V_OBJECT, V_PIGMENT, V_FINISH, V_TEXTURE, V_NORMAL, V_INTERIOR, V_MATERIAL,
-	V_COLOR_MAP, V_TRANSFORM, V_CAMERA, V_ARRAY, V_MACRO, V_FUNCTION, V_SPLINE, V_OTHER,
+	V_COLOR_MAP, V_TRANSFORM, V_CAMERA, V_ARRAY, V_MACRO, V_FUNCTION, V_SPLINE, V_FOG, V_OTHER,
 } val_kind;
 
 /* A light and the looks_like objects that go with it. */
@@ -64,6 +64,7 @@ typedef struct value {
 	scene_material mat;      /* V_PIGMENT ... V_MATERIAL, V_COLOR_MAP (its average in pigment) */
 	xform xf;                /* V_TRANSFORM */
 	scene_camera *cam;       /* V_CAMERA */
+	scene_fog *fog;          /* V_FOG */
 	struct array *arr;       /* V_ARRAY */
 	const ast_node *node;    /* V_MACRO, V_FUNCTION: the definition */
 } value;
@@ -301,6 +302,10 @@ void eval_apply_texture(struct eval *e, src_loc loc, scene_material *m, bool tex
 int eval_looks_like(struct eval *e, const ast_node *b, const double at[3], struct lightval *l);
 void eval_transform_light(struct lightval *l, const xform *t);
 int eval_camera(struct eval *e, const ast_node *b, scene_camera *out);
+/* fog { } (eval_fog.c): as a statement, and as a value */
+int eval_fog(struct eval *e, const ast_node *b, scene_fog *out);
+int eval_fog_statement(struct eval *e, const ast_node *b);
+int eval_fog_value(struct eval *e, const ast_node *b, value *out);
 int eval_light(struct eval *e, const ast_node *b, value *out);
 int eval_scene_statement(struct eval *e, const ast_node *b);
 int eval_default(struct eval *e, const ast_node *d);

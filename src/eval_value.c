@@ -26,7 +26,8 @@ const char *eval_kind_name(val_kind k)
 	static const char *const names[] = { /* ORDER val_kind */
 		"nothing", "a float", "a vector", "a colour", "a string", "an object", "a pigment",
 		"a finish", "a texture", "a normal", "an interior", "a material", "a map",
-		"a transform", "a camera", "an array", "a macro", "a function", "a spline", "something else",
+		"a transform", "a camera", "an array", "a macro", "a function", "a spline", "a fog",
+		"something else",
 	};
 	return names[k];
 }
@@ -46,8 +47,10 @@ void eval_value_free(value *v)
 	free(v->str);
 	eval_objval_free(v->obj);
 	free(v->cam);
+	free(v->fog);
 	array_free(v->arr);
 	v->str = NULL;
+	v->fog = NULL;
 	v->obj = NULL;
 	v->cam = NULL;
 	v->arr = NULL;
@@ -88,6 +91,7 @@ value eval_value_copy(const value *v)
 	c.str = v->str ? eval_xstrdup(v->str) : NULL;
 	c.obj = v->obj ? objval_copy(v->obj) : NULL;
 	c.cam = v->cam ? dup_bytes(v->cam, sizeof *v->cam) : NULL;
+	c.fog = v->fog ? dup_bytes(v->fog, sizeof *v->fog) : NULL;
 	c.arr = v->arr ? array_copy(v->arr) : NULL;
 	return c;
 }

@@ -20,7 +20,7 @@ const char *eval_pov_word(const char *name)
 		"parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
 		"sphere_sweep", "text",
 	};
-	static const char *const statements[] = { "fog", "rainbow", "media" };
+	static const char *const statements[] = { "rainbow", "media" };
 	static const char *const patterns[] = {
 		"aoi", "average", "density_file", "image_pattern", "julia", "magnet", "mandel", "pavement",
 		"pigment_pattern", "slope", "tiling",
@@ -29,7 +29,7 @@ const char *eval_pov_word(const char *name)
 		"albedo", "always_sample", "area_illumination", "brightness", "bump_map", "charset",
 		"confidence", "control0", "control1", "count", "density", "density_map", "error_bound",
 		"exterior", "function", "gray_threshold", "hf_gray_16", "image_map", "interior_texture", "irid",
-		"irid_wavelength", "low_error_factor", "material_map", "max_intersections", "media_attenuation",
+		"irid_wavelength", "low_error_factor", "material_map", "max_intersections",
 		"media_interaction", "metric", "minimum_reuse", "mm_per_unit", "nearest_count", "no_radiosity",
 		"noise_generator", "number_of_waves", "pattern", "photons", "pretrace_end", "pretrace_start",
 		"projected_through", "quick_color", "quick_colour", "radiosity", "recursion_limit", "slope_map",
@@ -536,6 +536,18 @@ static int light_flag(struct eval *e, const ast_node *item, scene_light *l)
 	}
 }
 
+/* media_attenuation [Bool] */
+static int media_attenuation(struct eval *e, struct cursor *c, scene_light *l)
+{
+	int err = 0;
+	double on = 1;
+	const ast_node *arg = eval_next_optional(c, &err);
+	if (err || (arg && eval_expect_float(e, arg, &on)))
+		return -1;
+	l->media_attenuation = eval_truth(on);
+	return 0;
+}
+
 static int light_item(struct eval *e, struct cursor *c, const ast_node *item, struct lightval *l)
 {
 	xform t = scene_xform_identity();
@@ -548,6 +560,8 @@ static int light_item(struct eval *e, struct cursor *c, const ast_node *item, st
 		return rc;
 	if (item->kind == AST_FLAG && (rc = light_flag(e, item, &l->light)) <= 0)
 		return rc;
+	if (item->kind == AST_FLAG && item->kw == KW_MEDIA_ATTENUATION)
+		return media_attenuation(e, c, &l->light);
 	if (item->kind == AST_BLOCK && item->kw == KW_LOOKS_LIKE)
 		return eval_looks_like(e, item, l->light.position, l);
 	if ((rc = eval_skip_pov_word(e, c, item)) <= 0)
@@ -562,7 +576,7 @@ static int light_item(struct eval *e, struct cursor *c, const ast_node *item, st
 
 /* light_source { <Location>, COLOR [spotlight] [parallel] [point_at <P>] [radius F]
  *   [falloff F] [tightness F] [area_light <A1>, <A2>, N1, N2] [adaptive N] [jitter]
- *   [circular] [orient] [shadowless] [fade_distance F] [fade_power F]
+ *   [circular] [orient] [shadowless] [media_attenuation [Bool]] [fade_distance F] [fade_power F]
  *   [looks_like { OBJECT }] [TRANSFORMATIONS...] } */
 int eval_light(struct eval *e, const ast_node *b, value *out)
 {
@@ -851,6 +865,8 @@ int eval_block_value(struct eval *e, const ast_node *b, value *out)
 	}
 	case KW_SKY_SPHERE:
 		return sky_sphere(e, b, out);
+	case KW_FOG:
+		return eval_fog_value(e, b, out);
 	case KW_UNKNOWN:
 		if (strcmp(b->str, "layers") == 0)
 			return eval_material_value(e, b, out);
@@ -886,6 +902,7 @@ static int statement_block(struct eval *e, const ast_node *b)
 	case KW_CAMERA: return eval_camera(e, b, &e->s->camera);
 	case KW_BACKGROUND: return background(e, b);
 	case KW_GLOBAL_SETTINGS: return global_settings(e, b);
+	case KW_FOG: return eval_fog_statement(e, b);
 	case KW_SKY_SPHERE:
 		if (sky_sphere(e, b, &v))
 			return -1;

@@ -21,16 +21,17 @@ _Static_assert(offsetof(bvh_wnode, qlo_x) == 16 && offsetof(bvh_wnode, child) ==
 _Static_assert(sizeof(dev_prim) == 64, "dev_prim is 64 bytes");
 _Static_assert(offsetof(dev_prim, type) == 48, "dev_prim ints at 48");
 _Static_assert(sizeof(dev_material) == 160 && offsetof(dev_material, pattern) == 144, "dev_material layout");
-_Static_assert(sizeof(dev_light) == 112, "dev_light is 112 bytes");
+_Static_assert(sizeof(dev_light) == 128, "dev_light is 128 bytes");
 _Static_assert(offsetof(dev_light, cos_falloff) == 80, "dev_light scalars at 80");
 _Static_assert(sizeof(dev_warp) == 64, "dev_warp is 64 bytes");
 _Static_assert(sizeof(dev_pattern) == 144 && offsetof(dev_pattern, params) == 80, "dev_pattern layout");
 _Static_assert(sizeof(dev_map_entry) == 32, "dev_map_entry is 32 bytes");
 _Static_assert(sizeof(dev_image) == 16, "dev_image is 16 bytes");
 _Static_assert(sizeof(dev_emitter) == 16, "dev_emitter is 16 bytes");
-_Static_assert(sizeof(dev_params) == 176, "dev_params is 176 bytes");
+_Static_assert(sizeof(dev_params) == 192, "dev_params is 192 bytes");
+_Static_assert(sizeof(dev_fog) == 80 && offsetof(dev_fog, distance) == 48, "dev_fog layout");
 _Static_assert((int)OBJECT_NO_SHADOW == (int)OBJ_NO_SHADOW && (int)OBJECT_NO_IMAGE == (int)OBJ_NO_IMAGE &&
-               (int)OBJECT_NO_REFLECTION == (int)OBJ_NO_REFLECTION &&
+               (int)OBJECT_NO_REFLECTION == (int)OBJ_NO_REFLECTION && (int)OBJECT_HOLLOW == (int)OBJ_HOLLOW &&
                (int)OBJECT_DOUBLE_ILLUMINATE == (int)OBJ_DOUBLE_ILLUMINATE,
                "the kernels' object flags are scene.h's");
 _Static_assert(offsetof(dev_params, width) == 96, "dev_params ints at 96");
@@ -646,6 +647,7 @@ static dev_light lower_light(const scene_light *l)
 		                                                                          : LIGHT_KIND_POINT,
 		.shadowless = l->shadowless,
 		.grid = { l->area ? l->size1 : 0, l->area ? l->size2 : 0, l->adaptive, l->orient },
+		.media_attenuation = l->media_attenuation,
 	};
 }
 
@@ -966,8 +968,10 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	out->params.scene_flags = shadows_pass ? SCENE_SHADOWS_PASS : 0;
 	out->normals = lw.normals;
 	out->n_normals = lw.n_normals;
-	if (lower_camera(s, &out->params))
+	if (lower_camera(s, &out->params) || lower_fogs(s, out))
 		rc = -1;
+	out->params.n_fogs = out->n_fogs;
+	out->params.camera_solids = out->n_fogs ? lower_camera_solids(s) : 0;
 	if (rc == 0 && join(&lw, s, out))
 		rc = -1;
 	if (rc == 0)
@@ -1004,6 +1008,7 @@ void lower_free(lower_result *r)
 	lower_textures_free(&r->textures);
 	free(r->object_flags);
 	free(r->lights);
+	free(r->fogs);
 	free(r->emitters);
 	memset(r, 0, sizeof *r);
 }

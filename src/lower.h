@@ -75,6 +75,8 @@ typedef struct {
 	int n_objects;
 	dev_light *lights;
 	int n_lights;
+	dev_fog *fogs;            /* the scene's fogs (lower_fog.c) */
+	int n_fogs;
 	dev_emitter *emitters;    /* emissive primitives of the top level, with their power's cdf */
 	int n_emitters;
 	lower_bvh_stats *stats;   /* [0] the top level, then one per mesh placed */
@@ -87,6 +89,11 @@ typedef struct {
 /* Returns 0, or -1 after printing errors against the objects' source lines. */
 int lower_scene(const scene *s, const lower_options *opt, lower_result *out);
 void lower_free(lower_result *r);
+
+/* The scene's fogs into out->fogs (lower_fog.c); -1 when out of memory. */
+int lower_fogs(const scene *s, lower_result *out);
+/* How many solid (non-hollow) objects hold the camera's location. */
+int lower_camera_solids(const scene *s);
 
 /* The OpenCL build options for lr's kernels (the node layout is a -D, and
  * SCENE_FUNCTIONS says that lr->functions follows the kernels' files). */

@@ -541,11 +541,12 @@ static void print_ray_stats(const render_stats *st)
 	        ? (double)tests / st->counts[COUNT_RAYS + RAY_CAMERA] : 0);
 }
 
-/* POV-Ray lights such a scene with its ambient term; a path tracer sees black. */
+/* POV-Ray lights such a scene with its ambient term; a path tracer sees black
+ * (unless a fog glows). */
 static void warn_if_dark(const struct options *o, const scene *s, const lower_result *lr)
 {
 	const float *bg = s->has_sky ? s->sky : s->background;
-	if (lr->n_lights == 0 && lr->n_emitters == 0 && bg[0] <= 0 && bg[1] <= 0 && bg[2] <= 0)
+	if (lr->n_lights == 0 && lr->n_emitters == 0 && lr->n_fogs == 0 && bg[0] <= 0 && bg[1] <= 0 && bg[2] <= 0)
 		diag_warning(SRC_NOWHERE, "'%s' has no light_source, no emission and a black background: "
 		             "the image will be black", o->scene);
 }

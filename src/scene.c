@@ -118,6 +118,19 @@ void scene_add_light(scene *s, const scene_light *l)
 	s->lights[s->n_lights++] = *l;
 }
 
+void scene_add_fog(scene *s, const scene_fog *f)
+{
+	if (s->n_fogs == s->cap_fogs)
+		s->fogs = grow(s->fogs, &s->cap_fogs, sizeof *f);
+	s->fogs[s->n_fogs++] = *f;
+}
+
+scene_fog scene_default_fog(void)
+{
+	return (scene_fog){ .type = SCENE_FOG_CONSTANT, .up = { 0, 1, 0 }, .octaves = 6, .omega = 0.5, .lambda = 2,
+	                    .turb_depth = 0.5 };
+}
+
 int scene_add_mesh(scene *s, scene_mesh *m)
 {
 	if (s->n_meshes == s->cap_meshes)
@@ -196,6 +209,7 @@ void scene_free(scene *s)
 	free(s->outlines);
 	free(s->objects);
 	free(s->lights);
+	free(s->fogs);
 	for (int i = 0; i < s->n_pigments; i++)
 		free(s->pigments[i].map);
 	free(s->pigments);
@@ -540,6 +554,8 @@ static void dump_light(FILE *out, const scene_light *l)
 	}
 	if (l->shadowless)
 		fputs(" shadowless", out);
+	if (l->media_attenuation)
+		fputs(" media_attenuation", out);
 	if (l->fade_distance != 0 || l->fade_power != 0) {
 		fnum(out, "fade_distance", l->fade_distance);
 		fnum(out, "fade_power", l->fade_power);
@@ -684,6 +700,28 @@ static void dump_pigments(FILE *out, const scene *s)
 	free(used_tex);
 }
 
+static void dump_fog(FILE *out, const scene_fog *f)
+{
+	fprintf(out, "fog type %d", f->type);
+	fnum(out, "distance", f->distance);
+	color3(out, "colour", f->colour);
+	fnum(out, "filter", f->colour[3]);
+	fnum(out, "transmit", f->colour[4]);
+	if (f->type == SCENE_FOG_GROUND) {
+		fnum(out, "offset", f->offset);
+		fnum(out, "alt", f->alt);
+		vec(out, "up", f->up);
+	}
+	if (f->has_turb) {
+		vec(out, "turbulence", f->turbulence);
+		fprintf(out, " octaves %d", f->octaves);
+		fnum(out, "omega", f->omega);
+		fnum(out, "lambda", f->lambda);
+		fnum(out, "turb_depth", f->turb_depth);
+	}
+	fputc('\n', out);
+}
+
 void scene_dump(const scene *s, FILE *out)
 {
 	const scene_camera *c = &s->camera;
@@ -721,6 +759,8 @@ void scene_dump(const scene *s, FILE *out)
 	if (s->ambient_light[0] != 1 || s->ambient_light[1] != 1 || s->ambient_light[2] != 1)
 		color3(out, "ambient_light", s->ambient_light);
 	fputc('\n', out);
+	for (int i = 0; i < s->n_fogs; i++)
+		dump_fog(out, &s->fogs[i]);
 	for (int i = 0; i < s->n_lights; i++)
 		dump_light(out, &s->lights[i]);
 	for (int i = 0; i < s->n_objects; i++)

@@ -256,10 +256,30 @@ typedef struct {
 	int size1, size2, adaptive;   /* adaptive: 100 when not given, as in POV-Ray */
 	bool jitter, circular, orient;
 	bool shadowless;
+	bool media_attenuation;      /* fogs dim its light on the way (POV-Ray's, default off) */
 	float fade_distance, fade_power; /* 0, 0: no falloff, as in POV-Ray */
 	int looks_like;              /* first object index of its looks_like shape, or -1 */
 	src_loc loc;
 } scene_light;
+/* POV-Ray's fog { }: type 1, constant, or 2, ground fog (fog_offset, fog_alt
+ * along up), over distance; colour rgb, filter, transmit; turbulence (when
+ * has_turb: any of turbulence, octaves, omega, lambda was written) scales the
+ * distance a ray goes through it. Transformations only turn up. */
+enum { SCENE_FOG_CONSTANT = 1, SCENE_FOG_GROUND = 2 };
+typedef struct {
+	int type;                /* SCENE_FOG_, 1 */
+	double distance;         /* 0: no fog (POV-Ray skips it) */
+	float colour[5];         /* black */
+	double offset, alt;      /* 0, 0 */
+	double up[3];            /* <0, 1, 0>, unit length */
+	bool has_turb;
+	double turbulence[3];    /* 0 */
+	int octaves;             /* 6 */
+	double omega, lambda;    /* 0.5, 2 */
+	double turb_depth;       /* 0.5 */
+	src_loc loc;
+} scene_fog;
+
 /* A CSG object (union inside CSG, merge, intersection, difference, inverse):
  * its leaves are consecutive scene objects, and its program (kernels/shared.h,
  * CSG_; operands of CSG_LEAF are 0 .. n_leaves - 1) says how their insides
@@ -340,6 +360,8 @@ typedef struct {
 	scene_material *sky_layers;  /* the sky_sphere's pigments as written (the last on top),
 	                              * its transformations in tex_xf, its emission in emission */
 	int n_sky_layers;
+	scene_fog *fogs;      /* in the order written; they combine as POV-Ray combines them */
+	int n_fogs, cap_fogs;
 	/* global_settings */
 	int max_trace_level;  /* 0 when the scene does not say */
 	float assumed_gamma;  /* 0 when the scene does not say */
@@ -355,6 +377,9 @@ void scene_init(scene *s);
 /* Appends; exits with a message on out of memory. */
 void scene_add_object(scene *s, const scene_object *o);
 void scene_add_light(scene *s, const scene_light *l);
+void scene_add_fog(scene *s, const scene_fog *f);
+/* POV-Ray's default fog (Create_Fog): no distance, so no fog until one is given. */
+scene_fog scene_default_fog(void);
 /* Takes ownership of p's map; returns its index. */
 int scene_add_pigment(scene *s, const scene_pigment *p);
 /* A texture into the pool scene.textures; returns its index. */
