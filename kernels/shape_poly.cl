@@ -82,14 +82,15 @@ inline float poly_intersect(float3 o, float3 d, global const dev_prim *prims, gl
 	if (!(len > (real)0))
 		return tmax;
 	D /= len;
-	real q[ROOTS_MAX_ORDER + 1], u[ROOTS_MAX_ORDER];
-	int deg = poly_along(prims, p, n, P, D, q);
+	/* about the ray's point nearest the poly's origin (src/shape_poly.c) */
+	real b = -dot(P, D), q[ROOTS_MAX_ORDER + 1], u[ROOTS_MAX_ORDER];
+	int deg = poly_along(prims, p, n, P + b * D, D, q);
 	real lo = fmax((real)tmin * len, (real)POLY_DEPTH_TOLERANCE), hi = fmin((real)tmax * len, (real)POLY_MAX_DISTANCE);
-	int k = roots_find(q, deg, lo, hi, u, ROOTS_MAX_ORDER);
+	int k = roots_find(q, deg, lo - b, hi - b, u, ROOTS_MAX_ORDER);
 	/* the first root whose float is past tmin: a root rounded down onto
 	 * tmin is the one a CSG's last step stopped at */
 	for (int i = 0; i < k; i++) {
-		float t = (float)(u[i] / len);
+		float t = (float)((u[i] + b) / len);
 		if (t > tmin && t < tmax)
 			return t;
 	}

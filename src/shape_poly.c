@@ -13,7 +13,8 @@
  *
  * A ray's hits, as in POV-Ray's Poly::intersect: the ray with a unit
  * direction in the poly's space, the polynomial expanded into one in the
- * distance s along it, and its roots between POV-Ray's DEPTH_TOLERANCE and
+ * distance s along it (about the ray's point nearest the origin, where
+ * POV-Ray expands it about the ray's start and loses high orders' digits), and its roots between POV-Ray's DEPTH_TOLERANCE and
  * MAX_DISTANCE (beyond which POV-Ray's Sturm solver does not look) found by
  * src/roots.c (kernels/shape_poly.cl and kernels/roots.cl on the device, in
  * double). POV-Ray's sturm picks its Sturm-sequence solver for cubics and
@@ -152,16 +153,24 @@ static void trace(const scene *s, const scene_object *o, const double ro[3], con
 	double len = sqrt(rd[0] * rd[0] + rd[1] * rd[1] + rd[2] * rd[2]);
 	if (!(len > 0))
 		return;
-	double D[3] = { rd[0] / len, rd[1] / len, rd[2] / len }, q[ROOTS_MAX_ORDER + 1], u;
-	int n = along(pl, ro, D, q);
-	if (roots_find(q, n, fmax(tmin * len, DEPTH_TOLERANCE), fmin(h->t * len, MAX_DISTANCE), &u, 1) == 0)
-		return;
-	double t = u / len;
-	if (!(t > tmin && t < h->t))
-		return;
-	h->t = t;
-	double x[3] = { ro[0] + u * D[0], ro[1] + u * D[1], ro[2] + u * D[2] };
-	gradient(pl, x, h->n);
+	double D[3] = { rd[0] / len, rd[1] / len, rd[2] / len }, q[ROOTS_MAX_ORDER + 1], u[ROOTS_MAX_ORDER];
+	/* expanded about the ray's point nearest the poly's origin, where its
+	 * terms are smallest: about a far start their cancellation loses every
+	 * digit of a high order (7^34 beside the 1 of x^34 + y^34 + z^34 = 1) */
+	double b = -(ro[0] * D[0] + ro[1] * D[1] + ro[2] * D[2]);
+	double C[3] = { ro[0] + b * D[0], ro[1] + b * D[1], ro[2] + b * D[2] };
+	int n = along(pl, C, D, q);
+	int k = roots_find(q, n, fmax(tmin * len, DEPTH_TOLERANCE) - b, fmin(h->t * len, MAX_DISTANCE) - b, u,
+	                   ROOTS_MAX_ORDER);
+	for (int i = 0; i < k; i++) {
+		double t = (u[i] + b) / len;
+		if (t > tmin && t < h->t) {
+			h->t = t;
+			double x[3] = { C[0] + u[i] * D[0], C[1] + u[i] * D[1], C[2] + u[i] * D[2] };
+			gradient(pl, x, h->n);
+			return;
+		}
+	}
 }
 
 static bool inside(const scene *s, const scene_object *o, const double p[3])
