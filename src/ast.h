@@ -336,6 +336,8 @@ enum kw_class {
 #define AST_WORD_LATHE "lathe"
 #define AST_WORD_TORUS "torus"
 #define AST_WORD_SUPERELLIPSOID "superellipsoid"
+/* a term of polynomial { Order, xyz(I, J, K): C ... } (eval_poly.c) */
+#define AST_WORD_XYZ "xyz"
 
 enum ast_keyword {
 	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */

@@ -87,7 +87,7 @@ static int read_terms(struct eval *e, struct cursor *c, const ast_node *b, int o
 	int err = 0;
 	const ast_node *item;
 	while ((item = eval_next_expr(c, &err)) != NULL) {
-		if (item->kind != AST_CALL || strcmp(item->str, "xyz") != 0) {
+		if (item->kind != AST_CALL || strcmp(item->str, AST_WORD_XYZ) != 0) {
 			eval_error(e, item->loc, "expected a term xyz(i, j, k): Coefficient of the %s", name_of(b));
 			return -1;
 		}
