@@ -14,10 +14,18 @@ inline int poly_order(global const dev_prim *prims, global const dev_prim *p)
 	return (int)intersect_data(prims, p).x;
 }
 
-/* Coefficient i, from its two floats. */
+/* Its bound (SCENE_BOUND_ in src/scene.h: 0 none, 1 the unit sphere, 2 the
+ * cube [-1, 1]^3), whose map from the poly's space is in the three records
+ * after the first. */
+inline int poly_bound(global const dev_prim *prims, global const dev_prim *p)
+{
+	return (int)intersect_data(prims, p).y;
+}
+
+/* Coefficient i, from its two floats, after the bound's records. */
 inline real poly_coeff(global const dev_prim *prims, global const dev_prim *p, int i)
 {
-	float4 r = prims[p->link + 1 + i / 2].a;
+	float4 r = prims[p->link + (poly_bound(prims, p) ? 4 : 1) + i / 2].a;
 	return (i & 1) ? (real)r.z + (real)r.w : (real)r.x + (real)r.y;
 }
 
@@ -71,15 +79,44 @@ inline int poly_along(global const dev_prim *prims, global const dev_prim *p, in
 	return dx;
 }
 
+/* POV-Ray's Ray_In_Bound: whether the ray (P, D) in the poly's space meets
+ * its bound ahead of P, or starts inside it. */
+inline bool poly_ray_in_bound(global const dev_prim *prims, global const dev_prim *p, int kind, real3 P, real3 D)
+{
+	float4 a = prims[p->link + 1].a, b = prims[p->link + 2].a, c = prims[p->link + 3].a;
+	real3 ra = convert_real3(a.xyz), rb = convert_real3(b.xyz), rc = convert_real3(c.xyz);
+	real3 bp = (real3)(dot(ra, P) + (real)a.w, dot(rb, P) + (real)b.w, dot(rc, P) + (real)c.w);
+	real3 bd = (real3)(dot(ra, D), dot(rb, D), dot(rc, D));
+	if (kind == 1) {
+		real pp = dot(bp, bp), pd = dot(bp, bd);
+		return pp <= (real)1 || (pd < (real)0 && pd * pd - dot(bd, bd) * (pp - (real)1) >= (real)0);
+	}
+	real near = -INFINITY, far = INFINITY;
+	for (int k = 0; k < 3; k++) {
+		real pk = k == 0 ? bp.x : k == 1 ? bp.y : bp.z, dk = k == 0 ? bd.x : k == 1 ? bd.y : bd.z;
+		if (dk == (real)0) {
+			if (fabs(pk) > (real)1)
+				return false;
+			continue;
+		}
+		real t0 = ((real)-1 - pk) / dk, t1 = ((real)1 - pk) / dk;
+		near = fmax(near, fmin(t0, t1));
+		far = fmin(far, fmax(t0, t1));
+	}
+	return near <= far && far >= (real)0;
+}
+
 inline float poly_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p, float tmin,
                             float tmax)
 {
-	int n = poly_order(prims, p);
+	int n = poly_order(prims, p), kind = poly_bound(prims, p);
 	if (n < 1 || n > ROOTS_MAX_ORDER)
 		return tmax;
 	real3 P = intersect_to_local_real(p, o), D = intersect_dir_to_local_real(p, d);
 	real len = length(D);
 	if (!(len > (real)0))
+		return tmax;
+	if (kind != 0 && !poly_ray_in_bound(prims, p, kind, P, D))
 		return tmax;
 	D /= len;
 	/* about the ray's point nearest the poly's origin (src/shape_poly.c) */

@@ -138,3 +138,44 @@ int eval_poly_arguments(struct eval *e, struct cursor *c, const ast_node *b, sce
 	o->poly = scene_add_poly(e->s, &pl);
 	return 0;
 }
+
+/* POV-Ray's bounded_by is not only a hint: a ray that misses the bound, from
+ * outside it, misses the object, and a poly reaching past its bound is cut
+ * there for such rays (objects/quartic/hyptorus.pov). A bound of one sphere
+ * or box is kept with the poly, in a copy of its coefficients of its own;
+ * other bounds are hints, as for every other shape. */
+void eval_poly_bound(struct eval *e, scene_object *o, const struct objval *bound)
+{
+	if (o->shape != SHAPE_POLY && o->shape != SHAPE_CUBIC && o->shape != SHAPE_QUARTIC &&
+	    o->shape != SHAPE_POLYNOMIAL)
+		return;
+	if (!bound || bound->n_objs != 1 || bound->n_csgs != 0)
+		return;
+	const scene_object *b = &bound->objs[0];
+	double centre[3], size[3];
+	int kind;
+	if (b->shape == SHAPE_SPHERE) {
+		kind = SCENE_BOUND_SPHERE;
+		for (int k = 0; k < 3; k++) {
+			centre[k] = b->p[0][k];
+			size[k] = b->radius;
+		}
+	} else if (b->shape == SHAPE_BOX) {
+		kind = SCENE_BOUND_BOX;
+		for (int k = 0; k < 3; k++) {
+			centre[k] = 0.5 * (b->p[0][k] + b->p[1][k]);
+			size[k] = 0.5 * fabs(b->p[1][k] - b->p[0][k]);
+		}
+	} else {
+		return;
+	}
+	if (!(size[0] > 0 && size[1] > 0 && size[2] > 0))
+		return;
+	const scene_poly *old = &e->s->polys[o->poly];
+	size_t n = (size_t)terms(old->order);
+	scene_poly pl = { .order = old->order, .c = eval_xrealloc(NULL, n * sizeof *pl.c), .bound = kind };
+	memcpy(pl.c, old->c, n * sizeof *pl.c);
+	xform sc = scene_xform_scale(size), tr = scene_xform_translate(centre), unit = scene_xform_then(&sc, &tr);
+	pl.bound_xf = scene_xform_then(&unit, &b->xf);
+	o->poly = scene_add_poly(e->s, &pl);
+}

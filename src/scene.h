@@ -223,7 +223,13 @@ typedef struct {
 typedef struct {
 	int order;
 	double *c;           /* (order+1)(order+2)(order+3)/6 of them */
+	/* POV-Ray's bounded_by, when it is one sphere or box: a ray that misses it
+	 * and starts outside it misses the poly. SCENE_BOUND_SPHERE: the unit
+	 * sphere; SCENE_BOUND_BOX: the cube [-1, 1]^3; bound_xf maps it to world space. */
+	int bound;
+	xform bound_xf;
 } scene_poly;
+enum { SCENE_BOUND_NONE, SCENE_BOUND_SPHERE, SCENE_BOUND_BOX };
 
 /* The edges of a polygon, prism or text in their plane (src/prism.h), each
  * oriented so that the shape's inside is on its left: (x0, z0) to (x1, z1).

@@ -9,7 +9,9 @@
  * The coefficients are in POV-Ray's order (scene_poly), read by
  * src/eval_poly.c. Like POV-Ray, a poly has no bounds: lowering puts it among
  * the unbounded primitives every ray tests, unless a CSG (clipped_by, an
- * intersection) bounds it; bounded_by is a hint eclat does not need.
+ * intersection) bounds it. A bounded_by of one sphere or box is POV-Ray's
+ * Ray_In_Bound: a ray that misses it from outside misses the poly, which may
+ * cut a poly that reaches past it (src/eval_poly.c keeps it).
  *
  * A ray's hits, as in POV-Ray's Poly::intersect: the ray with a unit
  * direction in the poly's space, the polynomial expanded into one in the
@@ -136,6 +138,40 @@ static int along(const scene_poly *pl, const double P[3], const double D[3], dou
 	return dx;
 }
 
+/* The map from the poly's space to its bound's unit sphere or cube
+ * (scene_poly); -1 when there is none or it is singular. */
+static int bound_map(const scene_poly *pl, const scene_object *o, xform *m)
+{
+	xform inv;
+	if (pl->bound == SCENE_BOUND_NONE || lower_invert(&pl->bound_xf, &inv))
+		return -1;
+	*m = scene_xform_then(&o->xf, &inv);
+	return 0;
+}
+
+/* POV-Ray's Ray_In_Bound: whether the ray (P, D) in the bound's unit space
+ * meets the bound ahead of P, or starts inside it. */
+static bool ray_in_bound(int kind, const double P[3], const double D[3])
+{
+	if (kind == SCENE_BOUND_SPHERE) {
+		double pp = P[0] * P[0] + P[1] * P[1] + P[2] * P[2], pd = P[0] * D[0] + P[1] * D[1] + P[2] * D[2];
+		double dd = D[0] * D[0] + D[1] * D[1] + D[2] * D[2];
+		return pp <= 1 || (pd < 0 && pd * pd - dd * (pp - 1) >= 0);
+	}
+	double near = -INFINITY, far = INFINITY;
+	for (int k = 0; k < 3; k++) {
+		if (D[k] == 0) {
+			if (fabs(P[k]) > 1)
+				return false;
+			continue;
+		}
+		double a = (-1 - P[k]) / D[k], b = (1 - P[k]) / D[k];
+		near = fmax(near, fmin(a, b));
+		far = fmin(far, fmax(a, b));
+	}
+	return near <= far && far >= 0;
+}
+
 static void bounds(const scene *s, const scene_object *o, double lo[3], double hi[3])
 {
 	(void)s;
@@ -153,6 +189,14 @@ static void trace(const scene *s, const scene_object *o, const double ro[3], con
 	double len = sqrt(rd[0] * rd[0] + rd[1] * rd[1] + rd[2] * rd[2]);
 	if (!(len > 0))
 		return;
+	xform m;
+	if (bound_map(pl, o, &m) == 0) {
+		double bp[3], bd[3];
+		scene_xform_point(&m, ro, bp);
+		scene_xform_vector(&m, rd, bd);
+		if (!ray_in_bound(pl->bound, bp, bd))
+			return;
+	}
 	double D[3] = { rd[0] / len, rd[1] / len, rd[2] / len }, q[ROOTS_MAX_ORDER + 1], u[ROOTS_MAX_ORDER];
 	/* expanded about the ray's point nearest the poly's origin, where its
 	 * terms are smallest: about a far start their cancellation loses every
@@ -193,7 +237,11 @@ static int lower(struct lowering *lw, const scene *s, const scene_object *o, int
 		diag_warning(o->loc, "%s with a singular transform (a scale of 0?) skipped", shape_of(o)->name);
 		return 0;
 	}
-	p.link = lower_add_data(lw, (float4){ (float)pl->order, 0, 0, 0 });
+	xform m;
+	int bound = bound_map(pl, o, &m) == 0 ? pl->bound : SCENE_BOUND_NONE;
+	p.link = lower_add_data(lw, (float4){ (float)pl->order, (float)bound, 0, 0 });
+	for (int r = 0; bound != SCENE_BOUND_NONE && r < 3; r++)
+		lower_add_data(lw, (float4){ (float)m.m[r][0], (float)m.m[r][1], (float)m.m[r][2], (float)m.m[r][3] });
 	for (int i = 0; i < count; i += 2) {
 		float h0 = (float)pl->c[i], h1 = i + 1 < count ? (float)pl->c[i + 1] : 0;
 		float l0 = (float)(pl->c[i] - h0), l1 = i + 1 < count ? (float)(pl->c[i + 1] - h1) : 0;

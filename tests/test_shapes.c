@@ -205,6 +205,12 @@ static void make_quartic(scene_object *o)
 		make_torus_quartic(c);
 	else
 		make_random_poly(c, 4, uniform() < 0.5);
+	double u = uniform(), r[3] = { between(0.3, 1), between(0.3, 1), between(0.3, 1) };
+	if (u < 0.4) {   /* bounded_by a sphere or box of world space, which may cut it */
+		scene_poly *pl = &maker_scene->polys[o->poly];
+		pl->bound = u < 0.2 ? SCENE_BOUND_SPHERE : SCENE_BOUND_BOX;
+		pl->bound_xf = scene_xform_scale(r);
+	}
 }
 
 /* A few terms, up to order 6, beside x^n + y^n + z^n - k: a sparse random
