@@ -23,7 +23,7 @@ inline real roots_value(const real *c, int n, real x, real *dp)
  * shrink it fast enough. */
 inline real roots_refine(const real *c, int n, real lo, real hi, real flo)
 {
-	real x = (real)0.5 * (lo + hi), width = hi - lo;
+	real x = (real)0.5 * (lo + hi), dx = hi - lo, dxold = dx;
 	for (int i = 0; i < ROOTS_REFINE_STEPS; i++) {
 		real df, f = roots_value(c, n, x, &df);
 		if (f == (real)0)
@@ -34,12 +34,15 @@ inline real roots_refine(const real *c, int n, real lo, real hi, real flo)
 		} else {
 			hi = x;
 		}
-		/* Newton's step, unless it leaves the bracket or the last one did
-		 * not halve it: near a cluster of roots it creeps */
+		/* Newton's step, unless it leaves the bracket or is more than half
+		 * the step before: near a cluster of roots it creeps (rtsafe) */
 		real next = x - f / df;
-		if (!(next > lo && next < hi) || hi - lo > (real)0.5 * width)
-			next = (real)0.5 * (lo + hi);
-		width = hi - lo;
+		dxold = dx;
+		dx = f / df;
+		if (!(next > lo && next < hi) || fabs((real)2 * f) > fabs(dxold * df)) {
+			dx = (real)0.5 * (hi - lo);
+			next = lo + dx;
+		}
 		if (next == x || hi - lo <= (real)4 * REAL_EPSILON * fmax(fabs(lo), fabs(hi)))
 			return next;
 		x = next;

@@ -120,16 +120,17 @@ inline float poly_intersect(float3 o, float3 d, global const dev_prim *prims, gl
 		return tmax;
 	D /= len;
 	/* about the ray's point nearest the poly's origin (src/shape_poly.c) */
-	real b = -dot(P, D), q[ROOTS_MAX_ORDER + 1], u[ROOTS_MAX_ORDER];
+	real b = -dot(P, D), q[ROOTS_MAX_ORDER + 1], u;
 	int deg = poly_along(prims, p, n, P + b * D, D, q);
-	real lo = fmax((real)tmin * len, (real)POLY_DEPTH_TOLERANCE), hi = fmin((real)tmax * len, (real)POLY_MAX_DISTANCE);
-	int k = roots_find(q, deg, lo - b, hi - b, u, ROOTS_MAX_ORDER);
+	real lo = fmax((real)tmin * len, (real)POLY_DEPTH_TOLERANCE) - b;
+	real hi = fmin((real)tmax * len, (real)POLY_MAX_DISTANCE) - b;
 	/* the first root whose float is past tmin: a root rounded down onto
 	 * tmin is the one a CSG's last step stopped at */
-	for (int i = 0; i < k; i++) {
-		float t = (float)((u[i] + b) / len);
-		if (t > tmin && t < tmax)
-			return t;
+	for (int i = 0; i < deg && roots_find(q, deg, lo, hi, &u, 1) == 1; i++) {
+		float t = (float)((u + b) / len);
+		if (t > tmin)
+			return t < tmax ? t : tmax;
+		lo = u;
 	}
 	return tmax;
 }

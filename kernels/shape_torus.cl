@@ -32,14 +32,14 @@ inline float torus_intersect(float3 o, float3 d, global const dev_prim *prims, g
 	real k1 = dot(P, P) - (real)1 - k2, pd = dot(P, D);
 	real c[5] = { k1 * k1 + (real)4 * (Py * Py - k2), (real)4 * (pd * k1 + (real)2 * Py * Dy),
 	              (real)2 * (k1 + (real)2 * (pd * pd + Dy * Dy)), (real)4 * pd, (real)1 };
-	real u[4];
-	int n = roots_find(c, 4, (real)0, L, u, 4);
 	/* the first root whose float is past tmin: a root rounded down onto
 	 * tmin is the one a CSG's last step stopped at */
-	for (int i = 0; i < n; i++) {
-		float t = (float)((s0 + u[i]) / len);
-		if (t > tmin && t < tmax)
-			return t;
+	real a = 0, u;
+	for (int i = 0; i < 4 && roots_find(c, 4, a, L, &u, 1) == 1; i++) {
+		float t = (float)((s0 + u) / len);
+		if (t > tmin)
+			return t < tmax ? t : tmax;
+		a = u;
 	}
 	return tmax;
 }

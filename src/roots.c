@@ -14,7 +14,7 @@
 
 #include "roots.h"
 
-#define REFINE_STEPS 200   /* the bracket halves every two: 1e30 to a double's ulp */
+#define REFINE_STEPS 200   /* bisection where Newton creeps: 1e30 to a double's ulp */
 
 /* c[0] + ... + c[n] x^n, and its derivative into *dp. */
 static double value(const double *c, int n, double x, double *dp)
@@ -33,7 +33,7 @@ static double value(const double *c, int n, double x, double *dp)
  * shrink it fast enough. */
 static double refine(const double *c, int n, double lo, double hi, double flo)
 {
-	double x = 0.5 * (lo + hi), width = hi - lo;
+	double x = 0.5 * (lo + hi), dx = hi - lo, dxold = dx;
 	for (int i = 0; i < REFINE_STEPS; i++) {
 		double df, f = value(c, n, x, &df);
 		if (f == 0)
@@ -42,12 +42,15 @@ static double refine(const double *c, int n, double lo, double hi, double flo)
 			lo = x, flo = f;
 		else
 			hi = x;
-		/* Newton's step, unless it leaves the bracket or the last one did
-		 * not halve it: near a cluster of roots it creeps */
+		/* Newton's step, unless it leaves the bracket or is more than half
+		 * the step before: near a cluster of roots it creeps (rtsafe) */
 		double next = x - f / df;
-		if (!(next > lo && next < hi) || hi - lo > 0.5 * width)
-			next = 0.5 * (lo + hi);
-		width = hi - lo;
+		dxold = dx;
+		dx = f / df;
+		if (!(next > lo && next < hi) || fabs(2 * f) > fabs(dxold * df)) {
+			dx = 0.5 * (hi - lo);
+			next = lo + dx;
+		}
 		if (next == x || hi - lo <= 4 * DBL_EPSILON * fmax(fabs(lo), fabs(hi)))
 			return next;
 		x = next;

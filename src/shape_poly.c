@@ -197,23 +197,25 @@ static void trace(const scene *s, const scene_object *o, const double ro[3], con
 		if (!ray_in_bound(pl->bound, bp, bd))
 			return;
 	}
-	double D[3] = { rd[0] / len, rd[1] / len, rd[2] / len }, q[ROOTS_MAX_ORDER + 1], u[ROOTS_MAX_ORDER];
+	double D[3] = { rd[0] / len, rd[1] / len, rd[2] / len }, q[ROOTS_MAX_ORDER + 1], u;
 	/* expanded about the ray's point nearest the poly's origin, where its
 	 * terms are smallest: about a far start their cancellation loses every
 	 * digit of a high order (7^34 beside the 1 of x^34 + y^34 + z^34 = 1) */
 	double b = -(ro[0] * D[0] + ro[1] * D[1] + ro[2] * D[2]);
 	double C[3] = { ro[0] + b * D[0], ro[1] + b * D[1], ro[2] + b * D[2] };
 	int n = along(pl, C, D, q);
-	int k = roots_find(q, n, fmax(tmin * len, DEPTH_TOLERANCE) - b, fmin(h->t * len, MAX_DISTANCE) - b, u,
-	                   ROOTS_MAX_ORDER);
-	for (int i = 0; i < k; i++) {
-		double t = (u[i] + b) / len;
-		if (t > tmin && t < h->t) {
-			h->t = t;
-			double x[3] = { C[0] + u[i] * D[0], C[1] + u[i] * D[1], C[2] + u[i] * D[2] };
-			gradient(pl, x, h->n);
+	double lo = fmax(tmin * len, DEPTH_TOLERANCE) - b, hi = fmin(h->t * len, MAX_DISTANCE) - b;
+	for (int i = 0; i < n && roots_find(q, n, lo, hi, &u, 1) == 1; i++) {
+		double t = (u + b) / len;
+		if (t > tmin) {   /* as the device, which rounds t to a float */
+			if (t < h->t) {
+				h->t = t;
+				double x[3] = { C[0] + u * D[0], C[1] + u * D[1], C[2] + u * D[2] };
+				gradient(pl, x, h->n);
+			}
 			return;
 		}
+		lo = u;
 	}
 }
 
