@@ -117,6 +117,7 @@ items:
 	| items item                  { $$ = ast_append($1, CHECK_DEPTH($2)); }
 	| items ','                   { $$ = $1; /* commas between arguments are optional in POV-Ray */ }
 	| items ';'                   { $$ = $1; /* the end of a #declare, maybe given by a macro */ }
+	| items ':'                   { $$ = $1; /* polynomial { 4, xyz(2, 0, 0): 1 }: the term's number follows */ }
 	| items error                 { $$ = parse_give_up(ctx, $1); if (!$$) YYABORT; }
 	;
 

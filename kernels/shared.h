@@ -70,7 +70,8 @@ typedef struct {
 	X(DISC, disc) \
 	X(TORUS, torus) \
 	X(SUPERELLIPSOID, superellipsoid) \
-	X(ISOSURFACE, isosurface)
+	X(ISOSURFACE, isosurface) \
+	X(POLY, poly)
 #define PRIM_ENUM_ROW(NAME, name) PRIM_##NAME,
 enum {
 	PRIM_SHAPES(PRIM_ENUM_ROW)
@@ -106,6 +107,11 @@ enum { PRISM_OPEN = 1, PRISM_FLAT = 2, PRISM_CONIC = 4 };
  *   record's a.x + a.y is 2/E, a.z + a.w 2/N (kernels/shape_superellipsoid.cl).
  * Isosurface: the map to its own space; three records: its container, function,
  *   threshold, accuracy, max_gradient, max_trace and flags (kernels/shape_isosurface.cl).
+ * Poly (poly, cubic, quartic, polynomial): the map to its own space; its first
+ *   record's a.x is its order, and the records after it hold its coefficients
+ *   in POV-Ray's order, two in each a, each as a float and the float of what
+ *   it leaves, so that the device may add them in double
+ *   (kernels/shape_poly.cl).
  * CSG: a.x, a.y (ints): its first leaf and how many; a.z, a.w (ints): its
  *   program's first record and its length in ops (kernels/csg.cl); link: how
  *   many of its leaves rays may meet (the rest are clipped_by's, which only

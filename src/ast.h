@@ -352,6 +352,8 @@ enum kw_class {
 #define AST_WORD_ALL_INTERSECTIONS "all_intersections"
 #define AST_WORD_POLARITY "polarity"
 #define AST_WORD_EVALUATE "evaluate"
+/* a term of polynomial { Order, xyz(I, J, K): C ... } (eval_poly.c) */
+#define AST_WORD_XYZ "xyz"
 
 enum ast_keyword {
 	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */

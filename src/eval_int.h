@@ -225,6 +225,10 @@ int eval_trace(struct eval *e, const ast_node *call, value *out);
 /* The arguments of a shape whose class has no args string (polygon, prism,
  * text: eval_outline.c), into o; -1 after an error. */
 int eval_outline_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
+/* poly, cubic, quartic and polynomial (eval_poly.c) */
+int eval_poly_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
+/* A placed poly's bounded_by (eval_poly.c). */
+void eval_poly_bound(struct eval *e, scene_object *o, const struct objval *bound);
 
 /* ---- patterns (eval_pattern.c) ---- */
 /* The PATTERN_ of a pattern's name, or -1. */

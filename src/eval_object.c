@@ -408,7 +408,8 @@ static int clip_objects(struct eval *e, const ast_node *b, const struct objval *
 }
 
 /* bounded_by { OBJECT... }: POV-Ray's bound is a hint for speed, which eclat's
- * BVH does not need; it is kept for a clipped_by { bounded_by } after it. */
+ * BVH does not need; it is kept for a clipped_by { bounded_by } after it, and
+ * for a poly, which it may cut (eval_poly_bound). */
 static int bounded_by(struct eval *e, const ast_node *b, struct objval *o)
 {
 	value v;
@@ -1411,6 +1412,8 @@ void eval_place(struct eval *e, value *v)
 		scene_add_light(e->s, &l->light);
 	}
 	int first = e->s->n_objects;
+	if (o->n_objs == 1 && o->n_csgs == 0)
+		eval_poly_bound(e, &o->objs[0], o->bound);
 	for (int i = 0; i < o->n_objs; i++) {
 		o->objs[i].csg = 0;
 		scene_add_object(e->s, &o->objs[i]);

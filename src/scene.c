@@ -147,6 +147,14 @@ int scene_add_outline(scene *s, const scene_outline *o)
 	return s->n_outlines++;
 }
 
+int scene_add_poly(scene *s, const scene_poly *p)
+{
+	if (s->n_polys == s->cap_polys)
+		s->polys = grow(s->polys, &s->cap_polys, sizeof *p);
+	s->polys[s->n_polys] = *p;
+	return s->n_polys++;
+}
+
 int scene_add_pigment(scene *s, const scene_pigment *p)
 {
 	if (s->n_pigments == s->cap_pigments)
@@ -207,6 +215,9 @@ void scene_free(scene *s)
 		free(s->outlines[i].glyph);
 	}
 	free(s->outlines);
+	for (int i = 0; i < s->n_polys; i++)
+		free(s->polys[i].c);
+	free(s->polys);
 	free(s->objects);
 	free(s->lights);
 	free(s->fogs);

@@ -140,7 +140,8 @@ typedef struct {
  *   cone: p[0] base, radius its radius, p[1] cap, param[0] its radius, SHAPE_OPEN;
  *   disc: p[0] centre, p[1] normal, radius, param[0] the hole's radius (0: none);
  *   torus: radius the major radius, param[0] the minor;
- *   superellipsoid: p[0] <E, N, 0>. */
+ *   superellipsoid: p[0] <E, N, 0>;
+ *   poly, cubic, quartic, polynomial: poly, an index into scene.polys. */
 #define SCENE_SHAPES(X) \
 	X(SPHERE, sphere) \
 	X(TRIANGLE, triangle) \
@@ -159,7 +160,11 @@ typedef struct {
 	X(DISC, disc) \
 	X(TORUS, torus) \
 	X(SUPERELLIPSOID, superellipsoid) \
-	X(ISOSURFACE, isosurface)
+	X(ISOSURFACE, isosurface) \
+	X(POLY, poly) \
+	X(CUBIC, cubic) \
+	X(QUARTIC, quartic) \
+	X(POLYNOMIAL, polynomial)
 #define SCENE_SHAPE_ENUM_ROW(NAME, name) SHAPE_##NAME,
 typedef enum { SCENE_SHAPES(SCENE_SHAPE_ENUM_ROW) SHAPE_KINDS } scene_shape;
 
@@ -184,6 +189,7 @@ typedef struct {
 	int mesh;
 	int outline;         /* polygon, prism, text: an index into scene.outlines */
 	int function;        /* isosurface: its function (scene.functions), -1 for none */
+	int poly;            /* poly, cubic, quartic, polynomial: an index into scene.polys */
 	xform xf;            /* object to world */
 	scene_material material;
 	bool textured;       /* false: takes the texture of an enclosing union, else the default */
@@ -212,6 +218,20 @@ typedef struct {
 	bool has_inside_vector;
 	src_loc loc;
 } scene_mesh;
+
+/* A polynomial surface's coefficients (src/shape_poly.c), in POV-Ray's order:
+ * the terms x^i y^j z^k with i + j + k <= order, i from order down to 0, then j,
+ * then k, each from its highest down. Shared by every copy. */
+typedef struct {
+	int order;
+	double *c;           /* (order+1)(order+2)(order+3)/6 of them */
+	/* POV-Ray's bounded_by, when it is one sphere or box: a ray that misses it
+	 * and starts outside it misses the poly. SCENE_BOUND_SPHERE: the unit
+	 * sphere; SCENE_BOUND_BOX: the cube [-1, 1]^3; bound_xf maps it to world space. */
+	int bound;
+	xform bound_xf;
+} scene_poly;
+enum { SCENE_BOUND_NONE, SCENE_BOUND_SPHERE, SCENE_BOUND_BOX };
 
 /* The edges of a polygon, prism or text in their plane (src/prism.h), each
  * oriented so that the shape's inside is on its left: (x0, z0) to (x1, z1).
@@ -347,6 +367,8 @@ typedef struct {
 	int n_functions, cap_functions, n_fops;
 	scene_outline *outlines;
 	int n_outlines, cap_outlines;
+	scene_poly *polys;
+	int n_polys, cap_polys;
 	scene_pigment *pigments;   /* the pattern pigments' pool, scene_material.pattern */
 	int n_pigments, cap_pigments;
 	scene_material *textures;  /* the pool of textures that texture_maps and layers hold
@@ -400,6 +422,8 @@ int scene_fop_arity(int op);
 const char *scene_fop_name(int op);
 /* Takes ownership of o's arrays; returns its index. */
 int scene_add_outline(scene *s, const scene_outline *o);
+/* Takes ownership of p's coefficients; returns its index. */
+int scene_add_poly(scene *s, const scene_poly *p);
 void scene_free(scene *s);
 /* Frees a mesh's arrays (those of a mesh not added to a scene: scene_free frees
  * the scene's own). */

@@ -4,16 +4,16 @@
  * spindle torus: every root of the quartic is a surface, the spindle inside
  * included, and the inside is the union of the balls of radius Minor around
  * the circle. POV-Ray's sturm picks its slower, surer root finder; eclat's
- * finder (here and in kernels/shape_torus.cl) loses no root but where a ray
- * only touches the surface, so sturm is read and changes nothing.
+ * (src/roots.c, kernels/roots.cl) loses no root but where a ray only touches
+ * the surface, so sturm is read and changes nothing.
  *
  * On the device a torus is the map from world space to the torus of major
  * radius 1 (kernels/shape_torus.cl), with Minor / Major in its PRIM_DATA record. */
-#include <float.h>
 #include <math.h>
 
 #include "ast.h"
 #include "lower.h"
+#include "roots.h"
 #include "shape.h"
 
 #define MAJOR(o) ((o)->radius)
@@ -25,77 +25,6 @@ static void bounds(const scene *s, const scene_object *o, double lo[3], double h
 	double r = fabs(MINOR(o)), big = fabs(MAJOR(o)) + r;
 	double a[3] = { -big, -r, -big }, b[3] = { big, r, big };
 	shape_grow_xformed_box(&o->xf, a, b, lo, hi);
-}
-
-/* ---- the polynomial's roots ---- */
-
-/* c[0] + c[1] x + ... + c[n] x^n, and its derivative into *dp (when not NULL). */
-static double poly(const double *c, int n, double x, double *dp)
-{
-	double v = c[n], d = 0;
-	for (int i = n - 1; i >= 0; i--) {
-		d = d * x + v;
-		v = v * x + c[i];
-	}
-	if (dp)
-		*dp = d;
-	return v;
-}
-
-/* The root in [lo, hi] of c, whose value flo at lo has the opposite sign of its
- * value at hi: bisection, with Newton's steps where they stay in the bracket. */
-static double refine(const double *c, int n, double lo, double hi, double flo)
-{
-	double x = 0.5 * (lo + hi);
-	for (int i = 0; i < 200; i++) {
-		double df, f = poly(c, n, x, &df);
-		if (f == 0)
-			return x;
-		if ((f < 0) == (flo < 0))
-			lo = x, flo = f;
-		else
-			hi = x;
-		double next = x - f / df;
-		if (!(next > lo && next < hi))
-			next = 0.5 * (lo + hi);
-		if (next == x || hi - lo <= 4 * DBL_EPSILON * fmax(fabs(lo), fabs(hi)))
-			return next;
-		x = next;
-	}
-	return x;
-}
-
-/* The roots of c (degree n, 1 to 4) in (a, b], in increasing order, found
- * between the roots of its derivative, where it is monotonic: none is lost,
- * a double root that does not cross zero aside. */
-static int roots_in(const double *c, int n, double a, double b, double *out)
-{
-	double d[4] = { 0 }, crit[4], ends[6];
-	int m = 0, k = 0;
-	if (n == 1) {
-		double x = -c[0] / c[1];
-		if (c[1] != 0 && x > a && x <= b)
-			out[k++] = x;
-		return k;
-	}
-	for (int i = 1; i <= n; i++)
-		d[i - 1] = i * c[i];
-	ends[m++] = a;
-	int nc = roots_in(d, n - 1, a, b, crit);
-	for (int i = 0; i < nc; i++)
-		if (crit[i] > ends[m - 1] && crit[i] < b)
-			ends[m++] = crit[i];
-	ends[m++] = b;
-	double flo = poly(c, n, a, NULL);
-	for (int i = 1; i < m; i++) {
-		double fhi = poly(c, n, ends[i], NULL);
-		if (fhi == 0)
-			out[k++] = ends[i];
-		else if (flo != 0 && (flo < 0) != (fhi < 0))
-			out[k++] = refine(c, n, ends[i - 1], ends[i], flo);
-		flo = fhi;
-	}
-	return k;
 }
 
 /* ---- the shape ---- */
@@ -127,8 +56,8 @@ static void trace(const scene *s, const scene_object *o, const double ro[3], con
 	double k1 = P[0] * P[0] + P[2] * P[2] + Py2 - R2 - r2, k2 = P[0] * D[0] + P[2] * D[2] + PDy;
 	double c[5] = { k1 * k1 + 4 * R2 * (Py2 - r2), 4 * (k2 * k1 + 2 * R2 * PDy),
 	                2 * (k1 + 2 * (k2 * k2 + R2 * D[1] * D[1])), 4 * k2, 1 };
-	double u[4];
-	if (roots_in(c, 4, 0, s1 - s0, u) == 0)
+	double u[1];
+	if (roots_find(c, 4, 0, s1 - s0, u, 1) == 0)
 		return;
 	double t = (s0 + u[0]) / len;
 	if (!(t > tmin && t < h->t))

@@ -139,6 +139,96 @@ static void make_disc(scene_object *o)
 	o->param[0] = uniform() < 0.5 ? 0 : between(0, 0.9) * o->radius;
 }
 
+/* The polynomial surfaces keep their coefficients in the scene: make_scene
+ * sets this before it calls a maker. */
+static scene *maker_scene;
+
+/* The index of x^i y^j z^k in POV-Ray's order (src/eval_poly.c). */
+static int term_index(int order, int i, int j, int k)
+{
+	int a = order - i, b = order - i - j, c = order - i - j - k;
+	return a * (a + 1) * (a + 2) / 6 + b * (b + 1) / 2 + c;
+}
+
+static double *new_poly(scene_object *o, int order)
+{
+	int n = (order + 1) * (order + 2) * (order + 3) / 6;
+	scene_poly pl = { .order = order, .c = calloc((size_t)n, sizeof(double)) };
+	o->param[0] = order;
+	o->poly = scene_add_poly(maker_scene, &pl);
+	return pl.c;
+}
+
+/* POV-Ray's torus as a quartic (shapesq.inc's form), a spindle one now and
+ * then: (x^2 + y^2 + z^2)^2 - 2 (R^2 + r^2)(x^2 + y^2 + z^2) + 4 R^2 y^2 + (R^2 - r^2)^2. */
+static void make_torus_quartic(double *c)
+{
+	double R = between(0.4, 0.8), r = uniform() < 0.2 ? between(0.8, 1.1) * R : between(0.1, 0.6) * R;
+	double k = -2 * (R * R + r * r);
+	c[term_index(4, 4, 0, 0)] = c[term_index(4, 0, 4, 0)] = c[term_index(4, 0, 0, 4)] = 1;
+	c[term_index(4, 2, 2, 0)] = c[term_index(4, 2, 0, 2)] = c[term_index(4, 0, 2, 2)] = 2;
+	c[term_index(4, 2, 0, 0)] = c[term_index(4, 0, 0, 2)] = k;
+	c[term_index(4, 0, 2, 0)] = k + 4 * R * R;
+	c[term_index(4, 0, 0, 0)] = (R * R - r * r) * (R * R - r * r);
+}
+
+/* Random numbers on every term of the order, small beside a closed surface
+ * x^n + y^n + z^n = 1 (n even) when closed is set. */
+static void make_random_poly(double *c, int order, bool closed)
+{
+	int n = (order + 1) * (order + 2) * (order + 3) / 6;
+	for (int i = 0; i < n; i++)
+		c[i] = uniform() < 0.5 ? between(-1, 1) * (closed ? 0.2 : 1) : 0;
+	if (closed) {
+		c[term_index(order, order, 0, 0)] = c[term_index(order, 0, order, 0)] = 1;
+		c[term_index(order, 0, 0, order)] = 1;
+		c[term_index(order, 0, 0, 0)] = -between(0.2, 0.8);
+	}
+}
+
+static void make_poly(scene_object *o)
+{
+	int order = 2 + (int)(uniform() * 5);   /* 2 to 6 */
+	make_random_poly(new_poly(o, order), order, order % 2 == 0 && uniform() < 0.7);
+	o->shape_flags = uniform() < 0.5 ? SHAPE_STURM : 0;
+}
+
+static void make_cubic(scene_object *o)
+{
+	make_random_poly(new_poly(o, 3), 3, false);
+}
+
+static void make_quartic(scene_object *o)
+{
+	double *c = new_poly(o, 4);
+	if (uniform() < 0.6)
+		make_torus_quartic(c);
+	else
+		make_random_poly(c, 4, uniform() < 0.5);
+	double u = uniform(), r[3] = { between(0.3, 1), between(0.3, 1), between(0.3, 1) };
+	if (u < 0.4) {   /* bounded_by a sphere or box of world space, which may cut it */
+		scene_poly *pl = &maker_scene->polys[o->poly];
+		pl->bound = u < 0.2 ? SCENE_BOUND_SPHERE : SCENE_BOUND_BOX;
+		pl->bound_xf = scene_xform_scale(r);
+	}
+}
+
+/* A few terms, up to order 6, beside x^n + y^n + z^n - k: a sparse random
+ * polynomial alone often factors with a square (x^2 y: the plane x = 0
+ * twice), a surface no ray crosses, which POV-Ray's solvers miss too. */
+static void make_polynomial(scene_object *o)
+{
+	int order = 2 + (int)(uniform() * 5);
+	double *c = new_poly(o, order);
+	make_random_poly(c, order, true);
+	for (int i = 0; i < (order + 1) * (order + 2) * (order + 3) / 6; i++)
+		if (uniform() < 0.7)
+			c[i] = 0;
+	c[term_index(order, order, 0, 0)] = c[term_index(order, 0, order, 0)] = 1;
+	c[term_index(order, 0, 0, order)] = 1;
+	c[term_index(order, 0, 0, 0)] = -between(0.2, 0.8);
+}
+
 static const struct maker {
 	const char *name;   /* the shape's keyword */
 	void (*make)(scene_object *o);
@@ -150,6 +240,10 @@ static const struct maker {
 	{ "cylinder", make_cylinder },
 	{ "cone", make_cone },
 	{ "disc", make_disc },
+	{ "poly", make_poly },
+	{ "cubic", make_cubic },
+	{ "quartic", make_quartic },
+	{ "polynomial", make_polynomial },
 };
 
 /* ---- scenes ---- */
@@ -191,6 +285,7 @@ static void make_scene(struct test_scene *ts, const struct maker *m, scene_shape
 		scene_object o = { .shape = kind, .xf = scene_xform_identity(), .material = scene_default_material(),
 		                   .mesh = -1, .loc = SRC_NOWHERE };
 		const char *bad;
+		maker_scene = &ts->sc;
 		do {   /* arguments the class accepts */
 			memset(o.p, 0, sizeof o.p);
 			memset(o.param, 0, sizeof o.param);
