@@ -269,6 +269,20 @@ static int compile(struct fcomp *c, const ast_node *n)
 
 /* The pool's function made from def, made now unless it was before. name: how
  * the scene calls it (for messages), use: where. */
+/* f_noise3d, internal(76): POV-Ray's Noise at (x, y, z) with its default
+ * noise_generator, 2 (eclat does not read global_settings' yet). */
+#define NOISE3D 76
+static int noise3d(struct eval *e, const ast_node *def, int *index)
+{
+	scene_function f = { .n_params = 3, .n_ops = 4, .loc = def->loc, .key = def };
+	f.ops = eval_xrealloc(NULL, 4 * sizeof *f.ops);
+	for (int i = 0; i < 3; i++)
+		f.ops[i] = (scene_fop){ FOP_PARAM, i, 0 };
+	f.ops[3] = (scene_fop){ FOP_NOISE3, 2, 0 };
+	*index = scene_add_function(e->s, &f);
+	return 0;
+}
+
 static int function_of(struct eval *e, const ast_node *def, const char *name, src_loc use, int depth, bool *skipped,
                        int *index)
 {
@@ -291,6 +305,8 @@ static int function_of(struct eval *e, const ast_node *def, const char *name, sr
 		int number;
 		if (call->n_kids != 1 || eval_expect_int(e, call->kids[0], &number))
 			return -1;
+		if (number == NOISE3D)
+			return noise3d(e, def, index);
 		const ast_node *written = eval_internal_function(number);
 		if (!written)
 			return unsupported(e, skipped, use, "'%s' is one of POV-Ray's internal functions (internal(%d)), "

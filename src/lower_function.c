@@ -74,6 +74,10 @@ static void statement(struct text *t, const scene *s, const scene_fop *o, int *s
 		put(t, "(real)(%.17g);\n", o->value);
 	} else if (o->op == FOP_PARAM) {
 		put(t, "p%d;\n", o->arg);
+	} else if (o->op == FOP_NOISE3) {
+		*top -= 3;
+		put(t, "(real)pattern_noise((float3)((float)t%d, (float)t%d, (float)t%d), %d);\n", stack[*top],
+		    stack[*top + 1], stack[*top + 2], o->arg);
 	} else if (o->op == FOP_CALL) {
 		int n = s->functions[o->arg].n_params;
 		*top -= n;

@@ -328,7 +328,7 @@ typedef struct {
 	X(ADD, 2)    X(SUB, 2)    X(MUL, 2)   X(DIV, 2)   X(LT, 2)    X(LE, 2) \
 	X(GT, 2)     X(GE, 2)     X(EQ, 2)    X(NE, 2)    X(AND, 2)   X(OR, 2) \
 	X(MIN, 2)    X(MAX, 2)    X(ATAN2, 2) X(POW, 2)   X(MOD, 2)   X(IDIV, 2) \
-	X(COND, 3)   X(SELECT3, 3) X(SELECT4, 4)
+	X(COND, 3)   X(SELECT3, 3) X(SELECT4, 4) X(NOISE3, 3)
 enum {
 #define X(name, arity) FOP_##name,
 	SCENE_FOPS(X)
@@ -336,7 +336,9 @@ enum {
 	FOP_COUNT
 };
 /* CONST pushes value; PARAM pushes parameter arg; CALL pops the callee's
- * parameters (the last on top) and pushes function arg's value for them. */
+ * parameters (the last on top) and pushes function arg's value for them;
+ * NOISE3 pops x, y, z and pushes POV-Ray's Noise there with noise_generator
+ * arg (f_noise3d). */
 typedef struct {
 	int op, arg;
 	double value;
@@ -417,6 +419,9 @@ int scene_add_function(scene *s, const scene_function *f);
 /* The value of function f for its parameters' values args, as the device computes it
  * but in double: the host's twin of the OpenCL that lowering writes. */
 double scene_function_eval(const scene *s, int f, const double *args);
+/* POV-Ray's Noise at p, in [0, 1], with noise_generator 1, 2 or 3, as
+ * kernels/pattern.cl's pattern_noise computes it, in float (scene_noise.c). */
+float scene_noise(const float p[3], int generator);
 /* An FOP_'s operand count and name ("add"). */
 int scene_fop_arity(int op);
 const char *scene_fop_name(int op);

@@ -120,10 +120,20 @@ static double c_more_fields(double x, double y, double z)
 	       fmin(10, fmax(3 * qcyl, -10)) + fmin(10, fmax(0.8 * witch, -10));
 }
 
+/* f_noise3d: the host's port of the device's noise (scene_noise), which
+ * test_pattern holds to POV-Ray's own images; here the device's and the
+ * host's runs of a function using it must agree. */
+static double c_noise(double x, double y, double z)
+{
+	float a[3] = { (float)(2 * x), (float)y, (float)(z - 1) }, b[3] = { (float)x, (float)y, (float)z };
+	return 0.5 * scene_noise(a, 2) + scene_noise(b, 2);
+}
+
 static const struct {
 	const char *name, *body;
 	double (*c)(double, double, double);
 } cases[] = {
+	{ "f_noise3d", "f_noise3d(2 * x, y, z - 1) * 0.5 + f_noise3d(x, y, z)", c_noise },
 	{ "f_flange_cover, f_mitre, f_paraboloid, f_quartic_cylinder, f_witch_of_agnesi",
 	  "f_flange_cover(x, y, z, 2, 3, 0.5, 1.2) + f_mitre(x, y, z, 2) + f_paraboloid(x, y, z, 1.5)"
 	  " + f_quartic_cylinder(x, y, z, 3, 0.3, 0.4) + f_witch_of_agnesi(x, y, z, 0.8, 0.6)", c_more_fields },
@@ -183,7 +193,7 @@ static char *scene_text(size_t *len)
 	                                        "f_r 57", "f_rounded_box 60", "f_sphere 61", "f_superellipsoid 68",
 	                                        "f_th 69", "f_torus 70", "f_torus2 71", "f_flange_cover 19",
 	                                        "f_mitre 41", "f_paraboloid 45", "f_quartic_cylinder 56",
-	                                        "f_witch_of_agnesi 74" };
+	                                        "f_witch_of_agnesi 74", "f_noise3d 76" };
 	for (size_t i = 0; i < sizeof internal / sizeof *internal; i++) {   /* as functions.inc declares them */
 		char name[32];
 		int n;

@@ -1,0 +1,105 @@
+/* scene_noise.c: POV-Ray's Noise on the host, for the host's run of the
+ * scene's functions (f_noise3d in scene_function_eval): kernels/pattern.cl's
+ * pattern_noise step for step, in float as the device computes it, over the
+ * same tables (kernels/pattern_tables.cl, included here as C). */
+#include <math.h>
+
+#include "scene.h"
+
+typedef unsigned short ushort;
+#define constant static const
+#include "../kernels/pattern_tables.cl"
+#undef constant
+
+static float mixf(float a, float b, float t)   /* OpenCL's mix */
+{
+	return a + (b - a) * t;
+}
+
+static float clampf(float v, float lo, float hi)
+{
+	return v < lo ? lo : v > hi ? hi : v;
+}
+
+static int lattice(float floor_x)
+{
+	return ((int)floor_x + 10000) & 0xfff;
+}
+
+static int corner(int hxy, int iz)
+{
+	return pattern_hash[(hxy ^ iz) & 0xfff] & 0xff;
+}
+
+static float incr(int k, float s, float x, float y, float z)
+{
+	return s * (0.5f * pattern_rtable[k] + pattern_rtable[k + 1] * x + pattern_rtable[k + 2] * y +
+	            pattern_rtable[k + 3] * z);
+}
+
+static float grad_at(int b, float rx, float ry, float rz)
+{
+	const float *g = &pattern_grad[3 * (b & 2047)];
+	return g[0] * rx + g[1] * ry + g[2] * rz;
+}
+
+/* noise_generator 3: Perlin's gradient noise (pattern_solid_noise). */
+static float solid_noise(const float p[3])
+{
+	const float roll = 0.023157213f;
+	float t[3], f[3], r0[3], r1[3], s[3];
+	int b0[3], b1[3];
+	for (int k = 0; k < 3; k++) {
+		t[k] = p[k] + roll;
+		f[k] = floorf(t[k]);
+		r0[k] = t[k] - f[k];
+		r1[k] = r0[k] - 1.0f;
+		b0[k] = ((int)f[k] + 1664) & 2047;
+		b1[k] = (b0[k] + 1) & 2047;
+		s[k] = r0[k] * r0[k] * (3.0f - 2.0f * r0[k]);
+	}
+	int i = pattern_perm[b0[0]], j = pattern_perm[b1[0]];
+	int b00 = pattern_perm[(i + b0[1]) & 2047], b10 = pattern_perm[(j + b0[1]) & 2047];
+	int b01 = pattern_perm[(i + b1[1]) & 2047], b11 = pattern_perm[(j + b1[1]) & 2047];
+	float a = mixf(grad_at(b00 + b0[2], r0[0], r0[1], r0[2]), grad_at(b10 + b0[2], r1[0], r0[1], r0[2]), s[0]);
+	float b = mixf(grad_at(b01 + b0[2], r0[0], r1[1], r0[2]), grad_at(b11 + b0[2], r1[0], r1[1], r0[2]), s[0]);
+	float c = mixf(a, b, s[1]);
+	a = mixf(grad_at(b00 + b1[2], r0[0], r0[1], r1[2]), grad_at(b10 + b1[2], r1[0], r0[1], r1[2]), s[0]);
+	b = mixf(grad_at(b01 + b1[2], r0[0], r1[1], r1[2]), grad_at(b11 + b1[2], r1[0], r1[1], r1[2]), s[0]);
+	float d = mixf(a, b, s[1]);
+	return mixf(c, d, s[2]);
+}
+
+float scene_noise(const float p[3], int generator)
+{
+	if (generator == 3)
+		return clampf(0.5f * (1.59f * solid_noise(p) + 0.985f), 0.0f, 1.0f);
+	float f0[3], f1[3], s[3], t[3];
+	int l[3];
+	for (int k = 0; k < 3; k++) {
+		float fl = floorf(p[k]);
+		f0[k] = p[k] - fl;
+		f1[k] = f0[k] - 1.0f;
+		l[k] = lattice(fl);
+		s[k] = f0[k] * f0[k] * (3.0f - 2.0f * f0[k]);
+		t[k] = 1.0f - s[k];
+	}
+	int ix = l[0], iy = l[1], iz = l[2];
+	int h00 = pattern_hash[(pattern_hash[ix] ^ iy) & 0xfff];
+	int h10 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ iy) & 0xfff];
+	int h01 = pattern_hash[(pattern_hash[ix] ^ (iy + 1)) & 0xfff];
+	int h11 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ (iy + 1)) & 0xfff];
+	float sum = incr(corner(h00, iz), t[0] * t[1] * t[2], f0[0], f0[1], f0[2]) +
+	            incr(corner(h10, iz), s[0] * t[1] * t[2], f1[0], f0[1], f0[2]) +
+	            incr(corner(h01, iz), t[0] * s[1] * t[2], f0[0], f1[1], f0[2]) +
+	            incr(corner(h11, iz), s[0] * s[1] * t[2], f1[0], f1[1], f0[2]) +
+	            incr(corner(h00, iz + 1), t[0] * t[1] * s[2], f0[0], f0[1], f1[2]) +
+	            incr(corner(h10, iz + 1), s[0] * t[1] * s[2], f1[0], f0[1], f1[2]) +
+	            incr(corner(h01, iz + 1), t[0] * s[1] * s[2], f0[0], f1[1], f1[2]) +
+	            incr(corner(h11, iz + 1), s[0] * s[1] * s[2], f1[0], f1[1], f1[2]);
+	if (generator == 2)
+		sum = (sum + 1.05242f) * 0.48985582f;
+	else
+		sum += 0.5f;
+	return clampf(sum, 0.0f, 1.0f);
+}
