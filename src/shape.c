@@ -80,3 +80,13 @@ xform shape_coordinate_xform(const double origin[3], const double up[3], double 
 	}
 	return t;
 }
+
+void shape_unbounded(const scene *s, const scene_object *o, double lo[3], double hi[3])
+{
+	(void)s;
+	(void)o;
+	for (int k = 0; k < 3; k++) {
+		lo[k] = -1e10;
+		hi[k] = 1e10;
+	}
+}

@@ -70,6 +70,9 @@ const shape_class *shape_named(const char *name, scene_shape *kind);
 /* ---- helpers the shape files share (shape.c) ---- */
 
 void shape_grow_box(double lo[3], double hi[3], const double p[3]);
+/* The bounds of a shape with none (a plane, a quadric, a poly): +-1e10, as POV-Ray
+ * gives them. */
+void shape_unbounded(const scene *s, const scene_object *o, double lo[3], double hi[3]);
 /* Grows [lo, hi] by the world image of the box [a, b] of object space. */
 void shape_grow_xformed_box(const xform *xf, const double a[3], const double b[3], double lo[3], double hi[3]);
 /* A unit vector and two more making a right-handed orthonormal frame with it. */

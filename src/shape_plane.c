@@ -20,16 +20,6 @@ static const char *check(const scene_object *o)
 	return unit_normal(o, n) > 0 ? NULL : "a plane needs a normal that is not zero";
 }
 
-static void bounds(const scene *s, const scene_object *o, double lo[3], double hi[3])
-{
-	(void)s;
-	(void)o;
-	for (int k = 0; k < 3; k++) {   /* unbounded, as POV-Ray says */
-		lo[k] = -1e10;
-		hi[k] = 1e10;
-	}
-}
-
 static void trace(const scene *s, const scene_object *o, const double ro[3], const double rd[3], double tmin,
                   shape_hit *h)
 {
@@ -93,5 +83,5 @@ static void dump(FILE *out, const scene_object *o)
 
 const shape_class shape_plane = {
 	.name = "plane", .args = "vf", .needs = "a normal and a distance",
-	.check = check, .bounds = bounds, .trace = trace, .inside = inside, .lower = lower, .dump = dump,
+	.check = check, .bounds = shape_unbounded, .trace = trace, .inside = inside, .lower = lower, .dump = dump,
 };

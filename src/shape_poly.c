@@ -172,16 +172,6 @@ static bool ray_in_bound(int kind, const double P[3], const double D[3])
 	return near <= far && far >= 0;
 }
 
-static void bounds(const scene *s, const scene_object *o, double lo[3], double hi[3])
-{
-	(void)s;
-	(void)o;
-	for (int k = 0; k < 3; k++) {   /* unbounded, as POV-Ray says */
-		lo[k] = -1e10;
-		hi[k] = 1e10;
-	}
-}
-
 static void trace(const scene *s, const scene_object *o, const double ro[3], const double rd[3], double tmin,
                   shape_hit *h)
 {
@@ -250,7 +240,7 @@ static int lower(struct lowering *lw, const scene *s, const scene_object *o, int
 		lower_add_data(lw, (float4){ h0, l0, h1, l1 });
 	}
 	double lo[3], hi[3];
-	bounds(s, o, lo, hi);
+	shape_unbounded(s, o, lo, hi);
 	lower_add_prim(lw, p, mat, id, lo, hi);
 	return 0;
 }
@@ -264,7 +254,7 @@ static void dump(FILE *out, const scene_object *o)
 }
 
 #define POLY_CLASS(kw, what) \
-	{ .name = kw, .args = NULL, .needs = what, .flags = SHAPE_STURM, .bounds = bounds, .trace = trace, \
+	{ .name = kw, .args = NULL, .needs = what, .flags = SHAPE_STURM, .bounds = shape_unbounded, .trace = trace, \
 	  .inside = inside, .lower = lower, .dump = dump }
 
 const shape_class shape_poly = POLY_CLASS("poly", "an order and its coefficients");

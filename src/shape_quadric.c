@@ -36,16 +36,6 @@ static void gradient(const double q[10], const double p[3], double n[3])
 		n[0] = 1;   /* POV-Ray's choice where the normal is undefined */
 }
 
-static void bounds(const scene *s, const scene_object *o, double lo[3], double hi[3])
-{
-	(void)s;
-	(void)o;
-	for (int k = 0; k < 3; k++) {   /* unbounded, as POV-Ray says */
-		lo[k] = -1e10;
-		hi[k] = 1e10;
-	}
-}
-
 /* The quadratic a t^2 + 2 b t + c along the ray, as POV-Ray's Intersect. */
 static void trace(const scene *s, const scene_object *o, const double ro[3], const double rd[3], double tmin,
                   shape_hit *h)
@@ -105,7 +95,7 @@ static int lower(struct lowering *lw, const scene *s, const scene_object *o, int
 	lower_add_data(lw, (float4){ (float)q[3], (float)q[4], (float)q[5], 0 });
 	lower_add_data(lw, (float4){ (float)q[6], (float)q[7], (float)q[8], 0 });
 	double lo[3], hi[3];
-	bounds(s, o, lo, hi);
+	shape_unbounded(s, o, lo, hi);
 	lower_add_prim(lw, p, mat, id, lo, hi);
 	return 0;
 }
@@ -123,5 +113,5 @@ static void dump(FILE *out, const scene_object *o)
 
 const shape_class shape_quadric = {
 	.name = "quadric", .args = "vvvf", .needs = "three vectors and a constant",
-	.bounds = bounds, .trace = trace, .inside = inside, .lower = lower, .dump = dump,
+	.bounds = shape_unbounded, .trace = trace, .inside = inside, .lower = lower, .dump = dump,
 };
