@@ -71,7 +71,8 @@ typedef struct {
 	X(TORUS, torus) \
 	X(SUPERELLIPSOID, superellipsoid) \
 	X(ISOSURFACE, isosurface) \
-	X(POLY, poly)
+	X(POLY, poly) \
+	X(BLOB, blob)
 #define PRIM_ENUM_ROW(NAME, name) PRIM_##NAME,
 enum {
 	PRIM_SHAPES(PRIM_ENUM_ROW)
@@ -107,6 +108,10 @@ enum { PRISM_OPEN = 1, PRISM_FLAT = 2, PRISM_CONIC = 4 };
  *   record's a.x + a.y is 2/E, a.z + a.w 2/N (kernels/shape_superellipsoid.cl).
  * Isosurface: the map to its own space; three records: its container, function,
  *   threshold, accuracy, max_gradient, max_trace and flags (kernels/shape_isosurface.cl).
+ * Blob: the map to its own space; its first record's a.x is its number of
+ *   components, a.y its threshold; each component then two records: a.xyz one
+ *   end (the centre) and a.w the radius, a.xyz the other end and a.w the
+ *   strength (kernels/shape_blob.cl).
  * Poly (poly, cubic, quartic, polynomial): the map to its own space; its first
  *   record's a.x is its order, and the records after it hold its coefficients
  *   in POV-Ray's order, two in each a, each as a float and the float of what

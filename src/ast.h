@@ -299,6 +299,7 @@ enum kw_class {
 #define AST_WORD_FLIP "flip"
 #define AST_WORD_BLACK_HOLE "black_hole"
 #define AST_WORD_STRENGTH "strength"
+#define AST_WORD_HIERARCHY "hierarchy"
 #define AST_WORD_BUMP_SIZE "bump_size"
 #define AST_WORD_ACCURACY "accuracy"
 #define AST_WORD_SLOPE_MAP "slope_map"
@@ -354,6 +355,10 @@ enum kw_class {
 #define AST_WORD_EVALUATE "evaluate"
 /* a term of polynomial { Order, xyz(I, J, K): C ... } (eval_poly.c) */
 #define AST_WORD_XYZ "xyz"
+/* blob { } (eval_blob.c) */
+#define AST_WORD_BLOB "blob"
+#define AST_WORD_COMPONENT "component"
+#define AST_WORD_STRENGTH "strength"
 
 enum ast_keyword {
 	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */

@@ -283,6 +283,14 @@ int eval_function_index(struct eval *e, const ast_node *def, const char *instead
 /* POV-Ray's internal function number (functions.inc's internal(N)) written in
  * POV-Ray's language, or NULL when eclat has not written it (eval_internal.c). */
 const ast_node *eval_internal_function(int number);
+/* A word of POV-Ray's that is no keyword of eclat's parser (threshold,
+ * component...): its name, or NULL. "threshold -0.2" reaches the evaluator as
+ * threshold - 0.2: then *negated is the number after it (eval_isosurface.c). */
+const char *eval_word_item(const ast_node *n, const ast_node **negated);
+/* The float after such a word at: minus *negated's value, or the next item's. */
+int eval_word_float(struct eval *e, struct cursor *c, const ast_node *at, const ast_node *negated, double *f);
+/* blob { }'s own items (eval_blob.c). */
+int eval_blob_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 /* isosurface { }'s own items, up to its object modifiers (eval_isosurface.c). */
 int eval_isosurface_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 /* Evaluates a function's body with its parameters (names, or the definition's

@@ -14,9 +14,7 @@ static const char *word(const ast_node *n)
 	return n->kind == AST_IDENT ? n->str : NULL;
 }
 
-/* "threshold -0.2" reaches here as threshold - 0.2: these words are no
- * keywords of eclat's parser. The word, with *negated the number after it. */
-static const char *negated_word(const ast_node *n, const ast_node **negated)
+const char *eval_word_item(const ast_node *n, const ast_node **negated)
 {
 	*negated = NULL;
 	if (n->kind == AST_BINARY && n->op == '-' && n->kids[0]->kind == AST_IDENT) {
@@ -26,7 +24,7 @@ static const char *negated_word(const ast_node *n, const ast_node **negated)
 	return word(n);
 }
 
-static int next_float(struct eval *e, struct cursor *c, const ast_node *at, const ast_node *negated, double *f)
+int eval_word_float(struct eval *e, struct cursor *c, const ast_node *at, const ast_node *negated, double *f)
 {
 	if (negated) {
 		int rc = eval_expect_float(e, negated, f);
@@ -102,18 +100,18 @@ int eval_isosurface_arguments(struct eval *e, struct cursor *c, const ast_node *
 	o->param[3] = 1;      /* max_trace */
 	while ((item = eval_next(c, &err)) != NULL) {
 		const ast_node *neg;
-		const char *w = negated_word(item, &neg);
+		const char *w = eval_word_item(item, &neg);
 		if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_CONTAINED_BY) == 0) {
 			rc = contained_by(e, item, o);
 		} else if (w && strcmp(w, AST_WORD_THRESHOLD) == 0) {
-			rc = next_float(e, c, item, neg, &o->param[0]);
+			rc = eval_word_float(e, c, item, neg, &o->param[0]);
 		} else if (w && strcmp(w, AST_WORD_ACCURACY) == 0) {
-			rc = next_float(e, c, item, neg, &o->param[1]);
+			rc = eval_word_float(e, c, item, neg, &o->param[1]);
 		} else if (w && strcmp(w, AST_WORD_MAX_GRADIENT) == 0) {
-			rc = next_float(e, c, item, neg, &o->param[2]);
+			rc = eval_word_float(e, c, item, neg, &o->param[2]);
 		} else if (w && strcmp(w, AST_WORD_MAX_TRACE) == 0) {
 			double n;
-			rc = next_float(e, c, item, neg, &n);
+			rc = eval_word_float(e, c, item, neg, &n);
 			if (rc == 0 && !(n >= 1 && n < MAX_TRACE + 1)) {
 				eval_error(e, item->loc, "isosurface max_trace is 1 to %d, not %g", MAX_TRACE, n);
 				rc = -1;
@@ -125,12 +123,12 @@ int eval_isosurface_arguments(struct eval *e, struct cursor *c, const ast_node *
 			o->shape_flags |= SHAPE_OPEN;
 		} else if (w && strcmp(w, AST_WORD_POLARITY) == 0) {
 			double p;
-			rc = next_float(e, c, item, neg, &p);
+			rc = eval_word_float(e, c, item, neg, &p);
 			o->n[0][1] = p > 0;
 		} else if (w && strcmp(w, AST_WORD_EVALUATE) == 0) {
 			double v[3];
 			for (int i = 0; i < 3 && rc == 0; i++)
-				rc = next_float(e, c, item, i == 0 ? neg : NULL, &v[i]);
+				rc = eval_word_float(e, c, item, i == 0 ? neg : NULL, &v[i]);
 			if (rc == 0)
 				eval_warn_once(e, item->loc, "isosurface evaluate", "isosurface 'evaluate' is not supported yet; "
 				               "max_gradient is used as written");

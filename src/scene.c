@@ -155,6 +155,14 @@ int scene_add_poly(scene *s, const scene_poly *p)
 	return s->n_polys++;
 }
 
+int scene_add_blob(scene *s, const scene_blob *b)
+{
+	if (s->n_blobs == s->cap_blobs)
+		s->blobs = grow(s->blobs, &s->cap_blobs, sizeof *b);
+	s->blobs[s->n_blobs] = *b;
+	return s->n_blobs++;
+}
+
 int scene_add_pigment(scene *s, const scene_pigment *p)
 {
 	if (s->n_pigments == s->cap_pigments)
@@ -215,6 +223,9 @@ void scene_free(scene *s)
 		free(s->outlines[i].glyph);
 	}
 	free(s->outlines);
+	for (int i = 0; i < s->n_blobs; i++)
+		free(s->blobs[i].part);
+	free(s->blobs);
 	for (int i = 0; i < s->n_polys; i++)
 		free(s->polys[i].c);
 	free(s->polys);

@@ -164,7 +164,8 @@ typedef struct {
 	X(POLY, poly) \
 	X(CUBIC, cubic) \
 	X(QUARTIC, quartic) \
-	X(POLYNOMIAL, polynomial)
+	X(POLYNOMIAL, polynomial) \
+	X(BLOB, blob)
 #define SCENE_SHAPE_ENUM_ROW(NAME, name) SHAPE_##NAME,
 typedef enum { SCENE_SHAPES(SCENE_SHAPE_ENUM_ROW) SHAPE_KINDS } scene_shape;
 
@@ -189,7 +190,8 @@ typedef struct {
 	int mesh;
 	int outline;         /* polygon, prism, text: an index into scene.outlines */
 	int function;        /* isosurface: its function (scene.functions), -1 for none */
-	int poly;            /* poly, cubic, quartic, polynomial: an index into scene.polys */
+	int poly;            /* poly, cubic, quartic, polynomial: an index into scene.polys;
+	                      * blob: into scene.blobs */
 	xform xf;            /* object to world */
 	scene_material material;
 	bool textured;       /* false: takes the texture of an enclosing union, else the default */
@@ -232,6 +234,20 @@ typedef struct {
 	xform bound_xf;
 } scene_poly;
 enum { SCENE_BOUND_NONE, SCENE_BOUND_SPHERE, SCENE_BOUND_BOX };
+
+/* A blob's components (src/shape_blob.c), in the blob's space: each a sphere
+ * (a == b) or a cylinder from a to b with hemispherical caps, of radius r and
+ * strength s, whose field is s (1 - d^2/r^2)^2 within r of its centre or axis
+ * (d the distance); the surface is where the fields add up to threshold.
+ * Shared by every copy. */
+typedef struct {
+	double a[3], b[3], r, s;
+} scene_blob_part;
+typedef struct {
+	double threshold;
+	scene_blob_part *part;
+	int n_parts;
+} scene_blob;
 
 /* The edges of a polygon, prism or text in their plane (src/prism.h), each
  * oriented so that the shape's inside is on its left: (x0, z0) to (x1, z1).
@@ -369,6 +385,8 @@ typedef struct {
 	int n_functions, cap_functions, n_fops;
 	scene_outline *outlines;
 	int n_outlines, cap_outlines;
+	scene_blob *blobs;
+	int n_blobs, cap_blobs;
 	scene_poly *polys;
 	int n_polys, cap_polys;
 	scene_pigment *pigments;   /* the pattern pigments' pool, scene_material.pattern */
@@ -429,6 +447,8 @@ const char *scene_fop_name(int op);
 int scene_add_outline(scene *s, const scene_outline *o);
 /* Takes ownership of p's coefficients; returns its index. */
 int scene_add_poly(scene *s, const scene_poly *p);
+/* Takes ownership of b's parts; returns its index. */
+int scene_add_blob(scene *s, const scene_blob *b);
 void scene_free(scene *s);
 /* Frees a mesh's arrays (those of a mesh not added to a scene: scene_free frees
  * the scene's own). */

@@ -193,6 +193,26 @@ static void make_poly(scene_object *o)
 	o->shape_flags = uniform() < 0.5 ? SHAPE_STURM : 0;
 }
 
+/* Two to six components, spheres and cylinders, a negative one now and then,
+ * overlapping about the unit cube. */
+static void make_blob(scene_object *o)
+{
+	scene_blob bl = { .threshold = between(0.2, 0.8) };
+	bl.n_parts = 2 + (int)(uniform() * 5);
+	bl.part = calloc((size_t)bl.n_parts, sizeof *bl.part);
+	for (int j = 0; j < bl.n_parts; j++) {
+		scene_blob_part *p = &bl.part[j];
+		random_point(p->a, 0.7);
+		if (uniform() < 0.4)
+			random_point(p->b, 0.7);
+		else
+			memcpy(p->b, p->a, sizeof p->a);
+		p->r = between(0.3, 0.9);
+		p->s = uniform() < 0.15 ? -between(0.2, 1) : between(0.5, 1.5);
+	}
+	o->poly = scene_add_blob(maker_scene, &bl);
+}
+
 static void make_cubic(scene_object *o)
 {
 	make_random_poly(new_poly(o, 3), 3, false);
@@ -244,6 +264,7 @@ static const struct maker {
 	{ "cubic", make_cubic },
 	{ "quartic", make_quartic },
 	{ "polynomial", make_polynomial },
+	{ "blob", make_blob },
 };
 
 /* ---- scenes ---- */
