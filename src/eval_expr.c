@@ -932,7 +932,9 @@ static int builtin(struct eval *e, const ast_node *n, value *out)
 		return extent(e, n, out);
 	case KW_TRACE:
 		return eval_trace(e, n, out);
-	case KW_INSIDE: case KW_VTURBULENCE:
+	case KW_INSIDE:
+		return eval_inside(e, n, out);
+	case KW_VTURBULENCE:
 		eval_error(e, n->loc, "%s() is not supported yet", ast_keyword_name(n->kw));
 		return -1;
 	default: {

@@ -221,6 +221,8 @@ int eval_spline_call(struct eval *e, const ast_node *call, const value *spl, val
 
 /* trace(OBJECT, <Start>, <Direction> [, NORMAL]) (eval_trace.c) */
 int eval_trace(struct eval *e, const ast_node *call, value *out);
+/* inside(OBJECT, <Point>): 1 or 0 (eval_trace.c) */
+int eval_inside(struct eval *e, const ast_node *call, value *out);
 
 /* The arguments of a shape whose class has no args string (polygon, prism,
  * text: eval_outline.c), into o; -1 after an error. */

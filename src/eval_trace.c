@@ -1,4 +1,5 @@
-/* eval_trace.c: POV-Ray's trace() on the host, while the scene is evaluated.
+/* eval_trace.c: POV-Ray's trace() and inside() on the host, while the scene is
+ * evaluated.
  *
  *   trace(OBJECT, <Start>, <Direction> [, NORMAL_IDENTIFIER])
  *
@@ -7,7 +8,12 @@
  * both are <0, 0, 0>, as in POV-Ray. Scenes use it to put things on surfaces.
  * Each shape of the object is hit in its own object space (the ray taken there
  * by the inverse of its transform, which keeps the ray's parameter) by its
- * class's trace (src/shape.h). */
+ * class's trace (src/shape.h).
+ *
+ *   inside(OBJECT, <Point>)
+ *
+ * is 1 where the point is inside the object (any of its shapes; a CSG object
+ * by its program over its leaves' inside tests, as kernels/csg.cl), else 0. */
 #include <math.h>
 #include <string.h>
 
@@ -118,6 +124,19 @@ static int trace_object(const scene *sc, const struct objval *obj, const double 
 	return 1;
 }
 
+/* The same object read for both functions: the object, or -1 after an error. */
+static int object_arg(struct eval *e, const ast_node *n, const char *fn, value *v)
+{
+	if (AST_IS_EXPRESSION(n->kind) ? eval_expect_kind(e, n, V_OBJECT, v) : eval_block_value(e, n, v))
+		return -1;
+	if (v->kind != V_OBJECT) {
+		eval_error(e, n->loc, "%s() needs an object, not %s", fn, eval_kind_name(v->kind));
+		eval_value_free(v);
+		return -1;
+	}
+	return 0;
+}
+
 int eval_trace(struct eval *e, const ast_node *n, value *out)
 {
 	if (n->n_kids < 3 || n->n_kids > 4) {
@@ -130,14 +149,8 @@ int eval_trace(struct eval *e, const ast_node *n, value *out)
 	}
 	value v;
 	double o[3], d[3], point[3] = { 0, 0, 0 }, normal[3] = { 0, 0, 0 };
-	if (AST_IS_EXPRESSION(n->kids[0]->kind) ? eval_expect_kind(e, n->kids[0], V_OBJECT, &v)
-	                                         : eval_block_value(e, n->kids[0], &v))
+	if (object_arg(e, n->kids[0], "trace", &v))
 		return -1;
-	if (v.kind != V_OBJECT) {
-		eval_error(e, n->kids[0]->loc, "trace() needs an object, not %s", eval_kind_name(v.kind));
-		eval_value_free(&v);
-		return -1;
-	}
 	if (eval_expect_vector(e, n->kids[1], o) || eval_expect_vector(e, n->kids[2], d)) {
 		eval_value_free(&v);
 		return -1;
@@ -157,5 +170,45 @@ int eval_trace(struct eval *e, const ast_node *n, value *out)
 	if (n->n_kids == 4)
 		eval_assign(e, n->kids[3]->str, eval_vector3(normal), false);
 	*out = eval_vector3(point);
+	return 0;
+}
+
+int eval_inside(struct eval *e, const ast_node *n, value *out)
+{
+	if (n->n_kids != 2) {
+		eval_error(e, n->loc, "inside() takes an object and a point");
+		return -1;
+	}
+	value v;
+	double p[3];
+	if (object_arg(e, n->kids[0], "inside", &v))
+		return -1;
+	if (eval_expect_vector(e, n->kids[1], p)) {
+		eval_value_free(&v);
+		return -1;
+	}
+	if (v.obj->unsupported && !e->opt->skip_unsupported) {
+		eval_error(e, n->kids[0]->loc, "inside() of a '%s', which is not supported yet", v.obj->unsupported);
+		eval_value_free(&v);
+		return -1;
+	}
+	const struct objval *obj = v.obj;
+	bool in = false;
+	for (int i = 0; i < obj->n_objs && !in;) {
+		const struct objcsg *g = NULL;
+		for (int k = 0; k < obj->n_csgs; k++)
+			if (obj->csgs[k].first == i)
+				g = &obj->csgs[k];
+		struct leaves c = { e->s, &obj->objs[i], { p[0], p[1], p[2] } };
+		if (g) {
+			in = csg_inside(g->ops, g->n_ops, leaf_inside, &c);
+			i += g->n_leaves;
+		} else {
+			in = !obj->objs[i].clip && leaf_inside(&c, 0);
+			i++;
+		}
+	}
+	eval_value_free(&v);
+	*out = eval_float(in ? 1 : 0);
 	return 0;
 }
