@@ -141,6 +141,7 @@ struct camera_items {
 	double sky[3], look_at[3], angle[2];
 	double dir_length;       /* POV-Ray's Direction_Length, the default focal distance */
 	bool has_look_at, has_up, has_right, has_focal_point;
+	bool declared;           /* it starts from a declared camera, already finished */
 	int n_angles;            /* the numbers after angle: 0, 1 or 2 */
 	src_loc angle_loc[2];
 	xform t;
@@ -253,6 +254,7 @@ static int camera_item(struct eval *e, struct cursor *c, const ast_node *item, s
 		if (eval_expect_kind(e, item, V_CAMERA, &v))
 			return -1;
 		ci->c = *v.cam;
+		ci->declared = true;
 		eval_value_free(&v);
 		return 0;
 	}
@@ -314,6 +316,8 @@ static void orthographic_area(struct camera_items *ci)
 	scene_camera *c = &ci->c;
 	if (c->type != CAMERA_ORTHOGRAPHIC || ((ci->has_up || ci->has_right) && ci->n_angles == 0))
 		return;
+	if (ci->declared && !ci->has_look_at && ci->n_angles == 0)
+		return;   /* a declared camera's area is made: camera { C } must not grow it again */
 	double at[3] = { 0, 0, 1 }, k1 = 0, k2 = 0;
 	if (ci->has_look_at)
 		memcpy(at, ci->look_at, sizeof at);
