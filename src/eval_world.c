@@ -632,10 +632,11 @@ static int background(struct eval *e, const ast_node *b)
 	return 0;
 }
 
-/* sky_sphere { [SKY_SPHERE_IDENTIFIER] [PIGMENT...] [emission COLOR] [TRANSFORMATIONS...] }:
- * eclat's sky is one colour, the average of the first pigment. */
 /* sky_sphere { [SKY_SPHERE_IDENTIFIER] [PIGMENT...] [emission COLOR]
- *              [TRANSFORMATION...] }: its layers go to the scene (sky_layers). */
+ *              [TRANSFORMATION...] }: its layers go to the scene (sky_layers).
+ * Its value keeps them too, in the pool scene.textures (v[0] the first, v[1]
+ * how many): an include file declares several skies, and a scene's
+ * sky_sphere { S } takes S's layers, not the last declared's. */
 static int sky_sphere(struct eval *e, const ast_node *b, value *out)
 {
 	struct cursor c;
@@ -652,10 +653,10 @@ static int sky_sphere(struct eval *e, const ast_node *b, value *out)
 		if (AST_IS_EXPRESSION(item->kind) && pigments == 0) {
 			if ((rc = eval_expr(e, item, &v)) == 0 && (v.kind != V_OTHER || strcmp(v.str, "sky_sphere") != 0))
 				rc = eval_not_valid(e, item, "a sky_sphere");
-			else if (rc == 0 && s->n_sky_layers) {   /* the declared sky's layers, then this one's */
-				pigments = s->n_sky_layers;
+			else if (rc == 0 && v.v[1] > 0) {   /* the declared sky's layers, then this one's */
+				pigments = (int)v.v[1];
 				layers = eval_xrealloc(NULL, pigments * sizeof *layers);
-				memcpy(layers, s->sky_layers, pigments * sizeof *layers);
+				memcpy(layers, &s->textures[(int)v.v[0]], pigments * sizeof *layers);
 				sky_xf = layers[0].tex_xf;
 				memcpy(emission, layers[0].emission, sizeof emission);
 			}
@@ -692,9 +693,12 @@ static int sky_sphere(struct eval *e, const ast_node *b, value *out)
 		s->sky_layers[i].tex_xf = sky_xf;
 		memcpy(s->sky_layers[i].emission, emission, sizeof emission);
 	}
+	int first = s->n_textures;
+	for (int i = 0; i < pigments; i++)
+		scene_add_texture(s, &s->sky_layers[i]);
 	if (pigments)
 		m = s->sky_layers[pigments - 1];
-	*out = (value){ .kind = V_OTHER, .str = eval_xstrdup("sky_sphere"), .mat = m };
+	*out = (value){ .kind = V_OTHER, .str = eval_xstrdup("sky_sphere"), .mat = m, .v = { first, pigments } };
 	return 0;
 }
 
