@@ -1416,6 +1416,8 @@ void eval_place(struct eval *e, value *v)
 		eval_poly_bound(e, &o->objs[0], o->bound);
 	for (int i = 0; i < o->n_objs; i++) {
 		o->objs[i].csg = 0;
+		if (!o->objs[i].textured)   /* POV-Ray's Post_Process: the default when it is placed */
+			o->objs[i].material = e->default_mat;
 		scene_add_object(e->s, &o->objs[i]);
 	}
 	for (int i = 0; i < o->n_csgs; i++) {
