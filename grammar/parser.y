@@ -160,7 +160,10 @@ function:
 	T_FUNCTION '{' items '}'      { $$ = ast_op(AST_FUNCTION, L(@1), 0, LIST("params", @1), NAMED("body", $3)); }
 	| T_FUNCTION T_NUMBER ',' T_NUMBER '{' items '}'
 	                              { $$ = ast_op(AST_FUNCTION, L(@1), 0, LIST("params", @1), NAMED("body", $6));
-	                                /* an image of Width, Height pixels: read, not evaluated */ }
+	                                /* a height_field's image of Width, Height pixels: the
+	                                 * sizes are a third kid, "size" */
+	                                ast_append($$, ast_append(ast_append(LIST("size", @2),
+	                                           ast_number(L(@2), $2)), ast_number(L(@4), $4))); }
 	| T_FUNCTION '(' params ')' '{' items '}'
 	                              { $$ = ast_op(AST_FUNCTION, L(@1), 0, $3, NAMED("body", $6)); }
 	;

@@ -300,6 +300,10 @@ enum kw_class {
 #define AST_WORD_BLACK_HOLE "black_hole"
 #define AST_WORD_STRENGTH "strength"
 #define AST_WORD_HIERARCHY "hierarchy"
+/* height_field { } (eval_hfield.c) */
+#define AST_WORD_HEIGHT_FIELD "height_field"
+#define AST_WORD_SMOOTH "smooth"
+#define AST_WORD_WATER_LEVEL "water_level"
 #define AST_WORD_BUMP_SIZE "bump_size"
 #define AST_WORD_ACCURACY "accuracy"
 #define AST_WORD_SLOPE_MAP "slope_map"

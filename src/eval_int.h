@@ -291,6 +291,8 @@ const ast_node *eval_internal_function(int number);
 const char *eval_word_item(const ast_node *n, const ast_node **negated);
 /* The float after such a word at: minus *negated's value, or the next item's. */
 int eval_word_float(struct eval *e, struct cursor *c, const ast_node *at, const ast_node *negated, double *f);
+/* height_field { }'s own items: its mesh into o->mesh (eval_hfield.c). */
+int eval_height_field_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 /* blob { }'s own items (eval_blob.c). */
 int eval_blob_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 /* isosurface { }'s own items, up to its object modifiers (eval_isosurface.c). */

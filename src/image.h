@@ -43,6 +43,8 @@ typedef struct {
 	float gamma;         /* IMAGE_GAMMA_POWER's: 2.2 */
 	int premultiplied;
 	char format[32];
+	int channels;        /* in the file: 1 or 2 for a grey image */
+	int bits;            /* per channel in the file: 8, 16, 32 */
 } image_data;
 
 /* Reads path; refuses an image of more than max_texels pixels, saying so with
@@ -50,6 +52,10 @@ typedef struct {
  * pixels with free(). */
 int image_read(const char *path, long max_texels, image_data *out, char *err, size_t errlen);
 
+/* A colormapped PNG's palette indices, top row first, one byte a pixel (free()
+ * them): 1, or 0 when the file is no such PNG (or not one of at most max_texels
+ * pixels, or unreadable: image_read says why). libpng (src/image_png.c). */
+int image_png_indices(const char *path, long max_texels, unsigned char **out, int *width, int *height);
 /* 1 when the extension of path names a format OpenImageIO can write. */
 int image_format_known(const char *path);
 

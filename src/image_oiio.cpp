@@ -140,6 +140,9 @@ extern "C" int image_read(const char *path, long max_texels, image_data *out, ch
 	out->premultiplied = alpha >= 0 && !spec.get_int_attribute("oiio:UnassociatedAlpha", 0) &&
 	                     std::strcmp(in->format_name(), "openexr") == 0;
 	std::snprintf(out->format, sizeof out->format, "%s", in->format_name());
+	out->channels = nc;
+	int bits = spec.get_int_attribute("oiio:BitsPerSample", 0);
+	out->bits = bits > 0 ? bits : (int)spec.format.size() * 8;
 	in->close();
 	return 0;
 }

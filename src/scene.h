@@ -165,7 +165,8 @@ typedef struct {
 	X(CUBIC, cubic) \
 	X(QUARTIC, quartic) \
 	X(POLYNOMIAL, polynomial) \
-	X(BLOB, blob)
+	X(BLOB, blob) \
+	X(HEIGHT_FIELD, height_field)
 #define SCENE_SHAPE_ENUM_ROW(NAME, name) SHAPE_##NAME,
 typedef enum { SCENE_SHAPES(SCENE_SHAPE_ENUM_ROW) SHAPE_KINDS } scene_shape;
 

@@ -927,9 +927,11 @@ int main(int argc, char **argv)
 	 * smooth triangle (a triangle here), and the shapes whose arguments are
 	 * lists, which property tests of their own cover with the same rules:
 	 * tests/test_prism.c, test_revolve.c and test_torus.c, and the isosurface,
-	 * whose function is compiled into the kernels: tests/test_function.c */
+	 * whose function is compiled into the kernels: tests/test_function.c; a
+	 * height field is a mesh (test_traverse), its heights POV-Ray's in
+	 * tests/povray/height_field.scn */
 	static const char *const elsewhere[] = { "polygon", "prism", "text", "quadric", "sor", "lathe", "torus",
-	                                         "superellipsoid", "isosurface" };
+	                                         "superellipsoid", "isosurface", "height_field" };
 	for (int s = 0; s < SHAPE_KINDS; s++) {
 		scene_object o = { .shape = (scene_shape)s };
 		const char *name = shape_of(&o)->name;

@@ -1,0 +1,232 @@
+/* eval_hfield.c: height_field { TYPE "file" [gamma G] [premultiplied B] |
+ * function W, H { EXPRESSION } [smooth] [water_level L] [hierarchy B] }, POV-Ray
+ * 3.7's height field, made here into the triangles POV-Ray intersects: a grid
+ * of the image's pixels over [0, 1] in x and z, each pixel's height in y, and
+ * each cell two triangles on the diagonal from (x + 1, z) to (x, z + 1)
+ * (heightfield.cpp). It becomes a mesh of scene.meshes (src/shape_height_field.c
+ * places it). As in POV-Ray:
+ *  - the image's bottom row is z = 0;
+ *  - a height is a 16-bit value over 65536: an indexed image's palette index
+ *    times 256 (a PNG's, through libpng); an 8-bit colour image's red is its
+ *    high byte and green its low byte; a grey image, or one of more than 8 bits,
+ *    gives its grey value times 65535 (imageutil.cpp's image_height_at);
+ *  - a function's image has the function's value at x = column / (W - 1) and
+ *    y = row / (H - 1), z = 0, the top row first, clamped to [0, 1] as a 16-bit
+ *    grey image clamps it (Make_Pattern_Image);
+ *  - smooth: each point's normal is the mean of the four triangles' about it in
+ *    the raw grid (smooth_height_field);
+ *  - water_level L: nothing below L is drawn (the triangles wholly below). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "eval_int.h"
+#include "image.h"
+
+#define MAX_TEXELS (1L << 24)   /* 4096 x 4096 grid points: 33 million triangles */
+
+static const char *const types[] = { "gif", "tga", "pot", "png", "pgm", "ppm", "jpeg", "tiff", "sys", "exr", "hdr",
+                                     "iff", "bmp" };
+
+static const char *word(const ast_node *n)
+{
+	return n->kind == AST_IDENT ? n->str : NULL;
+}
+
+/* The grid's heights (0 .. 65535), bottom row first, from the image file. */
+static int image_heights(struct eval *e, const ast_node *at, const char *name, double **h, int *w, int *hh)
+{
+	char *path = eval_find_file(e, at->loc.file, name);
+	const char *use = path ? path : name;
+	image_data d;
+	char why[512];
+	if (eval_access(e, use, false, at->loc, "a height_field")) {
+		free(path);
+		return -1;
+	}
+	if (image_read(use, MAX_TEXELS, &d, why, sizeof why)) {
+		eval_error(e, at->loc, "cannot read height field image '%s': %s", name, why);
+		free(path);
+		return -1;
+	}
+	unsigned char *index = NULL;
+	int iw, ih;
+	if (!image_png_indices(use, MAX_TEXELS, &index, &iw, &ih) || iw != d.width || ih != d.height) {
+		free(index);
+		index = NULL;
+	}
+	free(path);
+	*w = d.width;
+	*hh = d.height;
+	*h = eval_xrealloc(NULL, (size_t)d.width * d.height * sizeof **h);
+	bool grey = d.channels <= 2, deep = d.bits > 8;
+	for (int z = 0; z < d.height; z++)
+		for (int x = 0; x < d.width; x++) {
+			size_t at = (size_t)(d.height - 1 - z) * d.width + x;
+			const float *p = d.rgba + 4 * at;
+			double v = index ? index[at] * 256.0   /* POV-Ray's 256, not 257: its 3.6 heights */
+			         : grey ? p[0] * 65535.0
+			         : deep ? (0.297 * p[0] + 0.589 * p[1] + 0.114 * p[2]) * 65535.0   /* POV-Ray's Greyscale */
+			                : (p[0] * 256.0 + p[1]) * 255.0;
+			(*h)[(size_t)z * d.width + x] = floor(v < 0 ? 0 : v > 65535 ? 65535 : v);
+		}
+	free(d.rgba);
+	free(index);
+	return 0;
+}
+
+/* The function's heights: a 16-bit grey image of it, bottom row first. */
+static int function_heights(struct eval *e, const ast_node *fn, double **h, int *w, int *hh)
+{
+	const ast_node *size = fn->n_kids > 2 ? fn->kids[2] : NULL;
+	double sw = size ? size->kids[0]->num : 0, sh = size ? size->kids[1]->num : 0;
+	*w = (int)(sw + 0.5);
+	*hh = (int)(sh + 0.5);
+	if (!size || *w < 2 || *hh < 2 || (double)*w * *hh > MAX_TEXELS) {
+		eval_error(e, fn->loc, "a height_field's function needs a size of 2 x 2 to 4096 x 4096 points "
+		           "(function W, H { ... })");
+		return -1;
+	}
+	int f;
+	int rc = eval_function_index(e, fn, "the height_field is left out", &f);
+	if (rc)
+		return rc;
+	*h = eval_xrealloc(NULL, (size_t)*w * *hh * sizeof **h);
+	for (int row = 0; row < *hh; row++)
+		for (int x = 0; x < *w; x++) {
+			double a[3] = { (double)x / (*w - 1), (double)row / (*hh - 1), 0 };
+			double v = (float)scene_function_eval(e->s, f, a);
+			v = isnan(v) ? 0 : v < 0 ? 0 : v > 1 ? 1 : v;
+			(*h)[(size_t)(*hh - 1 - row) * *w + x] = floor(v * 65535.0 + 0.5);
+		}
+	return 0;
+}
+
+static void add_normal(const double *h, int w, int hh, int x0, int z0, int x1, int z1, int x2, int z2, double n[3])
+{
+	if (x0 < 0 || z0 < 0 || x1 < 0 || z1 < 0 || x2 < 0 || z2 < 0 || x0 >= w || x1 >= w || x2 >= w || z0 >= hh ||
+	    z1 >= hh || z2 >= hh)
+		return;
+	double v0[3] = { x0, h[(size_t)z0 * w + x0], z0 }, t0[3], t1[3], c[3];
+	for (int k = 0; k < 3; k++) {
+		double v1 = k == 0 ? x1 : k == 1 ? h[(size_t)z1 * w + x1] : z1;
+		double v2 = k == 0 ? x2 : k == 1 ? h[(size_t)z2 * w + x2] : z2;
+		t0[k] = v2 - v0[k];
+		t1[k] = v1 - v0[k];
+	}
+	c[0] = t0[1] * t1[2] - t0[2] * t1[1];
+	c[1] = t0[2] * t1[0] - t0[0] * t1[2];
+	c[2] = t0[0] * t1[1] - t0[1] * t1[0];
+	double l = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+	if (!(l > 0))
+		return;
+	double s = c[1] < 0 ? -1 / l : 1 / l;
+	for (int k = 0; k < 3; k++)
+		n[k] += c[k] * s;
+}
+
+/* The grid as a mesh over [0, 1]^3. */
+static void make_mesh(const double *h, int w, int hh, bool smooth, double water, scene_mesh *m)
+{
+	m->n_v = w * hh;
+	m->v = eval_xrealloc(NULL, (size_t)m->n_v * sizeof *m->v);
+	for (int z = 0; z < hh; z++)
+		for (int x = 0; x < w; x++) {
+			double *v = m->v[(size_t)z * w + x];
+			v[0] = (double)x / (w - 1);
+			v[1] = h[(size_t)z * w + x] / 65536.0;
+			v[2] = (double)z / (hh - 1);
+		}
+	if (smooth) {   /* in the raw grid, then to [0, 1]^3 by the scale's inverse transpose */
+		m->n_nrm = m->n_v;
+		m->nrm = eval_xrealloc(NULL, (size_t)m->n_nrm * sizeof *m->nrm);
+		for (int z = 0; z < hh; z++)
+			for (int x = 0; x < w; x++) {
+				double n[3] = { 0, 0, 0 };
+				add_normal(h, w, hh, x, z, x + 1, z, x, z + 1, n);
+				add_normal(h, w, hh, x, z, x, z + 1, x - 1, z, n);
+				add_normal(h, w, hh, x, z, x - 1, z, x, z - 1, n);
+				add_normal(h, w, hh, x, z, x, z - 1, x + 1, z, n);
+				double *o = m->nrm[(size_t)z * w + x];
+				o[0] = n[0] * (w - 1);
+				o[1] = n[1] * 65536.0;
+				o[2] = n[2] * (hh - 1);
+			}
+	}
+	size_t cap = 2 * (size_t)(w - 1) * (hh - 1);
+	m->face = eval_xrealloc(NULL, cap * sizeof *m->face);
+	m->n_faces = 0;
+	double below = water * 65536.0;
+	for (int z = 0; z + 1 < hh; z++)
+		for (int x = 0; x + 1 < w; x++) {
+			int p1 = z * w + x, p2 = p1 + 1, p3 = p1 + w, p4 = p3 + 1;
+			int tri[2][3] = { { p1, p3, p2 }, { p2, p3, p4 } };   /* wound so that up is out */
+			for (int t = 0; t < 2; t++) {
+				if (water > 0 && h[tri[t][0]] < below && h[tri[t][1]] < below && h[tri[t][2]] < below)
+					continue;
+				memcpy(m->face[m->n_faces++], tri[t], sizeof tri[t]);
+			}
+		}
+}
+
+int eval_height_field_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o)
+{
+	int err = 0, rc = 0, w = 0, hh = 0;
+	double *h = NULL, water = 0;
+	bool smooth = false;
+	const ast_node *item = eval_next(c, &err), *name = NULL;
+	if (item && item->kind == AST_FUNCTION) {
+		rc = function_heights(e, item, &h, &w, &hh);
+	} else {
+		const char *t = item ? word(item) : NULL;
+		bool typed = false;
+		for (size_t i = 0; t && i < sizeof types / sizeof *types; i++)
+			typed |= strcmp(t, types[i]) == 0;
+		name = typed ? eval_next_expr(c, &err) : item;
+		char *file = NULL;
+		if (name && name->kind == AST_IDENT && !eval_lookup(e, name->str)) {   /* smooth, water_level... */
+			eval_error(e, name->loc, "a height_field starts with its image file or its function");
+			return -1;
+		}
+		if (!name || eval_expect_string(e, name, &file)) {
+			if (!name && !err)
+				eval_error(e, b->loc, "a height_field starts with its image file or its function");
+			return -1;
+		}
+		rc = image_heights(e, name, file, &h, &w, &hh);
+		free(file);
+	}
+	if (rc < 0)
+		return -1;
+	while (rc == 0 && (item = eval_next(c, &err)) != NULL) {
+		const ast_node *neg;
+		const char *wd = eval_word_item(item, &neg);
+		if (wd && strcmp(wd, AST_WORD_SMOOTH) == 0 && !neg) {
+			smooth = true;
+		} else if (wd && strcmp(wd, AST_WORD_WATER_LEVEL) == 0) {
+			rc = eval_word_float(e, c, item, neg, &water);
+		} else if (wd && (strcmp(wd, AST_WORD_HIERARCHY) == 0 || strcmp(wd, AST_WORD_GAMMA) == 0 ||
+		                  strcmp(wd, AST_WORD_PREMULTIPLIED) == 0) && !neg) {
+			const ast_node *v = eval_next_optional(c, &err);   /* no change to the heights eclat reads */
+			double f;
+			if (v && eval_expect_float(e, v, &f))
+				rc = -1;
+		} else {
+			eval_unget(c, item);   /* the object modifiers */
+			break;
+		}
+	}
+	if (rc == 0 && !err && h && w >= 2 && hh >= 2) {
+		scene_mesh m = { .loc = b->loc };
+		make_mesh(h, w, hh, smooth, water, &m);
+		o->mesh = scene_add_mesh(e->s, &m);
+	} else if (rc == 0 && !err && h) {
+		eval_error(e, b->loc, "a height_field's image needs at least 2 x 2 pixels, not %d x %d", w, hh);
+		rc = -1;
+	} else if (rc > 0) {
+		o->mesh = -1;   /* --skip-unsupported: left out, with the warning */
+		rc = 0;
+	}
+	free(h);
+	return rc || err ? -1 : 0;
+}
