@@ -304,6 +304,12 @@ enum kw_class {
 #define AST_WORD_HEIGHT_FIELD "height_field"
 #define AST_WORD_SMOOTH "smooth"
 #define AST_WORD_WATER_LEVEL "water_level"
+/* bicubic_patch { } (eval_bicubic.c) */
+#define AST_WORD_BICUBIC_PATCH "bicubic_patch"
+#define AST_WORD_TYPE "type"
+#define AST_WORD_FLATNESS "flatness"
+#define AST_WORD_U_STEPS "u_steps"
+#define AST_WORD_V_STEPS "v_steps"
 #define AST_WORD_BUMP_SIZE "bump_size"
 #define AST_WORD_ACCURACY "accuracy"
 #define AST_WORD_SLOPE_MAP "slope_map"

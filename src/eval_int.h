@@ -293,6 +293,8 @@ const char *eval_word_item(const ast_node *n, const ast_node **negated);
 int eval_word_float(struct eval *e, struct cursor *c, const ast_node *at, const ast_node *negated, double *f);
 /* height_field { }'s own items: its mesh into o->mesh (eval_hfield.c). */
 int eval_height_field_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
+/* bicubic_patch { }'s own items: its triangles into o->mesh (eval_bicubic.c). */
+int eval_bicubic_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 /* blob { }'s own items (eval_blob.c). */
 int eval_blob_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 /* isosurface { }'s own items, up to its object modifiers (eval_isosurface.c). */

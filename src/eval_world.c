@@ -15,7 +15,7 @@
 const char *eval_pov_word(const char *name)
 {
 	static const char *const objects[] = {
-		"bicubic_patch", "cubic",
+		"cubic",
 		"julia_fractal", "lathe", "light_group", "ovus",
 		"parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
 		"sphere_sweep", "text",

@@ -166,7 +166,8 @@ typedef struct {
 	X(QUARTIC, quartic) \
 	X(POLYNOMIAL, polynomial) \
 	X(BLOB, blob) \
-	X(HEIGHT_FIELD, height_field)
+	X(HEIGHT_FIELD, height_field) \
+	X(BICUBIC_PATCH, bicubic_patch)
 #define SCENE_SHAPE_ENUM_ROW(NAME, name) SHAPE_##NAME,
 typedef enum { SCENE_SHAPES(SCENE_SHAPE_ENUM_ROW) SHAPE_KINDS } scene_shape;
 

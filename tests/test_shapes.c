@@ -928,10 +928,11 @@ int main(int argc, char **argv)
 	 * lists, which property tests of their own cover with the same rules:
 	 * tests/test_prism.c, test_revolve.c and test_torus.c, and the isosurface,
 	 * whose function is compiled into the kernels: tests/test_function.c; a
-	 * height field is a mesh (test_traverse), its heights POV-Ray's in
-	 * tests/povray/height_field.scn */
+	 * height field and a bicubic patch are meshes (test_traverse), their
+	 * triangles POV-Ray's in tests/povray/height_field.scn and bicubic_patch.scn */
 	static const char *const elsewhere[] = { "polygon", "prism", "text", "quadric", "sor", "lathe", "torus",
-	                                         "superellipsoid", "isosurface", "height_field" };
+	                                         "superellipsoid", "isosurface", "height_field",
+	                                         "bicubic_patch" };
 	for (int s = 0; s < SHAPE_KINDS; s++) {
 		scene_object o = { .shape = (scene_shape)s };
 		const char *name = shape_of(&o)->name;

@@ -1,0 +1,45 @@
+/* shape_tessellated.c: the shapes eclat makes into triangles on the host and
+ * places as it places a mesh (shape_mesh.c: once in scene.meshes, and an
+ * instance of it): height_field { }, POV-Ray's grid of triangles over an
+ * image (src/eval_hfield.c), and bicubic_patch { }, a Bezier patch cut into
+ * 2^u_steps by 2^v_steps quadrilaterals of two triangles each, with the
+ * patch's own normals at their corners (src/eval_bicubic.c). o->mesh is the
+ * mesh, or -1 when --skip-unsupported left it out. */
+#include "ast.h"
+#include "lower.h"
+#include "shape.h"
+
+static void bounds(const scene *s, const scene_object *o, double lo[3], double hi[3])
+{
+	if (o->mesh >= 0)
+		shape_mesh.bounds(s, o, lo, hi);
+}
+
+static void trace(const scene *s, const scene_object *o, const double ro[3], const double rd[3], double tmin,
+                  shape_hit *h)
+{
+	if (o->mesh >= 0)
+		shape_mesh.trace(s, o, ro, rd, tmin, h);
+}
+
+static int lower(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id)
+{
+	return o->mesh >= 0 ? lower_mesh_instance(lw, s, o, mat, id) : 0;
+}
+
+static void dump(FILE *out, const scene_object *o)
+{
+	fprintf(out, "%s mesh %d", o->shape == SHAPE_HEIGHT_FIELD ? AST_WORD_HEIGHT_FIELD : AST_WORD_BICUBIC_PATCH,
+	        o->mesh);
+	scene_dump_xform(out, &o->xf);
+}
+
+const shape_class shape_height_field = {
+	.name = AST_WORD_HEIGHT_FIELD, .args = NULL, .needs = "an image or a function",
+	.bounds = bounds, .trace = trace, .lower = lower, .dump = dump,
+};
+
+const shape_class shape_bicubic_patch = {
+	.name = AST_WORD_BICUBIC_PATCH, .args = NULL, .needs = "16 control points",
+	.bounds = bounds, .trace = trace, .lower = lower, .dump = dump,
+};
