@@ -21,7 +21,7 @@
 int cli_ini_named(const char *arg)
 {
 	size_t n = strcspn(arg, "[");
-	return n >= 4 && strncasecmp(arg + n - 4, ".ini", 4) == 0 && (!arg[n] || arg[strlen(arg) - 1] == ']');
+	return n >= 4 && strncasecmp(arg + n - 4, ".ini", 4) == 0;
 }
 
 static char *copy(const char *s, size_t n)

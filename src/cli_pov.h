@@ -67,7 +67,7 @@ int cli_pov_is_key(const char *key);
 /* Reads the INI file spec ("file.ini" or "file.ini[Section]"), named at loc,
  * into a; depth counts Include_Ini's nesting. Exits 1 on an error. */
 void cli_ini_read(cli_args *a, const char *spec, src_loc loc, int depth);
-/* 1 when arg names an INI file: it ends in ".ini", or ".ini[Section]". */
+/* 1 when arg names an INI file: it ends in ".ini", or has "[Section]" after it. */
 int cli_ini_named(const char *arg);
 
 #endif
