@@ -26,12 +26,7 @@ int cli_ini_named(const char *arg)
 
 static char *copy(const char *s, size_t n)
 {
-	char *c = strndup(s, n);
-	if (!c) {
-		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
-	}
-	return c;
+	return cli_pov_keep(strndup(s, n));
 }
 
 static src_loc at(int file, int line, const char *start, const char *p)
@@ -108,7 +103,6 @@ static void key_value(cli_args *a, const char *p, const char *end, int file, int
 	}
 	char *key = copy(k, (size_t)(key_end - k));
 	cli_pov_setting(a, key, copy(v, (size_t)(v_end - v)), at(file, line, start, k), at(file, line, start, v));
-	free(key);
 }
 
 static int read_source(const char *path, src_loc loc)
@@ -147,7 +141,6 @@ void cli_ini_read(cli_args *a, const char *spec, src_loc loc, int depth)
 		if (p < eol && *p == '[') {
 			char *name = section(p, eol, at(file, line, start, p));
 			active = want && strcasecmp(name, want) == 0;
-			free(name);
 		} else if (active && p < eol && *p != ';' && *p != '#') {
 			const char *e = text_end(p, eol);
 			if (*p == '+' || *p == '-')
@@ -157,6 +150,4 @@ void cli_ini_read(cli_args *a, const char *spec, src_loc loc, int depth)
 		}
 		start = eol < end ? eol + 1 : end;
 	}
-	free(path);
-	free(want);
 }

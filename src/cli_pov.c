@@ -198,6 +198,28 @@ struct setting {
 	src_loc loc;         /* the value's place in an INI file, or SRC_NOWHERE */
 };
 
+/* What the arguments became lives until exit, like argv itself: kept here, so
+ * that a leak checker sees it reachable. */
+static char **kept;
+static size_t n_kept, cap_kept;
+
+char *cli_pov_keep(char *s)
+{
+	if (s && n_kept == cap_kept) {
+		cap_kept = cap_kept ? 2 * cap_kept : 64;
+		char **k = realloc(kept, cap_kept * sizeof *k);
+		if (!k)
+			s = NULL;
+		else
+			kept = k;
+	}
+	if (!s) {
+		fprintf(stderr, "eclat: out of memory\n");
+		exit(1);
+	}
+	return kept[n_kept++] = s;
+}
+
 static void push(cli_args *a, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 static void push(cli_args *a, const char *fmt, ...)
@@ -214,7 +236,7 @@ static void push(cli_args *a, const char *fmt, ...)
 		exit(1);
 	}
 	va_end(ap);
-	a->v[a->n++] = s;
+	a->v[a->n++] = cli_pov_keep(s);
 	a->v[a->n] = NULL;
 }
 
@@ -560,11 +582,7 @@ static int one_argument(cli_args *a, char **argv, int i, int argc, const struct 
 	}
 	size_t n = strcspn(arg, "=");
 	if (arg[n] && is_identifier(arg, n)) {   /* Width=320, Declare=R=2 */
-		char *key = strndup(arg, n);
-		if (!key)
-			exit(1);
-		cli_pov_setting(a, key, arg + n + 1, SRC_NOWHERE, SRC_NOWHERE);
-		free(key);
+		cli_pov_setting(a, cli_pov_keep(strndup(arg, n)), arg + n + 1, SRC_NOWHERE, SRC_NOWHERE);
 		return 1;
 	}
 	cli_pov_plain(a, arg, SRC_NOWHERE);
@@ -593,6 +611,7 @@ int cli_pov_args(int argc, char **argv, const struct option *longopts, const cha
 		i += one_argument(&a, argv, i, argc, longopts, shortopts);
 	}
 	*out = a.v;
+	cli_pov_keep((char *)a.v);
 	return a.n;
 }
 

@@ -61,6 +61,8 @@ typedef struct cli_args cli_args;
 void cli_pov_switch(cli_args *a, const char *sw, src_loc loc);
 void cli_pov_setting(cli_args *a, const char *key, const char *value, src_loc key_loc, src_loc value_loc);
 void cli_pov_plain(cli_args *a, const char *arg, src_loc loc);
+/* Keeps s until exit (NULL: out of memory, exit 1) and returns it. */
+char *cli_pov_keep(char *s);
 /* 1 when key is one of POV-Ray's INI keys (any case). */
 int cli_pov_is_key(const char *key);
 
