@@ -533,6 +533,8 @@ static int dash_d(cli_args *a, char **argv, int i, int argc)
 		push(a, "--declare=%s", argv[i + 1]);
 		return 2;
 	}
+	if (!arg[2] && i + 1 < argc)
+		a->pov->after_display = argv[i + 1];
 	cli_pov_switch(a, arg, SRC_NOWHERE);
 	return 1;
 }

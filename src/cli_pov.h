@@ -17,6 +17,7 @@
 typedef struct {
 	const char *scene;           /* the last scene named, plainly, by +I or Input_File_Name */
 	int n_plain_scenes;          /* named plainly on the command line: more than one is an error */
+	const char *after_display;   /* the argument after a bare -D, for a hint when it was meant as -D NAME */
 	char file_type;              /* +F's letter in upper case ('N': PNG...); 0: not given */
 	int bits;                    /* +FN16: 16; 0: the format's own */
 	int antialias;               /* +A: 1, -A: 0, not given: -1 */

@@ -342,6 +342,9 @@ static void parse_options(int argc, char **argv, struct options *o)
 	if (!o->scene || o->pov.n_plain_scenes > 1) {
 		fprintf(stderr, !o->scene ? "eclat: no scene file given\n" : "eclat: give one scene file, not %d\n",
 		        o->pov.n_plain_scenes);
+		if (o->pov.after_display && o->scene)
+			fprintf(stderr, "eclat: note: -D before '%s' is POV-Ray's display switch; "
+			        "to declare, write -D NAME=VALUE\n", o->pov.after_display);
 		fprintf(stderr, "Try 'eclat --help' for more information.\n");
 		exit(1);
 	}
