@@ -116,9 +116,16 @@ static int read_source(const char *path, src_loc loc)
 	return diag_add_source(path, text, len);
 }
 
-void cli_ini_read(cli_args *a, const char *spec, src_loc loc, int depth)
+#define MAX_NESTING 16
+
+void cli_ini_read(cli_args *a, const char *spec, src_loc loc)
 {
-	(void)depth;
+	static int nesting;   /* an INI file that names itself would never end */
+	if (nesting == MAX_NESTING) {
+		diag_error(loc, "INI files name each other more than %d deep", MAX_NESTING);
+		exit(1);
+	}
+	nesting++;
 	char *path = copy(spec, strcspn(spec, "[")), *want = NULL;
 	if (spec[strlen(path)]) {
 		const char *open = spec + strlen(path), *close = strchr(open, ']');
@@ -150,4 +157,5 @@ void cli_ini_read(cli_args *a, const char *spec, src_loc loc, int depth)
 		}
 		start = eol < end ? eol + 1 : end;
 	}
+	nesting--;
 }

@@ -20,7 +20,6 @@ struct cli_args {
 	cli_pov *pov;
 	char **v;
 	int n, cap;
-	int ini_depth;   /* Include_Ini's nesting */
 };
 
 enum kind {
@@ -240,13 +239,8 @@ static void push(cli_args *a, const char *fmt, ...)
 	a->v[a->n] = NULL;
 }
 
-static _Noreturn void fail_at(src_loc loc)
-{
-	(void)loc;
-	exit(1);
-}
-
-#define FAIL(loc, ...) (diag_error((loc), __VA_ARGS__), fail_at(loc))
+/* A bad argument ends the run before anything is read or rendered. */
+#define FAIL(loc, ...) do { diag_error((loc), __VA_ARGS__); exit(1); } while (0)
 
 static long whole(const struct setting *s, long lo, long hi)
 {
@@ -384,13 +378,7 @@ static void apply(cli_args *a, enum kind k, const struct setting *s, src_loc key
 			             s->name);
 		break;
 	case K_SHELL: shell_refused(s, key_loc); break;
-	case K_INCLUDE_INI:
-		if (a->ini_depth >= 16)
-			FAIL(s->loc, "INI files include each other more than 16 deep");
-		a->ini_depth++;
-		cli_ini_read(a, s->value, s->loc, a->ini_depth);
-		a->ini_depth--;
-		break;
+	case K_INCLUDE_INI: cli_ini_read(a, s->value, s->loc); break;
 	default: animation(p, k, s); break;
 	}
 }
@@ -474,7 +462,7 @@ void cli_pov_setting(cli_args *a, const char *key, const char *value, src_loc ke
 void cli_pov_plain(cli_args *a, const char *arg, src_loc loc)
 {
 	if (cli_ini_named(arg)) {
-		cli_ini_read(a, arg, loc, a->ini_depth);
+		cli_ini_read(a, arg, loc);
 		return;
 	}
 	a->pov->scene = arg;
@@ -571,6 +559,10 @@ static int one_argument(cli_args *a, char **argv, int i, int argc, const struct 
 		}
 		return 1;
 	}
+	if (strcmp(arg, "-version") == 0 || strcmp(arg, "-help") == 0) {   /* povray's own spellings */
+		push(a, "-%s", arg);
+		return 1;
+	}
 	if (arg[0] == '-' && (arg[1] == 'D' || arg[1] == 'd'))
 		return dash_d(a, argv, i, argc);
 	if (arg[0] == '-' && arg[1]) {
@@ -600,7 +592,7 @@ int cli_pov_args(int argc, char **argv, const struct option *longopts, const cha
 	/* POV-Ray reads the INI file $POVINI names before the command line. */
 	const char *povini = getenv("POVINI");
 	if (povini && *povini)
-		cli_ini_read(&a, povini, SRC_NOWHERE, 0);
+		cli_ini_read(&a, povini, SRC_NOWHERE);
 	int i = 1;
 	while (i < argc) {
 		if (strcmp(argv[i], "--") == 0) {   /* the rest are scenes */

@@ -68,8 +68,9 @@ char *cli_pov_keep(char *s);
 int cli_pov_is_key(const char *key);
 
 /* Reads the INI file spec ("file.ini" or "file.ini[Section]"), named at loc,
- * into a; depth counts Include_Ini's nesting. Exits 1 on an error. */
-void cli_ini_read(cli_args *a, const char *spec, src_loc loc, int depth);
+ * into a. INI files that name each other nest 16 deep at most. Exits 1 on an
+ * error. */
+void cli_ini_read(cli_args *a, const char *spec, src_loc loc);
 /* 1 when arg names an INI file: it ends in ".ini", or has "[Section]" after it. */
 int cli_ini_named(const char *arg);
 
