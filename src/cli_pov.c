@@ -529,14 +529,15 @@ static int dash_d(cli_args *a, char **argv, int i, int argc)
 
 /* An argument that begins with '-' and one of eclat's own short options is
  * eclat's, but for -D (above), -V among other arguments (POV-Ray's verbose
- * off) and -s followed by a letter (POV-Ray's +SR and the like). Returns how
- * many arguments it used, 0 when it is not eclat's. */
+ * off), -s followed by a letter (POV-Ray's -SR and the like), and -q or -h
+ * with something attached (POV-Ray's -Q9, -H240: eclat's take nothing).
+ * Returns how many arguments it used, 0 when it is not eclat's. */
 static int eclat_short(cli_args *a, char **argv, int i, int argc, const char *shortopts)
 {
 	const char *arg = argv[i];
 	const char *o = strchr(shortopts, arg[1]);
 	if (!o || arg[1] == ':' || arg[1] == 'D' || (arg[1] == 'V' && argc > 2) ||
-	    (arg[1] == 's' && isalpha((unsigned char)arg[2])))
+	    (arg[1] == 's' && isalpha((unsigned char)arg[2])) || ((arg[1] == 'q' || arg[1] == 'h') && arg[2]))
 		return 0;
 	push(a, "%s", arg);
 	if (o[1] == ':' && !arg[2] && i + 1 < argc) {
