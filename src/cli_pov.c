@@ -4,7 +4,9 @@
  * the switches', below); a kind either becomes one of eclat's long options or
  * lands in the cli_pov. Where eclat cannot do what is asked, one warning says
  * so and the render goes on; only what POV-Ray itself would refuse, or a
- * shell command, is an error. */
+ * shell command, is an error. An unknown key in an INI file, which POV-Ray
+ * refuses too, is only a warning, so that an INI file written for another
+ * POV-Ray still renders. */
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -415,11 +417,6 @@ static const struct pov_key *find_key(const char *key)
 		if (strcasecmp(keys[i].name, key) == 0)
 			return &keys[i];
 	return NULL;
-}
-
-int cli_pov_is_key(const char *key)
-{
-	return find_key(key) != NULL;
 }
 
 static int boolean(const char *v, int *on)

@@ -64,8 +64,6 @@ void cli_pov_setting(cli_args *a, const char *key, const char *value, src_loc ke
 void cli_pov_plain(cli_args *a, const char *arg, src_loc loc);
 /* Keeps s until exit (NULL: out of memory, exit 1) and returns it. */
 char *cli_pov_keep(char *s);
-/* 1 when key is one of POV-Ray's INI keys (any case). */
-int cli_pov_is_key(const char *key);
 
 /* Reads the INI file spec ("file.ini" or "file.ini[Section]"), named at loc,
  * into a. INI files that name each other nest 16 deep at most. Exits 1 on an
