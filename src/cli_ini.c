@@ -143,6 +143,8 @@ void cli_ini_read(cli_args *a, const char *spec, src_loc loc)
 		const char *eol = memchr(start, '\n', (size_t)(end - start));
 		eol = eol ? eol : end;
 		const char *p = start;
+		if (p == text && eol - p >= 3 && memcmp(p, "\xEF\xBB\xBF", 3) == 0)   /* a UTF-8 mark, as Windows editors write */
+			p += 3;
 		while (p < eol && isspace((unsigned char)*p))
 			p++;
 		if (p < eol && *p == '[') {
