@@ -30,7 +30,8 @@ enum kind {
 	K_AA_WARN,    /* anti-aliasing's details: the path tracer's samples are its anti-aliasing */
 	K_WIDTH, K_HEIGHT, K_INPUT, K_OUTPUT, K_TO_FILE, K_TYPE, K_BITS, K_ALPHA,
 	K_AA, K_AA_THRESHOLD, K_QUALITY, K_LIBRARY, K_DECLARE, K_DISPLAY, K_THREADS, K_SEED,
-	K_REGION, K_CONTINUE, K_CLOCK, K_INITIAL_FRAME, K_FINAL_FRAME, K_INITIAL_CLOCK, K_FINAL_CLOCK,
+	K_LEFT, K_TOP, K_RIGHT, K_BOTTOM,   /* ORDER CLI_REGION_ */
+	K_CONTINUE, K_CLOCK, K_INITIAL_FRAME, K_FINAL_FRAME, K_INITIAL_CLOCK, K_FINAL_CLOCK,
 	K_SUBSET_START, K_SUBSET_END, K_CYCLIC, K_SHELL, K_INCLUDE_INI,
 };
 
@@ -54,11 +55,11 @@ static const struct pov_switch {
 	{ "CC", K_WARN, P_NONE, "continue-trace log" },
 	{ "C", K_CONTINUE, P_NONE, NULL },
 	{ "D", K_DISPLAY, P_OPTIONAL, NULL },
-	{ "EC", K_REGION, P_REQUIRED, NULL },
+	{ "EC", K_RIGHT, P_REQUIRED, NULL },
 	{ "EF0", K_SUBSET_END, P_REQUIRED, NULL },
 	{ "EF", K_SUBSET_END, P_REQUIRED, NULL },
 	{ "EP", K_SILENT, P_REQUIRED, NULL },
-	{ "ER", K_REGION, P_REQUIRED, NULL },
+	{ "ER", K_BOTTOM, P_REQUIRED, NULL },
 	{ "F", K_TYPE, P_OPTIONAL, NULL },
 	{ "GA", K_SILENT, P_OPTIONAL, NULL },
 	{ "GD", K_SILENT, P_OPTIONAL, NULL },
@@ -95,11 +96,11 @@ static const struct pov_switch {
 	{ "RTR", K_WARN, P_NONE, "real-time ray tracing" },
 	{ "RVP", K_WARN, P_NONE, "radiosity's vain pretrace" },
 	{ "R", K_AA_WARN, P_REQUIRED, "anti-aliasing depth" },
-	{ "SC", K_REGION, P_REQUIRED, NULL },
+	{ "SC", K_LEFT, P_REQUIRED, NULL },
 	{ "SF0", K_SUBSET_START, P_REQUIRED, NULL },
 	{ "SF", K_SUBSET_START, P_REQUIRED, NULL },
 	{ "SP", K_SILENT, P_REQUIRED, NULL },
-	{ "SR", K_REGION, P_REQUIRED, NULL },
+	{ "SR", K_TOP, P_REQUIRED, NULL },
 	{ "SS", K_SEED, P_REQUIRED, NULL },
 	{ "STP", K_WARN, P_REQUIRED, "a frame step" },
 	{ "SU", K_SILENT, P_NONE, NULL },
@@ -144,7 +145,7 @@ static const struct pov_key {
 	{ "Debug_File", K_SILENT, 0, NULL }, { "Declare", K_DECLARE, 0, NULL },
 	{ "Display", K_DISPLAY, 1, NULL }, { "Display_Gamma", K_SILENT, 0, NULL },
 	{ "Dither", K_WARN, 1, "dithering" }, { "Dither_Method", K_WARN, 0, "dithering" },
-	{ "Draw_Vistas", K_SILENT, 1, NULL }, { "End_Column", K_REGION, 0, NULL }, { "End_Row", K_REGION, 0, NULL },
+	{ "Draw_Vistas", K_SILENT, 1, NULL }, { "End_Column", K_RIGHT, 0, NULL }, { "End_Row", K_BOTTOM, 0, NULL },
 	{ "Fatal_Console", K_SILENT, 1, NULL }, { "Fatal_Error_Command", K_SHELL, 0, NULL },
 	{ "Fatal_Error_Return", K_SILENT, 0, NULL }, { "Fatal_File", K_SILENT, 0, NULL },
 	{ "Field_Render", K_WARN, 1, "field rendering" }, { "File_Gamma", K_WARN, 0, "a file gamma other than sRGB's" },
@@ -175,8 +176,8 @@ static const struct pov_key {
 	{ "Render_Block_Size", K_SILENT, 0, NULL }, { "Render_Block_Step", K_SILENT, 0, NULL },
 	{ "Render_Console", K_SILENT, 1, NULL }, { "Render_File", K_SILENT, 0, NULL },
 	{ "Render_Pattern", K_SILENT, 0, NULL }, { "Sampling_Method", K_AA_WARN, 0, "anti-aliasing method" },
-	{ "Split_Unions", K_SILENT, 1, NULL }, { "Start_Column", K_REGION, 0, NULL },
-	{ "Start_Row", K_REGION, 0, NULL }, { "Statistic_Console", K_SILENT, 1, NULL },
+	{ "Split_Unions", K_SILENT, 1, NULL }, { "Start_Column", K_LEFT, 0, NULL },
+	{ "Start_Row", K_TOP, 0, NULL }, { "Statistic_Console", K_SILENT, 1, NULL },
 	{ "Statistic_File", K_SILENT, 0, NULL }, { "Stochastic_Seed", K_SEED, 0, NULL },
 	{ "Subset_End_Frame", K_SUBSET_END, 0, NULL }, { "Subset_Start_Frame", K_SUBSET_START, 0, NULL },
 	{ "Test_Abort_Count", K_SILENT, 0, NULL }, { "Test_Abort", K_SILENT, 1, NULL },
@@ -370,9 +371,11 @@ static void apply(cli_args *a, enum kind k, const struct setting *s, src_loc key
 		break;
 	case K_THREADS: push(a, "--threads=%ld", whole(s, 1, 512)); break;
 	case K_SEED: push(a, "--seed=%ld", whole(s, 0, 2147483647)); break;
-	case K_REGION:
-		number(s);
-		diag_warning(s->loc, "%s: eclat cannot render part of the image yet; it renders the whole image", s->name);
+	case K_LEFT: case K_TOP: case K_RIGHT: case K_BOTTOM:
+		p->region[k - K_LEFT] = number(s);
+		p->region_given |= 1 << (k - K_LEFT);
+		if (p->region[k - K_LEFT] < 0)
+			FAIL(s->loc, "%s needs a fraction of the image or a pixel number, not '%s'", s->name, s->value);
 		break;
 	case K_CONTINUE:
 		if (s->on)
@@ -675,4 +678,32 @@ char *cli_pov_output(const cli_pov *p, const char *scene, const char *output)
 	             frame, ext) < 0)
 		return NULL;
 	return out;
+}
+
+/* POV-Ray's reading of the part (its view.cpp): a value from 0 up to 1 is a
+ * fraction of the image (up to and including 1 for the ends), any other a pixel
+ * counted from 1. */
+int cli_pov_region(const cli_pov *p, int width, int height, int rect[4])
+{
+	static const char *const names[4] = { "+SC", "+SR", "+EC", "+ER" };   /* ORDER CLI_REGION_ */
+	int size[4] = { width, height, width, height };
+	for (int i = 0; i < 4; i++) {
+		double v = p->region[i];
+		if (!(p->region_given & 1 << i))
+			rect[i] = i < 2 ? 0 : size[i] - 1;
+		else if (v >= 0 && (i < 2 ? v < 1 : v <= 1))
+			rect[i] = (int)(size[i] * v) - (i < 2 ? 0 : 1);
+		else
+			rect[i] = (int)(v - 1);
+		if (rect[i] >= size[i]) {
+			diag_error(SRC_NOWHERE, "%s: %g is past the image's %s (%d pixels)", names[i], v,
+			           i % 2 ? "height" : "width", size[i]);
+			return -1;
+		}
+	}
+	if (rect[CLI_REGION_RIGHT] < rect[CLI_REGION_LEFT] || rect[CLI_REGION_BOTTOM] < rect[CLI_REGION_TOP]) {
+		diag_error(SRC_NOWHERE, "the part of the image to render (+SC +SR +EC +ER) is empty");
+		return -1;
+	}
+	return p->region_given ? 1 : 0;
 }

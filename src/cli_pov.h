@@ -26,6 +26,8 @@ typedef struct {
 	double clock, initial_clock, final_clock;
 	long initial_frame, final_frame;
 	double subset_start, subset_end;   /* a frame, or -1 - a fraction of the animation */
+	double region[4];            /* +SC +SR +EC +ER as given, ORDER CLI_REGION_ */
+	int region_given;            /* a bit for each */
 } cli_pov;
 
 /* The animation values of the one frame eclat renders (the first one asked
@@ -46,6 +48,13 @@ int cli_pov_args(int argc, char **argv, const struct option *longopts, const cha
                  cli_pov *pov, char ***out);
 
 void cli_pov_frame(const cli_pov *pov, cli_frame *f);
+
+/* The part of the image POV-Ray's +SC +SR +EC +ER (Start_Column...) ask for,
+ * in pixels from 0, inclusive, in rect (ORDER CLI_REGION_). Returns 1 when a
+ * part was asked for, 0 when not (the whole image), -1 after an error (a part
+ * past the image, or an empty one). */
+enum { CLI_REGION_LEFT, CLI_REGION_TOP, CLI_REGION_RIGHT, CLI_REGION_BOTTOM };
+int cli_pov_region(const cli_pov *pov, int width, int height, int rect[4]);
 
 /* The image's name: output, or the scene's stem in the current folder as POV-Ray
  * names it; the frame number (with a frame range) goes before the extension,

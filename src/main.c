@@ -400,17 +400,39 @@ static void catch_signals(void)
 
 struct output {
 	const char *path, *scene;
-	int bits;   /* POV-Ray's +FN16: 16; 0: the format's own */
+	int bits;          /* POV-Ray's +FN16: 16; 0: the format's own */
+	const int *part;   /* POV-Ray's +SC +SR +EC +ER in pixels (CLI_REGION_), or NULL */
 };
+
+/* POV-Ray's image of a part is the whole image, black outside the part. */
+static const float *black_outside(const film *f, const int *part)
+{
+	float *rgb = malloc((size_t)f->width * f->height * 3 * sizeof *rgb);
+	if (!rgb)
+		return NULL;
+	for (int y = 0; y < f->height; y++)
+		for (int x = 0; x < f->width; x++) {
+			size_t i = ((size_t)y * f->width + x) * 3;
+			int in = x >= part[CLI_REGION_LEFT] && x <= part[CLI_REGION_RIGHT] && y >= part[CLI_REGION_TOP] &&
+			         y <= part[CLI_REGION_BOTTOM];
+			for (int c = 0; c < 3; c++)
+				rgb[i + c] = in ? f->rgb[i + c] : 0.0f;
+		}
+	return rgb;
+}
 
 static int write_film(const film *f, void *ctx)
 {
 	const struct output *out = ctx;
 	image_meta meta = { out->scene, f->samples, out->bits };
 	char err[512];
-	if (image_write(out->path, f->rgb, f->width, f->height, &meta, err, sizeof err) == 0)
+	const float *rgb = out->part ? black_outside(f, out->part) : f->rgb;
+	int rc = rgb ? image_write(out->path, rgb, f->width, f->height, &meta, err, sizeof err) : -1;
+	if (rgb != f->rgb)
+		free((float *)rgb);
+	if (rc == 0)
 		return 0;
-	fprintf(stderr, "eclat: %s\n", err);
+	fprintf(stderr, "eclat: %s\n", rgb ? err : "out of memory");
 	return -1;
 }
 
@@ -420,7 +442,7 @@ static int write_aovs(const struct options *o, const film *f)
 	float *rgb = malloc((size_t)f->width * f->height * 3 * sizeof *rgb);
 	int rc = rgb ? 0 : -1;
 	for (int i = 0; rc == 0 && i < o->n_aovs; i++) {
-		struct output out = { o->aov_file[i], o->scene, 0 };
+		struct output out = { o->aov_file[i], o->scene, 0, NULL };
 		if (strcmp(o->aov_name[i], "heat") == 0) {
 			image_meta meta = { o->scene, f->samples, 0 };
 			char err[512];
@@ -540,7 +562,7 @@ static void warn_pov(const struct options *o, const cli_frame *f, const char *ou
 		             "the %ld asked for, to '%s'", f->frame, f->clock, f->frames, output);
 }
 
-static int render_scene(const struct options *o, const scene *s, const char *output)
+static int render_scene(const struct options *o, const scene *s, const char *output, const int *part)
 {
 	lower_result lr;
 	lower_options lo = { o->bvh, o->median_depth, o->bvh_layout };
@@ -553,7 +575,7 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		return rc;
 	}
 	warn_if_dark(o, s, &lr);   /* only when there is an image to warn about */
-	struct output out = { output, o->scene, o->pov.bits };
+	struct output out = { output, o->scene, o->pov.bits, part };
 	int whitted = o->integrator == INTEGRATOR_WHITTED;   /* deterministic: one sample is the image */
 	render_settings rs = {
 		.width = o->width, .height = o->height, .samples = whitted ? 1 : o->samples, .seed = o->seed,
@@ -650,7 +672,8 @@ int main(int argc, char **argv)
 	int bad_output = !o.dump_ast && !o.check && check_output(o.scene, output);
 	for (int i = 0; i < o.n_aovs && !bad_output && !o.check && !o.dump_ast; i++)
 		bad_output = check_output(o.scene, o.aov_file[i]);
-	if (bad_output) {
+	int part[4], has_part = cli_pov_region(&o.pov, o.width, o.height, part);
+	if (bad_output || has_part < 0) {
 		free(output);
 		return 1;
 	}
@@ -695,7 +718,7 @@ int main(int argc, char **argv)
 	} else if (eval_scene(tree, &s, &eopt) == 0 && diag_error_count() == 0) {
 		if (o.dump_scene)
 			scene_dump(&s, stdout);
-		rc = render_scene(&o, &s, output);
+		rc = render_scene(&o, &s, output, has_part ? part : NULL);
 	}
 	scene_free(&s);
 	ast_free(tree);
