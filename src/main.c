@@ -552,11 +552,9 @@ static int set_threads(const struct options *o)
 }
 
 /* What POV-Ray's switches asked for that eclat does not do, said once the
- * integrator and the image's name are known. */
-static void warn_pov(const struct options *o, const cli_frame *f, const char *output)
+ * image's name is known. */
+static void warn_pov(const cli_frame *f, const char *output)
 {
-	if (o->pov.antialias == 1 && o->integrator == INTEGRATOR_WHITTED)
-		diag_warning(SRC_NOWHERE, "anti-aliasing (+A) is not in the whitted integrator yet: one ray a pixel");
 	if (f->frames > 1)
 		diag_warning(SRC_NOWHERE, "eclat renders one frame of an animation for now: frame %ld (clock %g) of "
 		             "the %ld asked for, to '%s'", f->frame, f->clock, f->frames, output);
@@ -576,9 +574,11 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	}
 	warn_if_dark(o, s, &lr);   /* only when there is an image to warn about */
 	struct output out = { output, o->scene, o->pov.bits, part };
-	int whitted = o->integrator == INTEGRATOR_WHITTED;   /* deterministic: one sample is the image */
+	/* deterministic: one sample is the image; POV-Ray's +A asks for the 3x3 grid
+	 * of kernels/integrator_whitted.cl */
+	int whitted = o->integrator == INTEGRATOR_WHITTED, whitted_samples = o->pov.antialias == 1 ? 9 : 1;
 	render_settings rs = {
-		.width = o->width, .height = o->height, .samples = whitted ? 1 : o->samples, .seed = o->seed,
+		.width = o->width, .height = o->height, .samples = whitted ? whitted_samples : o->samples, .seed = o->seed,
 		.max_depth = o->max_depth >= 0 ? o->max_depth
 		           : s->max_trace_level > 0 ? s->max_trace_level : DEFAULT_MAX_DEPTH,
 		.integrator = o->integrator, .adc_bailout = s->adc_bailout, .gamma = s->film_gamma, .quiet = o->quiet,
@@ -704,7 +704,7 @@ int main(int argc, char **argv)
 	eopt.initial_clock = frame.initial_clock;
 	eopt.final_clock = frame.final_clock;
 	if (!o.dump_ast && !o.check)
-		warn_pov(&o, &frame, output);
+		warn_pov(&frame, output);
 	eopt.image_width = o.width;
 	eopt.image_height = o.height;
 	ast_node *tree = parse_file(o.scene, SRC_NOWHERE);
