@@ -455,6 +455,15 @@ inline float3 whitted_radiance(const scene_data *sc, whitted_ray camera, first_h
 	return result;
 }
 
+/* Where sample s of a pixel goes: a 3x3 grid whose sample 0 is the centre, so
+ * one sample is POV-Ray's image without anti-aliasing and nine (POV-Ray's +A,
+ * src/main.c) cover the grid. */
+inline float2 whitted_subpixel(int s)
+{
+	int k = (s % 9 + 4) % 9;
+	return (float2)(((float)(k % 3) + 0.5f) / 3.0f, ((float)(k / 3) + 0.5f) / 3.0f);
+}
+
 kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, global float4 *film,
                            global uint *counters, global float4 *aov)
 {
@@ -464,19 +473,25 @@ kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p
 	int px = pixel % p->width, py = pixel / p->width;
 	uint counts[COUNT_N] = { 0 };
 	scene_data sc = { SCENE_BUFFERS(SCENE_FIELD) p, counts };
-	/* one ray through the pixel's centre; focal blur, which needs many rays, is
-	 * the path tracer's. Where the camera makes no ray, POV-Ray's pixel is black. */
-	float3 o, d, l = (float3)(0.0f);
-	first_hit first = { (float3)(0.0f), (float3)(0.0f), 0.0f, -1 };
-	if (camera_ray(p, px, py, 0.5f, 0.5f, &o, &d)) {
-		d = normalize(d);
-		whitted_ray camera = whitted_child(o, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE, p->camera_solids);
-		counts[COUNT_RAYS + RAY_CAMERA]++;
-		l = film_finite(whitted_radiance(&sc, camera, &first));
+	float4 acc = film[pixel];
+	for (int s = 0; s < p->samples_per_pass; s++) {
+		/* one ray through a fixed place of the pixel; focal blur, which needs many
+		 * rays, is the path tracer's. Where the camera makes no ray, POV-Ray's
+		 * pixel is black. */
+		float3 o, d, l = (float3)(0.0f);
+		first_hit first = { (float3)(0.0f), (float3)(0.0f), 0.0f, -1 };
+		uint tests = counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA];
+		float2 at = whitted_subpixel(p->sample_base + s);
+		if (camera_ray(p, px, py, at.x, at.y, &o, &d)) {
+			d = normalize(d);
+			whitted_ray camera = whitted_child(o, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE, p->camera_solids);
+			counts[COUNT_RAYS + RAY_CAMERA]++;
+			l = film_finite(whitted_radiance(&sc, camera, &first));
+		}
+		acc += (float4)(l, (float)(counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA] - tests));
+		if (p->aov)
+			film_add_aov(aov, pixel, &first, p->sample_base + s);
 	}
-	/* every pass adds the same deterministic colour, so the film's average is it */
-	film[pixel] += (float4)(l, (float)(counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA]));
-	if (p->aov)
-		film_add_aov(aov, pixel, &first, p->sample_base);
+	film[pixel] = acc;
 	film_add_counts(counters, counts);
 }

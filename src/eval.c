@@ -1088,13 +1088,13 @@ static void declare_builtins(struct eval *e)
 		declare_float(e, no[i], 0);
 	}
 	declare_float(e, "clock", o->clock);
-	declare_float(e, "clock_delta", 0);
-	declare_float(e, "clock_on", 0);
-	declare_float(e, "frame_number", 0);
-	declare_float(e, "initial_clock", 0);
-	declare_float(e, "final_clock", 0);
-	declare_float(e, "initial_frame", 0);
-	declare_float(e, "final_frame", 0);
+	declare_float(e, "clock_delta", o->clock_delta);
+	declare_float(e, "clock_on", o->clock_on);
+	declare_float(e, "frame_number", (double)o->frame_number);
+	declare_float(e, "initial_clock", o->initial_clock);
+	declare_float(e, "final_clock", o->final_clock);
+	declare_float(e, "initial_frame", (double)o->initial_frame);
+	declare_float(e, "final_frame", (double)o->final_frame);
 	declare_float(e, "image_width", o->image_width > 0 ? o->image_width : 640);
 	declare_float(e, "image_height", o->image_height > 0 ? o->image_height : 480);
 	declare_float(e, "version", e->version);

@@ -36,7 +36,12 @@ typedef struct {
 	bool skip_unsupported;
 	/* image_width and image_height in the scene; 0 means 640 by 480. */
 	int image_width, image_height;
-	double clock;                /* clock in the scene; default 0 */
+	/* The animation's values for the frame (POV-Ray's clock, clock_delta,
+	 * clock_on, frame_number, initial_ and final_clock and _frame); all 0 by
+	 * default, as in POV-Ray without an animation. */
+	double clock, clock_delta, initial_clock, final_clock;
+	bool clock_on;
+	long frame_number, initial_frame, final_frame;
 	/* Limits that stop a runaway scene with a clear error instead of a hang or a
 	 * crash (--max-include-depth, --max-macro-depth, --max-loop-iterations);
 	 * 0 means the EVAL_DEFAULT_ value. */

@@ -17,6 +17,7 @@ extern "C" {
 typedef struct {
 	const char *scene;   /* the scene file's name */
 	long samples;        /* per pixel */
+	int bits;            /* 16: 16 bits a channel in PNG and PPM; 0 or 8: 8 */
 } image_meta;
 
 int image_write(const char *path, const float *rgb, int width, int height, const image_meta *meta,

@@ -52,8 +52,11 @@ static int write_atomic(const std::string &p, const float *rgb, int width, int h
 	if (!out)
 		return fail(err, errlen, "cannot write '" + p + "': no image format for this extension");
 	bool linear = is_linear_format(p);
-	ImageSpec spec(width, height, channels, linear ? TypeDesc::FLOAT : TypeDesc::UINT8);
+	TypeDesc fixed = meta && meta->bits > 8 ? TypeDesc::UINT16 : TypeDesc::UINT8;   // formats without 16 bits get 8
+	ImageSpec spec(width, height, channels, linear ? TypeDesc::FLOAT : fixed);
 	spec.attribute("oiio:ColorSpace", linear ? "Linear" : "sRGB");
+	if (!linear && fixed == TypeDesc::UINT16)   // PNM's writer reads the depth from here
+		spec.attribute("oiio:BitsPerSample", 16);
 	spec.attribute("Software", "eclat " PACKAGE_VERSION);
 	if (meta && meta->scene)
 		spec.attribute("eclat:scene", meta->scene);

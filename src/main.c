@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "cli_pov.h"
 #include "device.h"
 #include "eval.h"
 #include "film.h"
@@ -46,12 +47,14 @@ struct options {
 	int max_include_depth, max_macro_depth;   /* 0: the evaluator's defaults */
 	long max_loop_iterations;
 	int mesh_time_limit;
+	int threads;      /* --threads, POV-Ray's +WT; 0: the device's own */
+	cli_pov pov;      /* what POV-Ray's switches and INI files asked for besides */
 };
 
 enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_DIR,
        OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_BVH_LAYOUT, OPT_STATS, OPT_SKIP_UNSUPPORTED, OPT_EXPORT_MESH2,
        OPT_MAX_INCLUDE_DEPTH, OPT_MAX_MACRO_DEPTH, OPT_MAX_LOOP_ITERATIONS, OPT_MESH_TIME_LIMIT,
-       OPT_IO_SECURITY, OPT_IO_ALLOW, OPT_IO_ALLOW_WRITE };
+       OPT_IO_SECURITY, OPT_IO_ALLOW, OPT_IO_ALLOW_WRITE, OPT_THREADS };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -78,6 +81,7 @@ static const struct option long_options[] = {
 	{ "io-security", required_argument, NULL, OPT_IO_SECURITY },
 	{ "io-allow", required_argument, NULL, OPT_IO_ALLOW },
 	{ "io-allow-write", required_argument, NULL, OPT_IO_ALLOW_WRITE },
+	{ "threads", required_argument, NULL, OPT_THREADS },
 	{ "device", required_argument, NULL, OPT_DEVICE },
 	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
 	{ "kernel-dir", required_argument, NULL, OPT_KERNEL_DIR },
@@ -116,6 +120,7 @@ static void usage(FILE *out)
 		"      --bvh-layout NAME wide (default): 4-wide nodes with quantized boxes;\n"
 		"                        binary: the builders' tree as it is, for comparison\n"
 		"      --stats           print the BVHs' statistics and the tests per ray\n"
+		"      --threads N       at most N threads on PoCL's CPU device (POV-Ray's +WT)\n"
 		"      --device N        OpenCL device to use (default: first GPU, else first CPU)\n"
 		"      --list-devices    list the OpenCL devices and exit\n"
 		"      --kernel-dir DIR  read the kernel sources from DIR instead of the built-in copy\n"
@@ -143,8 +148,10 @@ static void usage(FILE *out)
 		"  -h, --help            show this help and exit\n"
 		"  -V, --version         show the version and exit\n"
 		"\n"
-		"POV-Ray's +WN +HN +OFILE +IFILE switches and Declare=NAME=VALUE work too. Ctrl-C finishes the pass\n"
-		"under way and writes the image rendered so far.\n"
+		"POV-Ray's switches (+W320 +H240 +A -D +FN16 +Iscene.pov...), KEY=VALUE settings\n"
+		"and INI files (render.ini, render.ini[Section]) work too: see FOR POV-RAY USERS in\n"
+		"eclat(1). -D NAME=VALUE declares; -D alone is POV-Ray's display switch.\n"
+		"Ctrl-C finishes the pass under way and writes the image rendered so far.\n"
 		"The scene language is described in eclat-scene(5), the options in eclat(1).\n",
 		DEFAULT_WIDTH, DEFAULT_HEIGHT, DEFAULT_SAMPLES, DEFAULT_MAX_DEPTH, EVAL_DEFAULT_INCLUDE_DEPTH,
 		EVAL_DEFAULT_MACRO_DEPTH, EVAL_MAX_MACRO_DEPTH_LIMIT, EVAL_DEFAULT_LOOP_ITERATIONS,
@@ -270,41 +277,6 @@ static int integrator_arg(const char *s)
 	exit(1);
 }
 
-/* POV-Ray's switches for the common settings: +W640 +H480 +Ofile.png +Iscene.pov
- * become --width=640 and so on; the strings live as long as argv. */
-static void translate_pov_switches(int argc, char **argv)
-{
-	static const char *const map[][2] = { { "W", "--width=" }, { "H", "--height=" },
-	                                      { "O", "--output=" }, { "I", "" } };
-	for (int i = 1; i < argc; i++) {
-		if (strncmp(argv[i], "Declare=", 8) == 0) {   /* POV-Ray's Declare=NAME=VALUE */
-			size_t n = strlen(argv[i]) + 3;
-			char *opt = malloc(n);
-			if (!opt)
-				exit(1);
-			snprintf(opt, n, "-D%s", argv[i] + 8);
-			argv[i] = opt;
-			continue;
-		}
-		if (argv[i][0] != '+' || !argv[i][1])
-			continue;
-		size_t k = 0;
-		while (k < 4 && argv[i][1] != map[k][0][0])
-			k++;
-		if (k == 4 || !argv[i][2]) {
-			fprintf(stderr, "eclat: unsupported POV-Ray switch '%s' (eclat knows +WN +HN +OFILE +IFILE)\n",
-			        argv[i]);
-			exit(1);
-		}
-		size_t n = strlen(map[k][1]) + strlen(argv[i] + 2) + 1;
-		char *opt = malloc(n);
-		if (!opt)
-			exit(1);
-		snprintf(opt, n, "%s%s", map[k][1], argv[i] + 2);
-		argv[i] = opt;   /* kept until exit, like argv itself */
-	}
-}
-
 static void parse_options(int argc, char **argv, struct options *o)
 {
 	*o = (struct options){ .width = DEFAULT_WIDTH, .height = DEFAULT_HEIGHT,
@@ -312,9 +284,10 @@ static void parse_options(int argc, char **argv, struct options *o)
 	                       .samples = DEFAULT_SAMPLES, .max_depth = -1, .device = -1,
 	                       .mesh_time_limit = MESH_IO_DEFAULT_TIME_LIMIT };
 	o->kernel_dir = getenv("ECLAT_KERNEL_DIR");
-	translate_pov_switches(argc, argv);
+	static const char shortopts[] = "o:W:H:s:I:D:qhV";
+	argc = cli_pov_args(argc, argv, long_options, shortopts, &o->pov, &argv);
 	int c;
-	while ((c = getopt_long(argc, argv, "o:W:H:s:I:D:qhV", long_options, NULL)) != -1) {
+	while ((c = getopt_long(argc, argv, shortopts, long_options, NULL)) != -1) {
 		switch (c) {
 		case 'o': o->output = optarg; break;
 		case 'W': o->width = int_arg("--width", optarg, 1, MAX_SIZE); break;
@@ -323,6 +296,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case OPT_SEED: o->seed = int_arg("--seed", optarg, 0, INT_MAX); break;
 		case OPT_MAX_DEPTH: o->max_depth = int_arg("--max-depth", optarg, 0, 256); break;
 		case OPT_DEVICE: o->device = int_arg("--device", optarg, 0, 63); break;
+		case OPT_THREADS: o->threads = int_arg("--threads", optarg, 1, 512); break;
 		case OPT_INTEGRATOR: o->integrator = integrator_arg(optarg); break;
 		case OPT_TIME_LIMIT: o->time_limit = seconds_arg("--time-limit", optarg); break;
 		case OPT_CHECKPOINT: o->checkpoint = seconds_arg("--checkpoint", optarg); break;
@@ -362,28 +336,18 @@ static void parse_options(int argc, char **argv, struct options *o)
 			exit(1);
 		}
 	}
-	if (o->list_devices || (o->export_mesh2 && optind == argc))
+	o->scene = o->pov.scene;
+	if (o->list_devices || (o->export_mesh2 && !o->scene))
 		return;
-	if (optind != argc - 1) {
-		fprintf(stderr, optind == argc ? "eclat: no scene file given\n" : "eclat: give one scene file, not %d\n",
-		        argc - optind);
+	if (!o->scene || o->pov.n_plain_scenes > 1) {
+		fprintf(stderr, !o->scene ? "eclat: no scene file given\n" : "eclat: give one scene file, not %d\n",
+		        o->pov.n_plain_scenes);
+		if (o->pov.after_display && o->scene)
+			fprintf(stderr, "eclat: note: -D before '%s' is POV-Ray's display switch; "
+			        "to declare, write -D NAME=VALUE\n", o->pov.after_display);
 		fprintf(stderr, "Try 'eclat --help' for more information.\n");
 		exit(1);
 	}
-	o->scene = argv[optind];
-}
-
-/* "dir/cornell.scn" renders to "cornell.png" in the current folder, as POV-Ray does. */
-static char *default_output(const char *scene)
-{
-	const char *base = strrchr(scene, '/');
-	base = base ? base + 1 : scene;
-	const char *dot = strrchr(base, '.');
-	size_t stem = dot && dot != base ? (size_t)(dot - base) : strlen(base);
-	char *out = malloc(stem + 5);
-	if (out)
-		snprintf(out, stem + 5, "%.*s.png", (int)stem, base);
-	return out;
 }
 
 static int same_file(const char *a, const char *b)
@@ -436,16 +400,39 @@ static void catch_signals(void)
 
 struct output {
 	const char *path, *scene;
+	int bits;          /* POV-Ray's +FN16: 16; 0: the format's own */
+	const int *part;   /* POV-Ray's +SC +SR +EC +ER in pixels (CLI_REGION_), or NULL */
 };
+
+/* POV-Ray's image of a part is the whole image, black outside the part. */
+static const float *black_outside(const film *f, const int *part)
+{
+	float *rgb = malloc((size_t)f->width * f->height * 3 * sizeof *rgb);
+	if (!rgb)
+		return NULL;
+	for (int y = 0; y < f->height; y++)
+		for (int x = 0; x < f->width; x++) {
+			size_t i = ((size_t)y * f->width + x) * 3;
+			int in = x >= part[CLI_REGION_LEFT] && x <= part[CLI_REGION_RIGHT] && y >= part[CLI_REGION_TOP] &&
+			         y <= part[CLI_REGION_BOTTOM];
+			for (int c = 0; c < 3; c++)
+				rgb[i + c] = in ? f->rgb[i + c] : 0.0f;
+		}
+	return rgb;
+}
 
 static int write_film(const film *f, void *ctx)
 {
 	const struct output *out = ctx;
-	image_meta meta = { out->scene, f->samples };
+	image_meta meta = { out->scene, f->samples, out->bits };
 	char err[512];
-	if (image_write(out->path, f->rgb, f->width, f->height, &meta, err, sizeof err) == 0)
+	const float *rgb = out->part ? black_outside(f, out->part) : f->rgb;
+	int rc = rgb ? image_write(out->path, rgb, f->width, f->height, &meta, err, sizeof err) : -1;
+	if (rgb != f->rgb)
+		free((float *)rgb);
+	if (rc == 0)
 		return 0;
-	fprintf(stderr, "eclat: %s\n", err);
+	fprintf(stderr, "eclat: %s\n", rgb ? err : "out of memory");
 	return -1;
 }
 
@@ -455,9 +442,9 @@ static int write_aovs(const struct options *o, const film *f)
 	float *rgb = malloc((size_t)f->width * f->height * 3 * sizeof *rgb);
 	int rc = rgb ? 0 : -1;
 	for (int i = 0; rc == 0 && i < o->n_aovs; i++) {
-		struct output out = { o->aov_file[i], o->scene };
+		struct output out = { o->aov_file[i], o->scene, 0, NULL };
 		if (strcmp(o->aov_name[i], "heat") == 0) {
-			image_meta meta = { o->scene, f->samples };
+			image_meta meta = { o->scene, f->samples, 0 };
 			char err[512];
 			double mean;
 			rc = image_write_heat(out.path, f->heat, f->width, f->height, &meta, &mean, err, sizeof err);
@@ -551,7 +538,29 @@ static void warn_if_dark(const struct options *o, const scene *s, const lower_re
 		             "the image will be black", o->scene);
 }
 
-static int render_scene(const struct options *o, const scene *s, const char *output)
+/* --threads N: PoCL's CPU device reads its thread cap from the environment
+ * when the platform is first opened, so it is set before that. */
+static int set_threads(const struct options *o)
+{
+	char n[16];
+	snprintf(n, sizeof n, "%d", o->threads);
+	if (o->threads > 0 && setenv("POCL_MAX_PTHREAD_COUNT", n, 1) != 0) {
+		fprintf(stderr, "eclat: --threads: %s\n", strerror(errno));
+		return -1;
+	}
+	return 0;
+}
+
+/* What POV-Ray's switches asked for that eclat does not do, said once the
+ * image's name is known. */
+static void warn_pov(const cli_frame *f, const char *output)
+{
+	if (f->frames > 1)
+		diag_warning(SRC_NOWHERE, "eclat renders one frame of an animation for now: frame %ld (clock %g) of "
+		             "the %ld asked for, to '%s'", f->frame, f->clock, f->frames, output);
+}
+
+static int render_scene(const struct options *o, const scene *s, const char *output, const int *part)
 {
 	lower_result lr;
 	lower_options lo = { o->bvh, o->median_depth, o->bvh_layout };
@@ -564,10 +573,12 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		return rc;
 	}
 	warn_if_dark(o, s, &lr);   /* only when there is an image to warn about */
-	struct output out = { output, o->scene };
-	int whitted = o->integrator == INTEGRATOR_WHITTED;   /* deterministic: one sample is the image */
+	struct output out = { output, o->scene, o->pov.bits, part };
+	/* deterministic: one sample is the image; POV-Ray's +A asks for the 3x3 grid
+	 * of kernels/integrator_whitted.cl */
+	int whitted = o->integrator == INTEGRATOR_WHITTED, whitted_samples = o->pov.antialias == 1 ? 9 : 1;
 	render_settings rs = {
-		.width = o->width, .height = o->height, .samples = whitted ? 1 : o->samples, .seed = o->seed,
+		.width = o->width, .height = o->height, .samples = whitted ? whitted_samples : o->samples, .seed = o->seed,
 		.max_depth = o->max_depth >= 0 ? o->max_depth
 		           : s->max_trace_level > 0 ? s->max_trace_level : DEFAULT_MAX_DEPTH,
 		.integrator = o->integrator, .adc_bailout = s->adc_bailout, .gamma = s->film_gamma, .quiet = o->quiet,
@@ -582,7 +593,7 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	int rc = 1;
 	catch_signals();
 	int ran = -1;   /* 1: failed after some passes, whose samples f holds */
-	if (device_open(&dev, o->device) == 0 &&
+	if (set_threads(o) == 0 && device_open(&dev, o->device) == 0 &&
 	    (prog = device_build(&dev, o->kernel_dir, lower_kernel_options(&lr), lr.functions)) != NULL)
 		ran = render_run(&dev, prog, &lr, &rs, &f, &st);
 	if (ran >= 0) {
@@ -650,18 +661,19 @@ int main(int argc, char **argv)
 	struct options o;
 	parse_options(argc, argv, &o);
 	if (o.list_devices)
-		return device_list(stdout) < 0 ? 1 : 0;
+		return set_threads(&o) || device_list(stdout) < 0 ? 1 : 0;
 	if (o.export_mesh2)
 		return export_mesh2(&o);
 
-	char *output = o.output ? strdup(o.output) : default_output(o.scene);
+	char *output = cli_pov_output(&o.pov, o.scene, o.output);
 	if (!output)
 		return 1;
 	int rc = 1;
 	int bad_output = !o.dump_ast && !o.check && check_output(o.scene, output);
 	for (int i = 0; i < o.n_aovs && !bad_output && !o.check && !o.dump_ast; i++)
 		bad_output = check_output(o.scene, o.aov_file[i]);
-	if (bad_output) {
+	int part[4], has_part = cli_pov_region(&o.pov, o.width, o.height, part);
+	if (bad_output || has_part < 0) {
 		free(output);
 		return 1;
 	}
@@ -681,6 +693,18 @@ int main(int argc, char **argv)
 	eopt.n_io_read_dirs = o.n_io_read_dirs;
 	eopt.io_write_dirs = o.io_write_dirs;
 	eopt.n_io_write_dirs = o.n_io_write_dirs;
+	cli_frame frame;
+	cli_pov_frame(&o.pov, &frame);
+	eopt.clock = frame.clock;
+	eopt.clock_delta = frame.clock_delta;
+	eopt.clock_on = frame.clock_on;
+	eopt.frame_number = frame.frame;
+	eopt.initial_frame = frame.initial_frame;
+	eopt.final_frame = frame.final_frame;
+	eopt.initial_clock = frame.initial_clock;
+	eopt.final_clock = frame.final_clock;
+	if (!o.dump_ast && !o.check)
+		warn_pov(&frame, output);
 	eopt.image_width = o.width;
 	eopt.image_height = o.height;
 	ast_node *tree = parse_file(o.scene, SRC_NOWHERE);
@@ -694,7 +718,7 @@ int main(int argc, char **argv)
 	} else if (eval_scene(tree, &s, &eopt) == 0 && diag_error_count() == 0) {
 		if (o.dump_scene)
 			scene_dump(&s, stdout);
-		rc = render_scene(&o, &s, output);
+		rc = render_scene(&o, &s, output, has_part ? part : NULL);
 	}
 	scene_free(&s);
 	ast_free(tree);
