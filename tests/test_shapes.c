@@ -393,9 +393,10 @@ struct device_scene {
 
 static cl_mem buffer(struct device_scene *ds, cl_mem_flags flags, size_t bytes, const void *data)
 {
-	cl_int err;
-	return clCreateBuffer(ds->dev->context, flags | (data ? CL_MEM_COPY_HOST_PTR : 0), bytes ? bytes : 16,
-	                      (void *)data, &err);
+	cl_int err;   /* an empty one is 16 bytes of nothing: no copy from a 0-byte array */
+	bool copy = data && bytes > 0;
+	return clCreateBuffer(ds->dev->context, flags | (copy ? CL_MEM_COPY_HOST_PTR : 0), bytes ? bytes : 16,
+	                      copy ? (void *)data : NULL, &err);
 }
 
 /* Casts n rays (8 floats each: origin, tmax, direction, 0) through
