@@ -198,6 +198,8 @@ int eval_height_field_arguments(struct eval *e, struct cursor *c, const ast_node
 	}
 	if (rc < 0)
 		return -1;
+	bool skipped = rc > 0;   /* --skip-unsupported: its items are still read, then it is left out */
+	rc = 0;
 	while (rc == 0 && (item = eval_next(c, &err)) != NULL) {
 		const ast_node *neg;
 		const char *wd = eval_word_item(item, &neg);
@@ -216,16 +218,15 @@ int eval_height_field_arguments(struct eval *e, struct cursor *c, const ast_node
 			break;
 		}
 	}
-	if (rc == 0 && !err && h && w >= 2 && hh >= 2) {
+	if (rc == 0 && !err && skipped) {
+		o->mesh = -1;
+	} else if (rc == 0 && !err && h && w >= 2 && hh >= 2) {
 		scene_mesh m = { .loc = b->loc };
 		make_mesh(h, w, hh, smooth, water, &m);
 		o->mesh = scene_add_mesh(e->s, &m);
 	} else if (rc == 0 && !err && h) {
 		eval_error(e, b->loc, "a height_field's image needs at least 2 x 2 pixels, not %d x %d", w, hh);
 		rc = -1;
-	} else if (rc > 0) {
-		o->mesh = -1;   /* --skip-unsupported: left out, with the warning */
-		rc = 0;
 	}
 	free(h);
 	return rc || err ? -1 : 0;

@@ -230,6 +230,14 @@ static int warp_block(struct eval *e, const ast_node *b, scene_pigment *pg)
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
 		const char *name = word(e, item);
+		const char *mapping = item->kind == AST_FLAG && (item->kw == KW_PLANAR || item->kw == KW_SPHERICAL ||
+		                      item->kw == KW_CYLINDRICAL) ? ast_keyword_name(item->kw)
+		                    : name && (strcmp(name, "toroidal") == 0 || strcmp(name, "cubic") == 0) ? name : NULL;
+		if (w.kind < 0 && mapping) {   /* POV-Ray 3.7's mapping warps: the pattern is left unwarped */
+			eval_warn_once(e, item->loc, "mapping warp", "the '%s' warp is not supported yet; ignored", mapping);
+			eval_cursor_free(&c);
+			return 0;
+		}
 		if (w.kind < 0 && item->kind == AST_ARG && item->kw == KW_TURBULENCE)
 			w = (scene_warp){ .kind = WARP_TURBULENCE, .a = { 0, 0, 0, 0.5 }, .b = { 2, 6 } };
 		if (w.kind == WARP_TURBULENCE && (rc = turbulence_item(e, item, &w)) <= 0)

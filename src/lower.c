@@ -462,7 +462,11 @@ static bvh_box world_box(const dev_prim *inst, const float box[2][3]);
  * mesh's tree's, moved. */
 int lower_mesh_instance(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id)
 {
-	if (lower_in_csg(lw)) {
+	if (lower_in_csg(lw)) {   /* triangles have no inside test yet */
+		if (lw->opt->skip_unsupported) {
+			diag_warning(o->loc, "a mesh in CSG is not supported yet; left out");
+			return 0;
+		}
 		diag_error(o->loc, "a mesh in CSG is not supported yet");
 		return -1;
 	}
@@ -925,7 +929,7 @@ const char *lower_kernel_options(const lower_result *lr)
 int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 {
 	memset(out, 0, sizeof *out);
-	static const lower_options defaults = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_DEFAULT };
+	static const lower_options defaults = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_DEFAULT, 0 };
 	struct lowering lw = { .opt = opt ? opt : &defaults, .s = s };
 	lw.target = &lw.top;
 	lw.meshes = calloc(s->n_meshes + 1, sizeof *lw.meshes);

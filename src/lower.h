@@ -25,6 +25,7 @@ typedef struct {
 	int builder;        /* LOWER_BVH_SAH (default) or LOWER_BVH_MEDIAN */
 	int median_depth;   /* the median builder's maximum depth */
 	int layout;         /* LOWER_LAYOUT_BINARY or LOWER_LAYOUT_WIDE */
+	int skip_unsupported;  /* --skip-unsupported: what lowering cannot do is left out with a warning */
 } lower_options;
 
 /* What --stats prints about one BVH. */
