@@ -104,7 +104,7 @@ extern "C" int image_read(const char *path, long max_texels, image_data *out, ch
 		std::string why = OIIO::geterror();
 		return fail(err, errlen, why.empty() ? "no image format reads it" : why);
 	}
-	const ImageSpec &spec = in->spec();
+	const ImageSpec spec = in->spec();   /* a copy: reading may change the reader's own (GIF's does) */
 	long texels = (long)spec.width * spec.height;
 	if (spec.width <= 0 || spec.height <= 0 || texels > max_texels) {
 		char msg[160];
@@ -121,7 +121,7 @@ extern "C" int image_read(const char *path, long max_texels, image_data *out, ch
 	float *rgba = (float *)std::malloc((size_t)texels * 4 * sizeof(float));
 	if (!rgba)
 		return fail(err, errlen, "out of memory");
-	int alpha = spec.alpha_channel >= 0 ? spec.alpha_channel : nc == 2 || nc == 4 ? nc - 1 : -1;
+	int alpha = spec.alpha_channel >= 0 && spec.alpha_channel < nc ? spec.alpha_channel : nc == 2 || nc == 4 ? nc - 1 : -1;
 	for (long i = 0; i < texels; i++) {
 		const float *s = &px[(size_t)i * nc];
 		float *d = &rgba[(size_t)i * 4];
