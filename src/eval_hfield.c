@@ -28,11 +28,6 @@
 static const char *const types[] = { "gif", "tga", "pot", "png", "pgm", "ppm", "jpeg", "tiff", "sys", "exr", "hdr",
                                      "iff", "bmp" };
 
-static const char *word(const ast_node *n)
-{
-	return n->kind == AST_IDENT ? n->str : NULL;
-}
-
 /* The grid's heights (0 .. 65535), bottom row first, from the image file. */
 static int image_heights(struct eval *e, const ast_node *at, const char *name, double **h, int *w, int *hh)
 {
@@ -178,7 +173,9 @@ int eval_height_field_arguments(struct eval *e, struct cursor *c, const ast_node
 	if (item && item->kind == AST_FUNCTION) {
 		rc = function_heights(e, item, &h, &w, &hh);
 	} else {
-		const char *t = item ? word(item) : NULL;
+		const ast_node *neg = NULL;
+		const char *t = item ? eval_word_item(item, &neg) : NULL;
+		t = neg ? NULL : t;
 		bool typed = false;
 		for (size_t i = 0; t && i < sizeof types / sizeof *types; i++)
 			typed |= strcmp(t, types[i]) == 0;

@@ -95,6 +95,15 @@ static void trace_csg(const scene *sc, const struct objval *obj, const struct ob
 	}
 }
 
+/* The CSG object whose first leaf is the object's shape i, or NULL. */
+static const struct objcsg *csg_at(const struct objval *obj, int i)
+{
+	for (int k = 0; k < obj->n_csgs; k++)
+		if (obj->csgs[k].first == i)
+			return &obj->csgs[k];
+	return NULL;
+}
+
 /* The nearest hit of the object's shapes and CSG objects: 1 and the world
  * point and unit normal, or 0. */
 static int trace_object(const scene *sc, const struct objval *obj, const double o[3], const double d[3],
@@ -102,10 +111,7 @@ static int trace_object(const scene *sc, const struct objval *obj, const double 
 {
 	shape_hit h = { .t = INFINITY };
 	for (int i = 0; i < obj->n_objs;) {
-		const struct objcsg *g = NULL;
-		for (int k = 0; k < obj->n_csgs; k++)
-			if (obj->csgs[k].first == i)
-				g = &obj->csgs[k];
+		const struct objcsg *g = csg_at(obj, i);
 		if (g) {
 			trace_csg(sc, obj, g, o, d, &h);
 			i += g->n_leaves;
@@ -195,10 +201,7 @@ int eval_inside(struct eval *e, const ast_node *n, value *out)
 	const struct objval *obj = v.obj;
 	bool in = false;
 	for (int i = 0; i < obj->n_objs && !in;) {
-		const struct objcsg *g = NULL;
-		for (int k = 0; k < obj->n_csgs; k++)
-			if (obj->csgs[k].first == i)
-				g = &obj->csgs[k];
+		const struct objcsg *g = csg_at(obj, i);
 		struct leaves c = { e->s, &obj->objs[i], { p[0], p[1], p[2] } };
 		if (g) {
 			in = csg_inside(g->ops, g->n_ops, leaf_inside, &c);
