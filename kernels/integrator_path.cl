@@ -29,7 +29,7 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 {
 	global const dev_params *p = sc->p;
 	float3 o, d;
-	if (!camera_ray(p, px, py, rng_uniform(key, 0), rng_uniform(key, 1), &o, &d))
+	if (!camera_view(sc, px, py, rng_uniform(key, 0), rng_uniform(key, 1), &o, &d))
 		return (float3)(0.0f);   /* no ray there: POV-Ray's pixel is black */
 	o = camera_lens(p, o, &d, light_square_to_disc(rng_uniform(key, 2), rng_uniform(key, 3)));
 	float3 radiance = (float3)(0.0f), beta = (float3)(1.0f), sigma = (float3)(0.0f);

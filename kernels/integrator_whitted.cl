@@ -482,7 +482,7 @@ kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p
 		first_hit first = { (float3)(0.0f), (float3)(0.0f), 0.0f, -1 };
 		uint tests = counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA];
 		float2 at = whitted_subpixel(p->sample_base + s);
-		if (camera_ray(p, px, py, at.x, at.y, &o, &d)) {
+		if (camera_view(&sc, px, py, at.x, at.y, &o, &d)) {
 			d = normalize(d);
 			whitted_ray camera = whitted_child(o, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE, p->camera_solids);
 			counts[COUNT_RAYS + RAY_CAMERA]++;

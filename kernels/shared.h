@@ -348,7 +348,7 @@ typedef struct {
 enum {
 	CAMERA_PERSPECTIVE = 0, CAMERA_ORTHOGRAPHIC, CAMERA_FISHEYE, CAMERA_ULTRA_WIDE_ANGLE, CAMERA_OMNIMAX,
 	CAMERA_PANORAMIC, CAMERA_CYLINDER_1, CAMERA_CYLINDER_2, CAMERA_CYLINDER_3, CAMERA_CYLINDER_4,
-	CAMERA_SPHERICAL, CAMERA_TYPES
+	CAMERA_SPHERICAL, CAMERA_MESH, CAMERA_TYPES
 };
 
 enum { INTEGRATOR_PATH = 0, INTEGRATOR_NAIVE = 1, INTEGRATOR_WHITTED = 2 };
@@ -406,7 +406,8 @@ enum { SCENE_SHADOWS_PASS = 1 };
 	X(dev_map_entry, maps) \
 	X(dev_image, images) \
 	X(float4, texels) \
-	X(dev_fog, fogs)
+	X(dev_fog, fogs) \
+	X(float4, camera_rays)
 
 /* The aov buffer, when asked for: three float4 a pixel, sums over its samples.
  * [0] rgb: albedo of the first surface; w: samples that hit a surface

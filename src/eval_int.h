@@ -320,6 +320,8 @@ void eval_apply_texture(struct eval *e, src_loc loc, scene_material *m, bool tex
 int eval_looks_like(struct eval *e, const ast_node *b, const double at[3], struct lightval *l);
 void eval_transform_light(struct lightval *l, const xform *t);
 int eval_camera(struct eval *e, const ast_node *b, scene_camera *out);
+/* mesh_camera { } in a camera (eval_camera_mesh.c): makes c a mesh camera */
+int eval_camera_mesh(struct eval *e, const ast_node *b, scene_camera *c);
 /* fog { } (eval_fog.c): as a statement, and as a value */
 int eval_fog(struct eval *e, const ast_node *b, scene_fog *out);
 int eval_fog_statement(struct eval *e, const ast_node *b);

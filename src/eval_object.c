@@ -1024,6 +1024,34 @@ static int mesh_file(struct eval *e, struct cursor *c, const ast_node *item, str
 
 /* mesh { TRIANGLE... [inside_vector <V>] [OBJECT_MODIFIERS...] }
  * mesh { file "NAME" [inside_vector <V>] [OBJECT_MODIFIERS...] }   (eclat) */
+/* mesh { MESH_IDENTIFIER [OBJECT_MODIFIERS...] } (and mesh2's): a copy of a
+ * declared mesh, as POV-Ray's Parse_Object_Id allows. 1 when b does not start
+ * with an identifier of an object. */
+static int declared_mesh(struct eval *e, const ast_node *b, struct cursor *c, value *out)
+{
+	int err = 0;
+	const ast_node *first = eval_next(c, &err);
+	if (err)
+		return -1;
+	const value *v = first && first->kind == AST_IDENT ? eval_lookup(e, first->str) : NULL;
+	if (!v || v->kind != V_OBJECT) {
+		if (first)
+			eval_unget(c, first);
+		return 1;
+	}
+	if (v->obj->n_objs != 1 || v->obj->n_lights || v->obj->objs[0].shape != SHAPE_MESH) {
+		eval_error(e, first->loc, "'%s' is not a mesh", first->str);
+		return -1;
+	}
+	if (eval_expr(e, first, out))
+		return -1;
+	char a[40];
+	int rc = modifiers(e, c, out->obj, with_article(ast_keyword_name(b->kw), a, sizeof a));
+	if (rc)
+		eval_value_free(out);
+	return rc;
+}
+
 static int mesh(struct eval *e, const ast_node *b, value *out)
 {
 	struct mesh_build mb = { 0 };
@@ -1031,6 +1059,11 @@ static int mesh(struct eval *e, const ast_node *b, value *out)
 	int err = 0, rc = 0;
 	const ast_node *item;
 	eval_cursor_init(&c, e, b);
+	if ((rc = declared_mesh(e, b, &c, out)) <= 0) {
+		eval_cursor_free(&c);
+		return rc;
+	}
+	rc = 0;
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
 		if (item->kind == AST_BLOCK && (item->kw == KW_TRIANGLE || item->kw == KW_SMOOTH_TRIANGLE))
 			rc = mesh_triangle(e, item, &mb);
@@ -1327,6 +1360,11 @@ static int mesh2(struct eval *e, const ast_node *b, value *out)
 	int err = 0, rc = 0;
 	const ast_node *item;
 	eval_cursor_init(&c, e, b);
+	if ((rc = declared_mesh(e, b, &c, out)) <= 0) {
+		eval_cursor_free(&c);
+		return rc;
+	}
+	rc = 0;
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL)
 		if ((rc = mesh2_item(e, item, &mb.m, &p)) > 0) {
 			eval_unget(&c, item);

@@ -268,10 +268,8 @@ static int camera_item(struct eval *e, struct cursor *c, const ast_node *item, s
 		return rc;
 	if (item->kind == AST_BLOCK && item->kw == KW_NORMAL)
 		return eval_material_block(e, item, NULL);
-	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, "mesh_camera") == 0) {
-		eval_error(e, item->loc, "the mesh_camera is not supported yet (POV-Ray's other camera types are)");
-		return -1;
-	}
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, "mesh_camera") == 0)
+		return eval_camera_mesh(e, item, &ci->c);
 	return eval_not_valid(e, item, "a camera");
 }
 

@@ -720,7 +720,7 @@ static int lower_camera(const scene *s, dev_params *p)
 	const float *bg = s->background;
 	p->background = (float4){ bg[0], bg[1], bg[2], 0 };
 	/* POV-Ray blurs only with blur_samples, and a negative aperture as its opposite */
-	double aperture = c->blur_samples > 0 ? fabs(c->aperture) : 0;
+	double aperture = c->blur_samples > 0 && c->type != CAMERA_MESH ? fabs(c->aperture) : 0;
 	p->lens = (float4){ (float)aperture, (float)(c->focal_distance > 0 ? c->focal_distance : 1), (float)c->type, 0 };
 	return 0;
 }
@@ -929,7 +929,7 @@ const char *lower_kernel_options(const lower_result *lr)
 int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 {
 	memset(out, 0, sizeof *out);
-	static const lower_options defaults = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_DEFAULT, 0 };
+	static const lower_options defaults = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_DEFAULT, 0, 0, 0 };
 	struct lowering lw = { .opt = opt ? opt : &defaults, .s = s };
 	lw.target = &lw.top;
 	lw.meshes = calloc(s->n_meshes + 1, sizeof *lw.meshes);
@@ -972,7 +972,8 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	out->params.scene_flags = shadows_pass ? SCENE_SHADOWS_PASS : 0;
 	out->normals = lw.normals;
 	out->n_normals = lw.n_normals;
-	if (lower_camera(s, &out->params) || lower_fogs(s, out))
+	if (lower_camera(s, &out->params) || lower_fogs(s, out) ||
+	    lower_camera_mesh(s, lw.opt->width, lw.opt->height, out))
 		rc = -1;
 	out->params.n_fogs = out->n_fogs;
 	out->params.camera_solids = out->n_fogs ? lower_camera_solids(s) : 0;
@@ -1013,6 +1014,7 @@ void lower_free(lower_result *r)
 	free(r->object_flags);
 	free(r->lights);
 	free(r->fogs);
+	free(r->camera_rays);
 	free(r->emitters);
 	memset(r, 0, sizeof *r);
 }

@@ -26,6 +26,7 @@ typedef struct {
 	int median_depth;   /* the median builder's maximum depth */
 	int layout;         /* LOWER_LAYOUT_BINARY or LOWER_LAYOUT_WIDE */
 	int skip_unsupported;  /* --skip-unsupported: what lowering cannot do is left out with a warning */
+	int width, height;  /* the image's, for a mesh_camera's rays */
 } lower_options;
 
 /* What --stats prints about one BVH. */
@@ -78,6 +79,8 @@ typedef struct {
 	int n_lights;
 	dev_fog *fogs;            /* the scene's fogs (lower_fog.c) */
 	int n_fogs;
+	float4 *camera_rays;      /* a mesh_camera's rays (lower_camera_mesh.c), or NULL */
+	long n_camera_rays;
 	dev_emitter *emitters;    /* emissive primitives of the top level, with their power's cdf */
 	int n_emitters;
 	lower_bvh_stats *stats;   /* [0] the top level, then one per mesh placed */
@@ -93,6 +96,9 @@ void lower_free(lower_result *r);
 
 /* The scene's fogs into out->fogs (lower_fog.c); -1 when out of memory. */
 int lower_fogs(const scene *s, lower_result *out);
+/* A mesh_camera's rays for an image of width x height into out->camera_rays
+ * (lower_camera_mesh.c); nothing for the other cameras. -1 after an error. */
+int lower_camera_mesh(const scene *s, int width, int height, lower_result *out);
 /* How many solid (non-hollow) objects hold the camera's location. */
 int lower_camera_solids(const scene *s);
 

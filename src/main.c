@@ -563,7 +563,7 @@ static void warn_pov(const cli_frame *f, const char *output)
 static int render_scene(const struct options *o, const scene *s, const char *output, const int *part)
 {
 	lower_result lr;
-	lower_options lo = { o->bvh, o->median_depth, o->bvh_layout, o->skip_unsupported };
+	lower_options lo = { o->bvh, o->median_depth, o->bvh_layout, o->skip_unsupported, o->width, o->height };
 	int failed = lower_scene(s, &lo, &lr);
 	if (!failed && o->stats)
 		print_bvh_stats(s, &lr);

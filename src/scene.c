@@ -199,6 +199,14 @@ void scene_mesh_free(scene_mesh *m)
 	free(m->mats);
 }
 
+int scene_add_camera_mesh(scene *s, const scene_camera_mesh *m)
+{
+	if (s->n_camera_meshes == s->cap_camera_meshes)
+		s->camera_meshes = grow(s->camera_meshes, &s->cap_camera_meshes, sizeof *m);
+	s->camera_meshes[s->n_camera_meshes] = *m;
+	return s->n_camera_meshes++;
+}
+
 int scene_add_csg(scene *s, const scene_csg *c)
 {
 	if (s->n_csgs == s->cap_csgs)
@@ -226,6 +234,7 @@ void scene_free(scene *s)
 	for (int i = 0; i < s->n_blobs; i++)
 		free(s->blobs[i].part);
 	free(s->blobs);
+	free(s->camera_meshes);
 	for (int i = 0; i < s->n_polys; i++)
 		free(s->polys[i].c);
 	free(s->polys);
@@ -300,7 +309,7 @@ const char *scene_camera_name(int type)
 {
 	static const char *const names[CAMERA_TYPES] = {   /* ORDER CAMERA_ */
 		"perspective", "orthographic", "fisheye", "ultra_wide_angle", "omnimax", "panoramic",
-		"cylinder 1", "cylinder 2", "cylinder 3", "cylinder 4", "spherical",
+		"cylinder 1", "cylinder 2", "cylinder 3", "cylinder 4", "spherical", "mesh_camera",
 	};
 	return type >= 0 && type < CAMERA_TYPES ? names[type] : "unknown";
 }
@@ -758,6 +767,12 @@ void scene_dump(const scene *s, FILE *out)
 		fnum(out, "angle", c->h_angle);
 		fputc(' ', out);
 		num(out, c->v_angle);
+	} else if (c->type == CAMERA_MESH) {
+		fprintf(out, " rays %d distribution %d meshes %d", c->mesh_rays, c->mesh_method, c->mesh_count);
+		if (c->mesh_max_distance > 0)
+			fnum(out, "max_distance", c->mesh_max_distance);
+		if (c->mesh_smooth)
+			fputs(" smooth", out);
 	} else if (c->type != CAMERA_PERSPECTIVE && c->type != CAMERA_ORTHOGRAPHIC && c->type != CAMERA_OMNIMAX &&
 	           c->type != CAMERA_PANORAMIC) {   /* the types whose rays use the angle */
 		fnum(out, "angle", c->angle);

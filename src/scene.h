@@ -278,7 +278,19 @@ typedef struct {
 	 * orthographic keep (default 90); the spherical camera's are h_angle
 	 * and v_angle (default 360 and 180) */
 	double angle, h_angle, v_angle;
+	/* mesh_camera (CAMERA_MESH): its meshes are scene.camera_meshes[mesh_first ..
+	 * mesh_first + mesh_count - 1]; rays per pixel, POV-Ray's distribution method
+	 * 0 to 3, its maximum ray distance (0: none) and smooth */
+	int mesh_first, mesh_count, mesh_rays, mesh_method;
+	double mesh_max_distance;
+	bool mesh_smooth;
 } scene_camera;
+
+/* A mesh of a mesh_camera: scene.meshes[mesh] placed by xf. */
+typedef struct {
+	int mesh;
+	xform xf;
+} scene_camera_mesh;
 
 typedef enum { LIGHT_POINT, LIGHT_SPOT, LIGHT_PARALLEL } scene_light_kind;
 
@@ -389,6 +401,8 @@ typedef struct {
 	int n_outlines, cap_outlines;
 	scene_blob *blobs;
 	int n_blobs, cap_blobs;
+	scene_camera_mesh *camera_meshes;  /* the mesh_cameras' meshes (scene_camera.mesh_first) */
+	int n_camera_meshes, cap_camera_meshes;
 	scene_poly *polys;
 	int n_polys, cap_polys;
 	scene_pigment *pigments;   /* the pattern pigments' pool, scene_material.pattern */
@@ -451,6 +465,8 @@ int scene_add_outline(scene *s, const scene_outline *o);
 int scene_add_poly(scene *s, const scene_poly *p);
 /* Takes ownership of b's parts; returns its index. */
 int scene_add_blob(scene *s, const scene_blob *b);
+/* Appends a mesh_camera's mesh; returns its index. */
+int scene_add_camera_mesh(scene *s, const scene_camera_mesh *m);
 void scene_free(scene *s);
 /* Frees a mesh's arrays (those of a mesh not added to a scene: scene_free frees
  * the scene's own). */

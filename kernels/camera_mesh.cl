@@ -1,0 +1,18 @@
+/* camera_mesh.cl: the camera ray an integrator starts from. POV-Ray's
+ * mesh_camera reads the rays lower_camera_mesh.c made for each pixel; the
+ * other types are camera.cl's. With several rays a pixel, a sample's
+ * sub-pixel place picks its ray, so the samples share the rays out evenly. */
+inline bool camera_view(const scene_data *sc, int px, int py, float jx, float jy, float3 *o, float3 *dir)
+{
+	global const dev_params *p = sc->p;
+	if ((int)p->lens.z != CAMERA_MESH)
+		return camera_ray(p, px, py, jx, jy, o, dir);
+	int rays = (int)p->lens.w;
+	int r = clamp((int)(jx * (float)rays), 0, rays - 1);
+	global const float4 *ray = sc->camera_rays + (((size_t)r * p->height + py) * p->width + px) * 2;
+	if (ray[0].w == 0.0f)
+		return false;   /* no face there: POV-Ray's pixel is black */
+	*o = ray[0].xyz;
+	*dir = ray[1].xyz;
+	return true;
+}
