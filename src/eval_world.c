@@ -740,6 +740,26 @@ static int global_arg(struct eval *e, const ast_node *item)
 	return 0;
 }
 
+/* charset ascii | utf8 | sys: eclat reads every string as UTF-8, which
+ * covers ASCII; 1 when item is not charset. */
+static int charset(struct eval *e, struct cursor *c, const ast_node *item)
+{
+	if (item->kind != AST_IDENT || strcmp(item->str, "charset") != 0 || eval_lookup(e, item->str))
+		return 1;
+	int err = 0;
+	const ast_node *set = eval_next(c, &err);
+	if (err)
+		return -1;
+	if (!set || set->kind != AST_IDENT ||
+	    (strcmp(set->str, "ascii") != 0 && strcmp(set->str, "utf8") != 0 && strcmp(set->str, "sys") != 0)) {
+		eval_error(e, set ? set->loc : item->loc, "charset is ascii, utf8 or sys");
+		return -1;
+	}
+	if (strcmp(set->str, "sys") == 0)
+		eval_warn_once(e, set->loc, "charset sys", "charset sys is read as utf8");
+	return 0;
+}
+
 /* global_settings { [assumed_gamma F] [max_trace_level N] [adc_bailout F]
  *                   [ambient_light COLOR] }: POV-Ray's other settings are ignored. */
 static int global_settings(struct eval *e, const ast_node *b)
@@ -749,7 +769,7 @@ static int global_settings(struct eval *e, const ast_node *b)
 	const ast_node *item;
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
-		if ((rc = eval_skip_pov_word(e, &c, item)) <= 0)
+		if ((rc = charset(e, &c, item)) <= 0 || (rc = eval_skip_pov_word(e, &c, item)) <= 0)
 			continue;
 		if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
 			eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
