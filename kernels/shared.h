@@ -386,8 +386,10 @@ typedef struct {
 	int pad[3];
 } dev_params;
 /* SCENE_SHADOWS_PASS: some surface lets shadow rays through (no_shadow, filter,
- * transmit), so shadow rays look at what they meet instead of stopping at the first. */
-enum { SCENE_SHADOWS_PASS = 1 };
+ * transmit), so shadow rays look at what they meet instead of stopping at the first.
+ * SCENE_SKY_LEGACY: the sky_sphere blends its layers as POV-Ray before 3.7 (a
+ * scene whose #version is older). */
+enum { SCENE_SHADOWS_PASS = 1, SCENE_SKY_LEGACY = 2 };
 
 /* The scene's buffers, read by every kernel that renders, in the kernels'
  * argument order (after them: params, film, counters, aov). One list for the

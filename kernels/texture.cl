@@ -415,12 +415,26 @@ inline float3 texture_sky(const scene_data *sc, float3 d)
 	sp.x = sp.object_x = d;
 	sp.ng = sp.ns = -d;
 	sp.d = d;
+	/* POV-Ray 3.6's: a layer's opacity scaled by the filters and transmits
+	 * (not the colours) of the layers above it, the background by their
+	 * colours' product times their filters' plus their transmits' */
+	bool legacy = (p->scene_flags & SCENE_SKY_LEGACY) != 0;
+	float3 colours = (float3)(1.0f), emission = (float3)(1.0f);
+	float filters = 1.0f, transmits = 1.0f, trans = 1.0f;
 	for (int i = p->sky + p->sky_layers - 1; p->sky >= 0 && i >= p->sky; i--) {
 		sp.m = &sc->materials[i];
 		pigment_colour c = texture_pigment(sc, &sp);
-		col += c.rgb * (1.0f - c.filter - c.transmit) * through * sp.m->emission.xyz;
+		float opacity = 1.0f - c.filter - c.transmit;
+		emission = sp.m->emission.xyz;
+		col += c.rgb * (legacy ? trans * opacity : opacity) * (legacy ? emission : through * emission);
 		through *= c.filter * c.rgb + c.transmit;
+		colours *= c.rgb;
+		filters *= c.filter;
+		transmits *= c.transmit;
+		trans = fabs(filters) + fabs(transmits);
 	}
+	if (legacy && p->sky >= 0)
+		return col + p->background.xyz * (colours * filters + transmits);
 	return col + p->background.xyz * through;
 }
 

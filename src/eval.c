@@ -1191,6 +1191,7 @@ int eval_scene(const ast_node *root, scene *s, const eval_options *opt)
 		eval_scene_statement(&e, item);
 	eval_cursor_free(&c);
 	film_gamma(&e);
+	s->sky_legacy = e.version_given && e.version < 3.7;
 	eval_free(&e);
 	return diag_error_count() > e.errors_at_start ? -1 : 0;
 }

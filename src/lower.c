@@ -969,7 +969,7 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	int shadows_pass = lw.textures.see_through;
 	for (int i = 0; i < s->n_objects; i++)
 		shadows_pass |= (s->objects[i].flags & OBJ_NO_SHADOW) != 0;
-	out->params.scene_flags = shadows_pass ? SCENE_SHADOWS_PASS : 0;
+	out->params.scene_flags = (shadows_pass ? SCENE_SHADOWS_PASS : 0) | (s->sky_legacy ? SCENE_SKY_LEGACY : 0);
 	out->normals = lw.normals;
 	out->n_normals = lw.n_normals;
 	if (lower_camera(s, &out->params) || lower_fogs(s, out) ||

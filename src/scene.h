@@ -418,6 +418,8 @@ typedef struct {
 	scene_material *sky_layers;  /* the sky_sphere's pigments as written (the last on top),
 	                              * its transformations in tex_xf, its emission in emission */
 	int n_sky_layers;
+	bool sky_legacy;      /* the scene's #version is before 3.7: the sky_sphere's layers
+	                       * blend as POV-Ray 3.6 blends them */
 	scene_fog *fogs;      /* in the order written; they combine as POV-Ray combines them */
 	int n_fogs, cap_fogs;
 	/* global_settings */
