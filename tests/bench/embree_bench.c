@@ -46,6 +46,16 @@ double bench_now_ms(void)
 	return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
 }
 
+/* The process's processor time in milliseconds: what the two sides' threads
+ * spent, which the other programs on a shared machine change less than the
+ * wall time (only one side runs at a time). */
+static double cpu_ms(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+	return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
+
 static uint64_t rng_state = 0x2545f4914f6cdd1dull;
 
 static float uniform(void)   /* splitmix64 */
@@ -274,16 +284,18 @@ static void *embree_worker(void *arg)
 	}
 }
 
-static double embree_trace(RTCScene sc, const ray_set *r, float *t)
+static double embree_trace(RTCScene sc, const ray_set *r, float *t, double *per_cpu)
 {
 	embree_job j = { sc, r, 0, t };
 	pthread_t th[THREADS];
-	double t0 = bench_now_ms();
+	double c0 = cpu_ms(), t0 = bench_now_ms();
 	for (int i = 0; i < THREADS; i++)
 		pthread_create(&th[i], NULL, embree_worker, &j);
 	for (int i = 0; i < THREADS; i++)
 		pthread_join(th[i], NULL);
-	return r->n / ((bench_now_ms() - t0) * 1e3);   /* M rays/s */
+	double ms = bench_now_ms() - t0;
+	*per_cpu = r->n / ((cpu_ms() - c0) * 1e3);
+	return r->n / (ms * 1e3);   /* M rays/s */
 }
 
 /* ---- eclat's side: trace_rays on the device ---- */
@@ -322,15 +334,17 @@ static int eclat_prepare(device_ctx *dev, cl_program prog, const lower_result *l
 	return 0;
 }
 
-/* M rays/s, or -1; t gets each ray's answer as embree_trace gives it. */
-static double eclat_trace(eclat_set *e, float *t)
+/* M rays/s, or -1; t gets each ray's answer as embree_trace gives it, and
+ * *per_cpu the M rays per second of processor time. */
+static double eclat_trace(eclat_set *e, float *t, double *per_cpu)
 {
 	size_t global = (size_t)e->n;
-	double t0 = bench_now_ms();
+	double c0 = cpu_ms(), t0 = bench_now_ms();
 	cl_int err = clEnqueueNDRangeKernel(e->dev->queue, e->k, 1, NULL, &global, NULL, 0, NULL, NULL);
 	if (err == CL_SUCCESS)
 		err = clFinish(e->dev->queue);
 	double ms = bench_now_ms() - t0;
+	*per_cpu = e->n / ((cpu_ms() - c0) * 1e3);
 	cl_float4 *h = malloc((size_t)e->n * sizeof *h);
 	if (err == CL_SUCCESS)
 		err = clEnqueueReadBuffer(e->dev->queue, e->hits, CL_TRUE, 0, (size_t)e->n * sizeof *h, h, 0, NULL, NULL);
@@ -383,35 +397,38 @@ static int cmd_rays(const char *path, const char *mesh, int rounds)
 	camera_rays(&soup, &sets[0]);
 	secondary_rays(sc, &soup, &sets[0], &sets[1], &sets[2]);
 	eclat_set es[3];
-	double *fig[3][2];
+	double *fig[3][4], cpu;   /* wall: eclat, Embree; processor time: eclat, Embree */
 	float *ta = malloc((size_t)sets[0].n * sizeof *ta), *tb = malloc((size_t)sets[0].n * sizeof *tb);
 	for (int k = 0; k < 3; k++) {
 		if (eclat_prepare(&dev, prog, &lr, &sets[k], &es[k]))
 			return 1;
-		fig[k][0] = malloc((size_t)rounds * sizeof(double));
-		fig[k][1] = malloc((size_t)rounds * sizeof(double));
-		eclat_trace(&es[k], ta);   /* warm-up: the first launch compiles for the work-group size */
+		for (int f = 0; f < 4; f++)
+			fig[k][f] = malloc((size_t)rounds * sizeof(double));
+		eclat_trace(&es[k], ta, &cpu);   /* warm-up: the first launch compiles for the work-group size */
 	}
 	printf("rays: %d triangles; %d camera, %d diffuse, %d shadow rays; %d rounds, eclat then Embree\n", soup.n,
 	       sets[0].n, sets[1].n, sets[2].n, rounds);
 	for (int r = 0; r < rounds; r++)
 		for (int k = 0; k < 3; k++) {
-			fig[k][0][r] = eclat_trace(&es[k], ta);
-			fig[k][1][r] = embree_trace(sc, &sets[k], tb);
+			fig[k][0][r] = eclat_trace(&es[k], ta, &fig[k][2][r]);
+			fig[k][1][r] = embree_trace(sc, &sets[k], tb, &fig[k][3][r]);
 			if (fig[k][0][r] < 0)
 				return 1;
-			printf("round %d: %-7s eclat %6.2f M rays/s, Embree %6.2f (%.2fx); %d rays answered differently\n", r + 1,
-			       sets[k].name, fig[k][0][r], fig[k][1][r], fig[k][0][r] / fig[k][1][r],
+			printf("round %d: %-7s eclat %6.2f M rays/s, Embree %6.2f (%.2fx); per processor second %.2f and %.2f "
+			       "(%.2fx); %d rays answered differently\n", r + 1, sets[k].name, fig[k][0][r], fig[k][1][r],
+			       fig[k][0][r] / fig[k][1][r], fig[k][2][r], fig[k][3][r], fig[k][2][r] / fig[k][3][r],
 			       disagreements(&sets[k], ta, tb));
 			fflush(stdout);
 		}
 	for (int k = 0; k < 3; k++) {
-		double eb, em, bb, bm;
+		double eb, em, bb, bm, ecb, ecm, bcb, bcm;
 		best_median(fig[k][0], rounds, 0, &eb, &em);
 		best_median(fig[k][1], rounds, 0, &bb, &bm);
+		best_median(fig[k][2], rounds, 0, &ecb, &ecm);
+		best_median(fig[k][3], rounds, 0, &bcb, &bcm);
 		printf("summary: %s rays, M rays/s best and median: eclat %.2f %.2f, Embree rtc%s1 %.2f %.2f: "
-		       "eclat/Embree %.2fx\n", sets[k].name, eb, em, sets[k].shadow ? "Occluded" : "Intersect", bb, bm,
-		       em / bm);
+		       "eclat/Embree %.2fx; per processor second, medians: eclat %.2f, Embree %.2f: %.2fx\n", sets[k].name,
+		       eb, em, sets[k].shadow ? "Occluded" : "Intersect", bb, bm, em / bm, ecm, bcm, ecm / bcm);
 	}
 	rtcReleaseScene(sc);
 	rtcReleaseDevice(edev);
