@@ -242,7 +242,9 @@ TRAVERSE_FUNCTION(traverse_top, triangle_ray tri = triangle_setup(d);, {
 	if (q->type == PRIM_INSTANCE) {
 		float3 mo = intersect_to_local(q, o);
 		float3 md = (float3)(dot(q->a.xyz, d), dot(q->b.xyz, d), dot(q->c.xyz, d));
-		traverse_hit h = traverse_mesh(nodes, prims, q->link, mo, md, tmin, hit.t, any, counts, kind);
+		/* the node buffer's declared type again (the wide layout's loop reads it as bvh_wnode) */
+		traverse_hit h = traverse_mesh((global const bvh_node *)nodes, prims, q->link, mo, md, tmin, hit.t, any,
+		                               counts, kind);
 		if (h.prim >= 0) {
 			hit.t = h.t;
 			hit.prim = h.prim;
