@@ -76,3 +76,22 @@ kernel void function_values(int f, global const float4 *points, global float *ou
 	int i = get_global_id(0);
 	out[i] = scene_function_pattern(f, points[i].xyz);
 }
+
+/* make bench's traversal-only measure (tests/bench/embree_bench.c, against
+ * Embree's rtcIntersect1 and rtcOccluded1): rays as for raycast; hits[i].x the
+ * closest hit's distance (INFINITY: none) or, with any, 1 when something
+ * blocks the ray and 0 when not. Nothing is shaded. */
+kernel void trace_rays(global const bvh_node *nodes, global const dev_prim *prims, int n_prims, int n_planes,
+                       global const float4 *rays, global float4 *hits, int any)
+{
+	int i = get_global_id(0);
+	float3 o = rays[2 * i].xyz, d = rays[2 * i + 1].xyz;
+	float tmax = rays[2 * i].w;
+	uint counts[COUNT_N] = { 0 };
+	if (any) {
+		hits[i] = (float4)(traverse_any(nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts) ? 1.0f : 0.0f);
+		return;
+	}
+	traverse_hit h = traverse_closest(nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts, RAY_CAMERA);
+	hits[i] = (float4)(h.prim >= 0 ? h.t : INFINITY, as_float(h.prim), as_float(h.inst), 0.0f);
+}

@@ -6,8 +6,15 @@
  * functions are evaluated there from the corners themselves, so two triangles
  * that share an edge compute the same edge function for it with opposite signs:
  * a ray through the edge, or through a shared corner, hits one of them. */
-inline float triangle_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
-                                float tmin, float tmax)
+/* The ray's part of that test, the same for every triangle, which a mesh's
+ * traversal makes once a ray (traverse.cl): the axes in the order x, y, z of
+ * the sheared space (a shuffle mask, w kept) and the shear. */
+typedef struct {
+	uint4 axes;
+	float sx, sy, sz;
+} triangle_ray;
+
+inline triangle_ray triangle_setup(float3 d)
 {
 	float3 ad = fabs(d);
 	int kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
@@ -16,12 +23,23 @@ inline float triangle_intersect(float3 o, float3 d, global const dev_prim *prims
 	if (dz < 0.0f) {   /* keep the winding: swap x and y */
 		int k = kx; kx = ky; ky = k;
 	}
-	float sx = intersect_axis(d, kx) / dz, sy = intersect_axis(d, ky) / dz, sz = 1.0f / dz;
-	float3 a = p->a.xyz - o, b = p->b.xyz - o, c = p->c.xyz - o;
-	float az = intersect_axis(a, kz), bz = intersect_axis(b, kz), cz = intersect_axis(c, kz);
-	float ax = intersect_axis(a, kx) - sx * az, ay = intersect_axis(a, ky) - sy * az;
-	float bx = intersect_axis(b, kx) - sx * bz, by = intersect_axis(b, ky) - sy * bz;
-	float cx = intersect_axis(c, kx) - sx * cz, cy = intersect_axis(c, ky) - sy * cz;
+	triangle_ray r = { (uint4)((uint)kx, (uint)ky, (uint)kz, 3u), intersect_axis(d, kx) / dz,
+	                   intersect_axis(d, ky) / dz, 1.0f / dz };
+	return r;
+}
+
+/* The test with the ray's part made: each corner is moved to the ray's
+ * origin and its axes put in the sheared space's order by one shuffle. */
+inline float triangle_intersect_ray(float3 o, const triangle_ray *r, global const dev_prim *p, float tmin,
+                                    float tmax)
+{
+	float4 ro = shuffle((float4)(o, 0.0f), r->axes);
+	float4 a = shuffle(p->a, r->axes) - ro, b = shuffle(p->b, r->axes) - ro, c = shuffle(p->c, r->axes) - ro;
+	float sx = r->sx, sy = r->sy, sz = r->sz;
+	float az = a.z, bz = b.z, cz = c.z;
+	float ax = a.x - sx * az, ay = a.y - sy * az;
+	float bx = b.x - sx * bz, by = b.y - sy * bz;
+	float cx = c.x - sx * cz, cy = c.y - sy * cz;
 	float u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
 	if (u == 0.0f || v == 0.0f || w == 0.0f) {   /* on an edge: decide in double where there is one */
 #ifdef cl_khr_fp64
@@ -37,6 +55,13 @@ inline float triangle_intersect(float3 o, float3 d, global const dev_prim *prims
 		return tmax;
 	float t = (u * sz * az + v * sz * bz + w * sz * cz) / det;
 	return t > tmin && t < tmax ? t : tmax;
+}
+
+inline float triangle_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+                                float tmin, float tmax)
+{
+	triangle_ray r = triangle_setup(d);
+	return triangle_intersect_ray(o, &r, p, tmin, tmax);
 }
 
 inline float3 triangle_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)

@@ -29,17 +29,26 @@ inline traverse_ray traverse_setup(float3 o, float3 d)
 	return r;
 }
 
+/* The larger and the smaller of acc and x, where a NaN x leaves acc: written as
+ * a compare and a select on purpose, since fmax and fmin must also handle a NaN
+ * acc, which costs an unordered compare and a blend more each (acc never is
+ * NaN here: it starts at 0 or tmax). */
+#define TRAVERSE_MAX(ACC, X) ((X) > (ACC) ? (X) : (ACC))
+#define TRAVERSE_MIN(ACC, X) ((X) < (ACC) ? (X) : (ACC))
+#define TRAVERSE_MAX4(ACC, X) select((ACC), (X), (X) > (ACC))
+#define TRAVERSE_MIN4(ACC, X) select((ACC), (X), (X) < (ACC))
+
 /* Slab test against [0, tmax], with the entry plane chosen by the direction's sign
- * bit. A component of 0 * inf (a ray lying in a slab's plane) is NaN, which fmin
- * and fmax drop, so such a ray counts as inside that slab; the usual
- * fmin(t1, t2) form would turn it into +inf and miss a box the ray touches.
- * Returns the entry distance, or INFINITY when the box is missed. */
+ * bit. A component of 0 * inf (a ray lying in a slab's plane) is NaN, which
+ * TRAVERSE_MAX and TRAVERSE_MIN drop, so such a ray counts as inside that slab;
+ * the usual fmin(t1, t2) form would turn it into +inf and miss a box the ray
+ * touches. Returns the entry distance, or INFINITY when the box is missed. */
 inline float traverse_slab(float3 lo, float3 hi, const traverse_ray *r, float tmax)
 {
 	float3 tn = (select(lo, hi, r->neg) - r->o) * r->inv_d;
 	float3 tf = (select(hi, lo, r->neg) - r->o) * r->inv_d;
-	float enter = fmax(fmax(fmax(0.0f, tn.x), tn.y), tn.z);
-	float leave = fmin(fmin(fmin(tmax, tf.x), tf.y), tf.z);
+	float enter = TRAVERSE_MAX(TRAVERSE_MAX(TRAVERSE_MAX(0.0f, tn.x), tn.y), tn.z);
+	float leave = TRAVERSE_MIN(TRAVERSE_MIN(TRAVERSE_MIN(tmax, tf.x), tf.y), tf.z);
 	return enter <= leave * BVH_BOX_PAD ? enter : INFINITY;
 }
 
@@ -57,17 +66,19 @@ typedef struct {
 
 /* The traversal loop of one BVH from root, written once and made into a function
  * for each level (OpenCL has no recursion, and the top level calls the mesh
- * level). LEAF_PRIM tests primitive i against the ray (o, d), lowering hit.t and
+ * level). SETUP runs once a ray, before the walk (what every LEAF_PRIM of the ray
+ * shares). LEAF_PRIM tests primitive i against the ray (o, d), lowering hit.t and
  * setting hit.prim and hit.inst. With any, the first hit ends the walk. counts
  * adds up the node and primitive tests for the ray's kind (the heat map's measure). */
 #if !BVH_WIDE
-#define TRAVERSE_FUNCTION(NAME, LEAF_PRIM)                                                      \
+#define TRAVERSE_FUNCTION(NAME, SETUP, LEAF_PRIM)                                                \
 inline traverse_hit NAME(global const bvh_node *nodes, global const dev_prim *prims, int root,  \
                          float3 o, float3 d, float tmin, float tmax, bool any, uint *counts,     \
                          int kind)                                                              \
 {                                                                                               \
 	traverse_hit hit = { tmax, -1, -1, false };                                                        \
 	traverse_ray r = traverse_setup(o, d);                                                      \
+	SETUP                                                                                       \
 	int stack[BVH_STACK_SIZE], sp = 0, node = root;                                             \
 	counts[COUNT_NODES + kind]++;                                                               \
 	if (traverse_box(&nodes[root], &r, hit.t) == INFINITY)                                      \
@@ -110,24 +121,33 @@ inline traverse_hit NAME(global const bvh_node *nodes, global const dev_prim *pr
 
 #else
 
-/* Child k's box in a wide node: byte k of each quantized bound, times the
- * axis's step 2^e (exact), from the node's origin. */
-inline float3 traverse_qbound(uint qx, uint qy, uint qz, int k, float3 origin, float3 step)
+/* The four bytes of a quantized bound, children 0 to 3, as floats. */
+inline float4 traverse_qdecode(uint q)
 {
-	uint s = 8 * (uint)k;
-	return origin + (float3)((float)((qx >> s) & 255u), (float)((qy >> s) & 255u), (float)((qz >> s) & 255u)) * step;
+	return convert_float4((uint4)(q) >> (uint4)(0u, 8u, 16u, 24u) & (uint4)(255u));
 }
 
-/* The entry distance of child k of a wide node, INFINITY when it is missed or
- * absent (k >= nc). */
-inline float traverse_qchild(global const bvh_wnode *n, int k, int nc, float3 origin, float3 step,
-                             const traverse_ray *r, float tmax)
+/* The entry distances of a wide node's children, INFINITY for one missed or
+ * absent: the four boxes' slab tests side by side in float4s, which a CPU
+ * device runs in its vector unit (one work item still traces one ray). On
+ * each axis the direction's sign picks the byte words of the planes entered
+ * and left; a bound is origin + q * 2^e (exact), then as in traverse_slab. */
+inline float4 traverse_children(global const bvh_wnode *n, const traverse_ray *r, float tmax)
 {
-	if (k >= nc)
-		return INFINITY;
-	float3 lo = traverse_qbound(n->qlo_x, n->qlo_y, n->qlo_z, k, origin, step);
-	float3 hi = traverse_qbound(n->qhi_x, n->qhi_y, n->qhi_z, k, origin, step);
-	return traverse_slab(lo, hi, r, tmax);
+	uint meta = n->meta;
+	float sx = as_float((meta & 255u) << 23), sy = as_float(((meta >> 8) & 255u) << 23);
+	float sz = as_float(((meta >> 16) & 255u) << 23);
+	uint lx = n->qlo_x, hx = n->qhi_x, ly = n->qlo_y, hy = n->qhi_y, lz = n->qlo_z, hz = n->qhi_z;
+	float4 tnx = (n->origin_x + traverse_qdecode(r->neg.x ? hx : lx) * sx - r->o.x) * r->inv_d.x;
+	float4 tfx = (n->origin_x + traverse_qdecode(r->neg.x ? lx : hx) * sx - r->o.x) * r->inv_d.x;
+	float4 tny = (n->origin_y + traverse_qdecode(r->neg.y ? hy : ly) * sy - r->o.y) * r->inv_d.y;
+	float4 tfy = (n->origin_y + traverse_qdecode(r->neg.y ? ly : hy) * sy - r->o.y) * r->inv_d.y;
+	float4 tnz = (n->origin_z + traverse_qdecode(r->neg.z ? hz : lz) * sz - r->o.z) * r->inv_d.z;
+	float4 tfz = (n->origin_z + traverse_qdecode(r->neg.z ? lz : hz) * sz - r->o.z) * r->inv_d.z;
+	float4 enter = TRAVERSE_MAX4(TRAVERSE_MAX4(TRAVERSE_MAX4((float4)(0.0f), tnx), tny), tnz);
+	float4 leave = TRAVERSE_MIN4(TRAVERSE_MIN4(TRAVERSE_MIN4((float4)(tmax), tfx), tfy), tfz);
+	int4 hit = enter <= leave * BVH_BOX_PAD & (int4)(0, 1, 2, 3) < (int4)((int)(meta >> 24));
+	return select((float4)(INFINITY), enter, hit);
 }
 
 /* Orders two (distance, child) pairs, nearer first. */
@@ -142,7 +162,7 @@ inline float traverse_qchild(global const bvh_wnode *n, int k, int nc, float3 or
  * distances are sorted by a network of five exchanges (no private arrays, which
  * PoCL keeps in memory): the nearest is taken at once, the others hit are
  * stacked farthest first, the next nearest on top. */
-#define TRAVERSE_FUNCTION(NAME, LEAF_PRIM)                                                      \
+#define TRAVERSE_FUNCTION(NAME, SETUP, LEAF_PRIM)                                                \
 inline traverse_hit NAME(global const bvh_node *nodes_, global const dev_prim *prims, int root, \
                          float3 o, float3 d, float tmin, float tmax, bool any, uint *counts,     \
                          int kind)                                                              \
@@ -150,6 +170,7 @@ inline traverse_hit NAME(global const bvh_node *nodes_, global const dev_prim *p
 	global const bvh_wnode *nodes = (global const bvh_wnode *)nodes_;                           \
 	traverse_hit hit = { tmax, -1, -1, false };                                                        \
 	traverse_ray r = traverse_setup(o, d);                                                      \
+	SETUP                                                                                       \
 	int stack[BVH_STACK_SIZE], sp = 0, ref = root;                                              \
 	float tstack[BVH_STACK_SIZE];                                                               \
 	for (;;) {                                                                                  \
@@ -164,16 +185,9 @@ inline traverse_hit NAME(global const bvh_node *nodes_, global const dev_prim *p
 			}                                                                                   \
 		} else {                                                                                \
 			global const bvh_wnode *n = &nodes[ref];                                            \
-			uint meta = n->meta;                                                                \
-			int nc = (int)(meta >> 24);                                                         \
-			float3 origin = (float3)(n->origin_x, n->origin_y, n->origin_z);                    \
-			float3 step = (float3)(as_float((meta & 255u) << 23), as_float(((meta >> 8) & 255u) << 23), \
-			                       as_float(((meta >> 16) & 255u) << 23));                      \
-			counts[COUNT_NODES + kind] += nc;                                                   \
-			float t0 = traverse_qchild(n, 0, nc, origin, step, &r, hit.t);                      \
-			float t1 = traverse_qchild(n, 1, nc, origin, step, &r, hit.t);                      \
-			float t2 = traverse_qchild(n, 2, nc, origin, step, &r, hit.t);                      \
-			float t3 = traverse_qchild(n, 3, nc, origin, step, &r, hit.t);                      \
+			counts[COUNT_NODES + kind] += (int)(n->meta >> 24);                                 \
+			float4 t = traverse_children(n, &r, hit.t);                                         \
+			float t0 = t.x, t1 = t.y, t2 = t.z, t3 = t.w;                                       \
 			int c0 = n->child[0], c1 = n->child[1], c2 = n->child[2], c3 = n->child[3];         \
 			TRAVERSE_ORDER(t0, c0, t1, c1);                                                     \
 			TRAVERSE_ORDER(t2, c2, t3, c3);                                                     \
@@ -213,8 +227,8 @@ inline traverse_hit NAME(global const bvh_node *nodes_, global const dev_prim *p
 #endif
 
 /* A mesh's BVH, in the mesh's space: its primitives are triangles. */
-TRAVERSE_FUNCTION(traverse_mesh, {
-	float t = shape_intersect(o, d, prims, &prims[i], tmin, hit.t);
+TRAVERSE_FUNCTION(traverse_mesh, triangle_ray tri = triangle_setup(d);, {
+	float t = triangle_intersect_ray(o, &tri, &prims[i], tmin, hit.t);
 	if (t < hit.t) {
 		hit.t = t;
 		hit.prim = i;
@@ -223,12 +237,14 @@ TRAVERSE_FUNCTION(traverse_mesh, {
 
 /* The top level: an instance takes the ray into its mesh's space, where the
  * direction is not unit length, so t means the same distance in both spaces. */
-TRAVERSE_FUNCTION(traverse_top, {
+TRAVERSE_FUNCTION(traverse_top, triangle_ray tri = triangle_setup(d);, {
 	global const dev_prim *q = &prims[i];
 	if (q->type == PRIM_INSTANCE) {
 		float3 mo = intersect_to_local(q, o);
 		float3 md = (float3)(dot(q->a.xyz, d), dot(q->b.xyz, d), dot(q->c.xyz, d));
-		traverse_hit h = traverse_mesh(nodes, prims, q->link, mo, md, tmin, hit.t, any, counts, kind);
+		/* the node buffer's declared type again (the wide layout's loop reads it as bvh_wnode) */
+		traverse_hit h = traverse_mesh((global const bvh_node *)nodes, prims, q->link, mo, md, tmin, hit.t, any,
+		                               counts, kind);
 		if (h.prim >= 0) {
 			hit.t = h.t;
 			hit.prim = h.prim;
@@ -246,7 +262,11 @@ TRAVERSE_FUNCTION(traverse_top, {
 			hit.flip = flip;
 		}
 	} else {
-		float t = shape_intersect(o, d, prims, q, tmin, hit.t);
+		/* triangles, the most common, without the shapes' dispatch and with the
+		 * ray's part of their test made once */
+		float t = q->type == PRIM_TRIANGLE || q->type == PRIM_SMOOTH_TRIANGLE
+		        ? triangle_intersect_ray(o, &tri, q, tmin, hit.t)
+		        : shape_intersect(o, d, prims, q, tmin, hit.t);
 		if (t < hit.t) {
 			hit.t = t;
 			hit.prim = i;

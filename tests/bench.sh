@@ -5,8 +5,16 @@
 # rays per second by kind, and the BVH's tests per path with the SAH builder and
 # with the paper's median split. Figures are ratios within one run: the machine
 # is shared and noisy.
+# With Embree (EMBREE_BENCH: tests/bench/embree_bench, which make bench builds
+# when configure found it), first the comparison with it, each pair of runs
+# interleaved round by round (ROUNDS, 5): rays per second through the BVH
+# (camera, diffuse and shadow rays, eclat's traversal-only kernel against
+# rtcIntersect1/rtcOccluded1 on 2 threads), paths per second of the render
+# against a minimal Embree path tracer, and BVH build times.
 set -u
 : "${ECLAT:?}" "${top_srcdir:?}" "${MESH_DIR:?}"
+EMBREE_BENCH=${EMBREE_BENCH:-}
+ROUNDS=${ROUNDS:-5}
 
 # The figures are on the team's larger meshes, which the repository does not
 # hold (README.md, Tests). Without them there is nothing to measure: say where
@@ -62,6 +70,34 @@ build_ms() { # build_ms MESH: best and median milliseconds to build its BVH
 }
 
 paths_of() { sed -n 's/.*: \([0-9.]*\) M paths\/s.*/\1/p' "$out/log" | tail -n 1; }
+
+best_median() { # best_median: the highest and the median of the numbers on stdin
+	sort -g | awk '{ v[NR] = $1 } END { m = NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2; print v[NR], m }'
+}
+
+if [ -n "$EMBREE_BENCH" ]; then
+	echo "== against Embree, $ROUNDS rounds, each eclat then Embree (ratios: medians of the same run)"
+	"$EMBREE_BENCH" rays "$scene" "$mesh" "$ROUNDS" | sed 's/^/  /' || exit 1
+	r=0
+	: > "$out/eclat_paths"
+	: > "$out/embree_paths"
+	while [ "$r" -lt "$ROUNDS" ]; do
+		"$ECLAT" --stats -W 1080 -H 1080 --max-depth 5 -s "$SAMPLES" -D Mesh="\"$mesh\"" --io-allow "$MESH_DIR" \
+			-o "$out/bench.exr" "$scene" 2> "$out/log" || { cat "$out/log"; exit 1; }
+		e=$(paths_of)
+		b=$("$EMBREE_BENCH" paths "$scene" "$mesh" 1080 1080 "$SAMPLES" 5 | sed -n 's/^embree paths: \([0-9.]*\).*/\1/p')
+		echo "$e" >> "$out/eclat_paths"
+		echo "$b" >> "$out/embree_paths"
+		r=$((r + 1))
+		echo "  round $r: paths, 1080x1080, $SAMPLES samples, 5 bounces: eclat $e M paths/s, Embree $b"
+	done
+	set -- $(best_median < "$out/eclat_paths") $(best_median < "$out/embree_paths")
+	echo "$@" | awk '{ printf "  summary: paths, M paths/s best and median: eclat %.2f %.2f, Embree (minimal path tracer) %.2f %.2f: eclat/Embree %.2fx\n", $1, $2, $3, $4, $2 / $4 }'
+	"$EMBREE_BENCH" build "$BUILDS" "$MESH_DIR/bunny.ply" "$MESH_DIR/igea.ply" | sed 's/^/  /' || exit 1
+else
+	echo "== against Embree: left out, configure found no Embree 3 (apt-get install libembree-dev; ./bootstrap installs it)"
+fi
+
 run "path tracer, SAH BVH, binary layout, $SAMPLES samples" -s "$SAMPLES" --bvh-layout binary
 paths_binary=$(paths_of)
 sah=$(sed -n 's/^rays: all: .*, \([0-9.]*\) tests per path.*/\1/p' "$out/log")
@@ -89,9 +125,8 @@ tr '\r' '\n' < "$out/log" | grep -E '^(eclat|bvh):' | sed 's/^/  /'
 
 echo "== summary"
 echo "$paths $sah $median $sah_camera $median_camera $paths_binary $wide_camera $bunny_ms $igea_ms $BUILDS $csg_paths" | awk '{
-	printf "  path tracer: %.2f M paths/s; Blender Cycles (CPU) does 0.75 M samples/s here (%.2fx),\n", $1, $1 / 0.75
+	printf "  path tracer: %.2f M paths/s\n", $1
 	printf "  CSG blocks (1,000 boxes less three cylinders each): %.2f M paths/s, %.2fx the Cornell box'\''s\n", $13, ($1 > 0 ? $13 / $1 : 0)
-	printf "  Embree'\''s example path tracer 1.7 M paths/s (%.2fx)\n", $1 / 1.7
 	printf "  BVH layouts: wide %.2f M paths/s, binary %.2f (wide/binary %.2fx); tests per camera ray,\n", $1, $6, ($6 > 0 ? $1 / $6 : 0)
 	printf "  counting each child box: wide %.1f, binary %.1f\n", $7, $4
 	printf "  BVH tests per camera ray (binary layout): SAH %.1f (target 24 or fewer), median split %.1f (the paper: about 108);\n", $4, $5
