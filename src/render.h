@@ -12,6 +12,10 @@
 typedef struct render_settings {
 	int width, height;
 	int samples;           /* per pixel, at most */
+	int sample_first;      /* the number of the first sample (--sample-range), for the random numbers */
+	const int64_t *start_sums;  /* NULL, or the film's sums of start_samples samples done (--resume) */
+	long start_samples;
+	int row_first, rows;   /* the rows to render (a region's); rows 0: all */
 	int seed;
 	int max_depth;         /* bounces */
 	int integrator;        /* INTEGRATOR_PATH, INTEGRATOR_NAIVE or INTEGRATOR_WHITTED (whose
@@ -29,7 +33,7 @@ typedef struct render_settings {
 
 typedef struct {
 	double seconds;
-	long samples;                /* per pixel, done */
+	long samples;                /* per pixel, done (start_samples included) */
 	uint64_t counts[COUNT_N];    /* camera, bounce and shadow rays, box and primitive tests */
 } render_stats;
 
