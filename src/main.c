@@ -51,6 +51,7 @@ struct options {
 	int mesh_time_limit;
 	int threads;      /* --threads, POV-Ray's +WT; 0: the device's own */
 	int range_first, range_count;   /* --sample-range; count 0: all samples */
+	int devices[MAX_LIST], n_devices;   /* --device 0,2 (more than one); --device all: n_devices -1 */
 	const char *resume;             /* --resume FILE */
 	int resume_output;              /* --continue, POV-Ray's +C: resume from the output when it is there */
 	cli_pov pov;      /* what POV-Ray's switches and INI files asked for besides */
@@ -134,7 +135,8 @@ static void usage(FILE *out)
 		"                        binary: the builders' tree as it is, for comparison\n"
 		"      --stats           print the BVHs' statistics and the tests per ray\n"
 		"      --threads N       at most N threads on PoCL's CPU device (POV-Ray's +WT)\n"
-		"      --device N        OpenCL device to use (default: first GPU, else first CPU)\n"
+		"      --device N        OpenCL device to use (default: first GPU, else first CPU);\n"
+		"                        N,M,... or all: render on several at once\n"
 		"      --list-devices    list the OpenCL devices and exit\n"
 		"      --kernel-dir DIR  read the kernel sources from DIR instead of the built-in copy\n"
 		"  -I, --include-path DIR  look for #include files in DIR too (repeatable)\n"
@@ -213,6 +215,26 @@ static void range_arg(struct options *o, const char *s)
 	}
 	o->range_first = (int)first;
 	o->range_count = (int)count;
+}
+
+/* --device N | N,M... | all */
+static void device_arg(struct options *o, const char *s)
+{
+	o->n_devices = 0;
+	if (strcmp(s, "all") == 0) {
+		o->n_devices = -1;
+		return;
+	}
+	char *list = strdup(s), *save = NULL;
+	for (char *t = list ? strtok_r(list, ",", &save) : NULL; t && o->n_devices < MAX_LIST;
+	     t = strtok_r(NULL, ",", &save))
+		o->devices[o->n_devices++] = int_arg("--device", t, 0, 63);
+	free(list);
+	if (o->n_devices == 0 || s[strlen(s) - 1] == ',') {
+		fprintf(stderr, "eclat: --device needs a device number, a list of them (0,2) or all, not '%s'\n", s);
+		exit(1);
+	}
+	o->device = o->n_devices > 0 ? o->devices[0] : -1;
 }
 
 /* --bvh sah | median[:DEPTH] */
@@ -326,7 +348,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case 's': o->samples = int_arg("--samples", optarg, 1, 1 << 24); break;
 		case OPT_SEED: o->seed = int_arg("--seed", optarg, 0, INT_MAX); break;
 		case OPT_MAX_DEPTH: o->max_depth = int_arg("--max-depth", optarg, 0, 256); break;
-		case OPT_DEVICE: o->device = int_arg("--device", optarg, 0, 63); break;
+		case OPT_DEVICE: device_arg(o, optarg); break;
 		case OPT_THREADS: o->threads = int_arg("--threads", optarg, 1, 512); break;
 		case OPT_INTEGRATOR: o->integrator = integrator_arg(optarg); break;
 		case OPT_TIME_LIMIT: o->time_limit = seconds_arg("--time-limit", optarg); break;
@@ -746,8 +768,12 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	int64_t *resumed = NULL;
 	catch_signals();
 	int ran = -1;   /* 1: failed after some passes, whose samples f holds */
-	if (plan_split(o, s, output, part, in, &rs, &info, &resumed) == 0 && set_threads(o) == 0 &&
-	    device_open(&dev, o->device) == 0 &&
+	int several = o->n_devices < 0 || o->n_devices > 1;
+	int planned = plan_split(o, s, output, part, in, &rs, &info, &resumed) == 0 && set_threads(o) == 0;
+	if (planned && several)
+		ran = render_multi(o->devices, o->n_devices < 0 ? 0 : o->n_devices, o->kernel_dir, &lr, &rs, &f, &st,
+		                   dev.name, sizeof dev.name);
+	else if (planned && !several && device_open(&dev, o->device) == 0 &&
 	    (prog = device_build(&dev, o->kernel_dir, lower_kernel_options(&lr), lr.functions)) != NULL)
 		ran = render_run(&dev, prog, &lr, &rs, &f, &st);
 	if (ran >= 0) {

@@ -164,12 +164,13 @@ static int injected_failure(void)
 	return s && ++passes == atoi(s);
 }
 
-static int run_pass(struct pass_loop *pl, int count)
+/* Samples base to base + count - 1 of every pixel (of its rows). */
+static int run_pass(struct pass_loop *pl, int base, int count)
 {
 	cl_uint counts[COUNT_N] = { 0 };
 	if (injected_failure())
 		return device_fail("clEnqueueNDRangeKernel", CL_OUT_OF_RESOURCES);
-	pl->params.sample_base = pl->rs->sample_first + (int)pl->st->samples;
+	pl->params.sample_base = base;
 	pl->params.samples_per_pass = count;
 	cl_int err = clEnqueueWriteBuffer(pl->d->queue, pl->bufs[BUF_params], CL_TRUE, 0, sizeof pl->params,
 	                                  &pl->params, 0, NULL, NULL);
@@ -211,6 +212,28 @@ static int pass_size(size_t npix)
 	return k < 1 ? 1 : k > 64 ? 64 : (int)k;
 }
 
+/* The next pass's samples: the next of this render's, or of the queue that
+ * several devices share. 0 when there are none left. */
+static int next_pass(struct pass_loop *pl, int per, int *base, int *count)
+{
+	const render_settings *rs = pl->rs;
+	render_queue *q = rs->queue;
+	if (!q) {
+		int left = rs->samples - (int)pl->st->samples;
+		*base = rs->sample_first + (int)pl->st->samples;
+		*count = left < per ? left : per;
+		return left > 0;
+	}
+	pthread_mutex_lock(&q->lock);
+	int left = q->end - q->next;
+	per = per < q->most ? per : q->most;
+	*base = q->next;
+	*count = left < per ? left : per;
+	q->next += left > 0 ? *count : 0;
+	pthread_mutex_unlock(&q->lock);
+	return left > 0;
+}
+
 static int run_passes(struct pass_loop *pl, film *f)
 {
 	const render_settings *rs = pl->rs;
@@ -230,9 +253,9 @@ static int run_passes(struct pass_loop *pl, film *f)
 		return device_fail("clEnqueueFillBuffer", err);
 	int tty = !rs->quiet && isatty(STDERR_FILENO), per = pass_size(pl->npix);
 	double last_checkpoint = pl->t0;
-	while (pl->st->samples < rs->samples) {
-		int left = rs->samples - (int)pl->st->samples;
-		if (run_pass(pl, left < per ? left : per)) {
+	int base, count;
+	while (next_pass(pl, per, &base, &count)) {
+		if (run_pass(pl, base, count)) {
 			if (tty)
 				fputc('\n', stderr);
 			/* keep the passes done, when the device still gives them back */
