@@ -1,7 +1,9 @@
 // image_split.cpp: EXRs that carry a render's exact sums and its record
-// (src/split.h), through OpenImageIO. The sums are 64-bit integers; EXR has no
-// such channel, so each is kept as three float channels of 22, 22 and 20 bits,
-// which floats hold exactly, in a lossless compression.
+// (src/split.h), through OpenImageIO. The image is the file's first part, as
+// in any EXR, with the record as metadata; the sums are a second part, where
+// viewers and image comparisons do not look. They are 64-bit integers; EXR has
+// no such channel, so each is kept as three float channels of 22, 22 and 20
+// bits, which floats hold exactly, in a lossless compression.
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
@@ -18,7 +20,7 @@
 using namespace OIIO;
 
 static const char *const sum_names[4] = { "R", "G", "B", "tests" };
-enum { SUM_CHANNELS = 12, CHANNELS = 3 + SUM_CHANNELS, CHUNK_BITS = 22 };
+enum { SUM_CHANNELS = 12, CHUNK_BITS = 22 };
 
 static int fail(char *err, size_t errlen, const std::string &msg)
 {
@@ -53,10 +55,9 @@ extern "C" int split_write(const char *path, const float *rgb, const int64_t *su
 	auto out = ImageOutput::create(p);
 	if (!out)
 		return fail(err, errlen, "cannot write '" + p + "': no image format for this extension");
-	ImageSpec spec(info->width, info->height, CHANNELS, TypeDesc::FLOAT);
-	spec.channelnames = { "R", "G", "B" };
-	for (int i = 0; i < SUM_CHANNELS; i++)
-		spec.channelnames.push_back(sum_channel(i));
+	if (!out->supports("multiimage"))
+		return fail(err, errlen, "cannot write '" + p + "': OpenImageIO writes no multi-part EXR");
+	ImageSpec spec(info->width, info->height, 3, TypeDesc::FLOAT);
 	spec.attribute("oiio:ColorSpace", "Linear");
 	spec.attribute("compression", "zip");   // lossless, as the sums must be
 	spec.attribute("Software", "eclat " PACKAGE_VERSION);
@@ -73,20 +74,27 @@ extern "C" int split_write(const char *path, const float *rgb, const int64_t *su
 	spec.attribute("eclat:options", info->key.options ? info->key.options : "");
 	spec.attribute("eclat:files", info->key.files ? info->key.files : "");
 
+	ImageSpec sums_spec(info->width, info->height, SUM_CHANNELS, TypeDesc::FLOAT);
+	sums_spec.channelnames.clear();
+	for (int i = 0; i < SUM_CHANNELS; i++)
+		sums_spec.channelnames.push_back(sum_channel(i));
+	sums_spec.attribute("compression", "zip");
+	sums_spec.attribute("name", "eclat.sums");
+	spec.attribute("name", "rgb");
+
 	size_t n = (size_t)info->width * info->height;
-	std::vector<float> px(n * CHANNELS);
-	for (size_t i = 0; i < n; i++) {
-		float *d = &px[i * CHANNELS];
-		std::memcpy(d, rgb + 3 * i, 3 * sizeof *d);
+	std::vector<float> px(n * SUM_CHANNELS);
+	for (size_t i = 0; i < n; i++)
 		for (int c = 0; c < 4; c++)
-			to_chunks(sums[4 * i + c], d + 3 + 3 * c);
-	}
+			to_chunks(sums[4 * i + c], &px[i * SUM_CHANNELS + 3 * c]);
 	std::string dir = Filesystem::parent_path(p);
 	std::string tmp = (dir.empty() ? std::string() : dir + "/") + "." + Filesystem::filename(p) + ".eclat-" +
 	                  std::to_string(getpid()) + ".tmp";
-	if (!out->open(tmp, spec))
+	ImageSpec specs[2] = { spec, sums_spec };
+	if (!out->open(tmp, 2, specs))
 		return fail(err, errlen, "cannot write '" + p + "': " + out->geterror());
-	bool ok = out->write_image(TypeDesc::FLOAT, px.data());
+	bool ok = out->write_image(TypeDesc::FLOAT, rgb) && out->open(tmp, sums_spec, ImageOutput::AppendSubimage) &&
+	          out->write_image(TypeDesc::FLOAT, px.data());
 	std::string msg = out->geterror();
 	ok = out->close() && ok;
 	if (!ok) {
@@ -107,14 +115,14 @@ static char *dup_attr(const ImageSpec &spec, const char *name)
 }
 
 /* EXR keeps channels in alphabetical order: each sum's is found by its name. */
-static bool read_info(const ImageSpec &spec, split_info *info, int at[SUM_CHANNELS])
+static bool read_info(const ImageSpec &spec, const ImageSpec &sums, split_info *info, int at[SUM_CHANNELS])
 {
 	const ParamValue *total = spec.find_attribute("eclat:total", TypeDesc::INT);
-	if (!total || spec.nchannels != CHANNELS)
+	if (!total)
 		return false;
 	for (int i = 0; i < SUM_CHANNELS; i++) {
-		at[i] = spec.channelindex(sum_channel(i));
-		if (at[i] < 0)
+		at[i] = sums.channelindex(sum_channel(i));
+		if (at[i] < 0 || sums.width != spec.width || sums.height != spec.height)
 			return false;
 	}
 	info->width = spec.width;
@@ -145,14 +153,15 @@ extern "C" int split_read(const char *path, split_info *info, int64_t **sums, ch
 	}
 	const ImageSpec spec = in->spec();
 	int at[SUM_CHANNELS];
-	if (std::strcmp(in->format_name(), "openexr") != 0 || !read_info(spec, info, at)) {
+	bool exr = std::strcmp(in->format_name(), "openexr") == 0;
+	if (!exr || !in->seek_subimage(1, 0) || !read_info(spec, in->spec(), info, at)) {
 		split_info_free(info);
 		return fail(err, errlen, "not an EXR of eclat's with its sums (eclat writes them in every .exr it renders)");
 	}
 	size_t n = (size_t)spec.width * spec.height;
-	std::vector<float> px(n * CHANNELS);
+	std::vector<float> px(n * SUM_CHANNELS);
 	int64_t *s = (int64_t *)std::malloc(n * 4 * sizeof *s);
-	if (!s || !in->read_image(0, 0, 0, CHANNELS, TypeDesc::FLOAT, px.data())) {
+	if (!s || !in->read_image(1, 0, 0, SUM_CHANNELS, TypeDesc::FLOAT, px.data())) {
 		std::string why = s ? in->geterror() : "out of memory";
 		std::free(s);
 		split_info_free(info);
@@ -162,7 +171,7 @@ extern "C" int split_read(const char *path, split_info *info, int64_t **sums, ch
 		for (int c = 0; c < 4; c++) {
 			float chunk[3];
 			for (int k = 0; k < 3; k++)
-				chunk[k] = px[i * CHANNELS + at[3 * c + k]];
+				chunk[k] = px[i * SUM_CHANNELS + at[3 * c + k]];
 			s[4 * i + c] = from_chunks(chunk);
 		}
 	*sums = s;

@@ -144,7 +144,7 @@ wait_job() {
 	done
 }
 same() {
-	"$OIIOTOOL" --fail 0 --warn 0 "$2" "$3" --diff > diff.out 2>&1 && pass "$1" ||
+	"$OIIOTOOL" -a --fail 0 --warn 0 "$2" "$3" --diff > diff.out 2>&1 && pass "$1" ||
 		fail "$1: $(grep -E 'Max error|pixels|rror' diff.out | head -2 | tr '\n' ' ')"
 }
 
