@@ -20,7 +20,7 @@
 #include "mesh_io.h"
 #include "parse.h"
 #include "render.h"
-#include "split.h"
+#include "split_plan.h"
 
 #define DEFAULT_WIDTH 640
 #define DEFAULT_HEIGHT 480
@@ -478,25 +478,6 @@ static const float *black_outside(const film *f, const int *part)
 	return rgb;
 }
 
-/* An EXR keeps the film's exact sums of the pixels rendered (the rows of a
- * part hold some outside it), so that merge and --resume can add to them. */
-static int write_sums(const film *f, const float *rgb, split_info *info, const char *path, char *err, size_t n)
-{
-	size_t npix = (size_t)f->width * f->height;
-	int64_t *sums = malloc(npix * 4 * sizeof *sums);
-	if (!sums) {
-		snprintf(err, n, "out of memory");
-		return -1;
-	}
-	for (size_t i = 0; i < npix; i++)
-		for (int c = 0; c < 4; c++)
-			sums[4 * i + c] = split_in_region(info, (int)(i % f->width), (int)(i / f->width)) ? f->sums[4 * i + c] : 0;
-	info->samples = f->samples;
-	int rc = split_write(path, rgb, sums, info, err, n);
-	free(sums);
-	return rc;
-}
-
 static int write_film(const film *f, void *ctx)
 {
 	const struct output *out = ctx;
@@ -504,7 +485,7 @@ static int write_film(const film *f, void *ctx)
 	char err[512];
 	const float *rgb = out->part ? black_outside(f, out->part) : f->rgb;
 	int rc = !rgb ? -1
-	       : out->info && f->sums ? write_sums(f, rgb, out->info, out->path, err, sizeof err)
+	       : out->info && f->sums ? split_write_film(f, rgb, out->info, out->path, err, sizeof err)
 	       : image_write(out->path, rgb, f->width, f->height, &meta, err, sizeof err);
 	if (rgb != f->rgb)
 		free((float *)rgb);
@@ -638,12 +619,6 @@ static void warn_pov(const cli_frame *f, const char *output)
 		             "the %ld asked for, to '%s'", f->frame, f->clock, f->frames, output);
 }
 
-static int is_exr(const char *path)
-{
-	const char *dot = strrchr(path, '.');
-	return dot && strcasecmp(dot, ".exr") == 0;
-}
-
 /* The options that change pixels, as split_key records them: a part, or a
  * file to resume, made with others is refused. The number of samples is not
  * one of them: a render resumes to more, and merge checks its parts' own. */
@@ -666,69 +641,15 @@ static char *pixel_options(const struct options *o, const render_settings *rs)
 	return fclose(f) == 0 ? text : (free(text), NULL);
 }
 
-/* --resume FILE (or --continue's output): the sums of the samples it holds, if
- * it is this render's. */
-static int resume_from(const char *path, const split_info *now, render_settings *rs, int64_t **sums)
-{
-	split_info was;
-	char why[1024];
-	const char *problem = why;
-	int rc = -1;
-	if (split_read(path, &was, sums, why, sizeof why))
-		problem = why;
-	else if (split_key_diff(&was.key, &now->key, why, sizeof why))
-		problem = why;
-	else if (was.first != now->first || memcmp(was.region, now->region, sizeof was.region) != 0)
-		problem = "it holds another sample range or region than the one asked for";
-	else if (was.samples > now->count)
-		problem = "it holds more samples than asked for";
-	else {
-		rs->start_sums = *sums;
-		rs->start_samples = was.samples;
-		rc = 0;
-	}
-	if (rc)
-		fprintf(stderr, "eclat: cannot resume from '%s': %s\n", path, problem);
-	split_info_free(&was);
-	return rc;
-}
-
-/* The samples (--sample-range) and rows (a region) to render, what an EXR
- * records of them, and where a resumed render starts. */
+/* What --sample-range, a region and --resume ask of the render (split_plan.c). */
 static int plan_split(const struct options *o, const scene *s, const char *output, const int *part,
                       const split_inputs *in, render_settings *rs, split_info *info, int64_t **resumed)
 {
-	long total = rs->samples;
-	const char *resume = o->resume;
-	if (!resume && o->resume_output && access(output, F_OK) == 0) {
-		if (is_exr(output))
-			resume = output;
-		else
-			diag_warning(SRC_NOWHERE, "+C: eclat continues only from an EXR; rendering '%s' again", output);
-	}
-	if (o->range_count && (o->range_first + (long)o->range_count > total || !is_exr(output) || o->n_aovs)) {
-		fprintf(stderr, "eclat: --sample-range %d:%d %s\n", o->range_first, o->range_count,
-		        o->n_aovs ? "cannot write AOVs: they do not merge"
-		        : !is_exr(output) ? "writes an EXR for 'eclat merge': name one with -o PART.exr"
-		        : "reaches past the render's samples (-s, or 1 or 9 for whitted)");
-		return -1;
-	}
-	*info = (split_info){ .scene = (char *)o->scene, .width = rs->width, .height = rs->height, .total = total,
-	                      .first = o->range_count ? o->range_first : 0, .gamma = s->film_gamma,
-	                      .region = { 0, 0, rs->width - 1, rs->height - 1 } };
-	info->count = o->range_count ? o->range_count : total;
-	if (part) {
-		memcpy(info->region, part, sizeof info->region);   /* ORDER CLI_REGION_ is left, top, right, bottom */
-		rs->row_first = part[CLI_REGION_TOP];
-		rs->rows = part[CLI_REGION_BOTTOM] - part[CLI_REGION_TOP] + 1;
-	}
-	rs->sample_first = (int)info->first;
-	rs->samples = (int)info->count;
 	char *opts = pixel_options(o, rs);
-	int rc = opts && (is_exr(output) || resume) ? split_key_make(&info->key, o->scene, in, opts) : 0;
+	split_request rq = { o->scene, output, o->resume, o->resume_output, o->range_first, o->range_count, part,
+	                     o->n_aovs, opts, s->film_gamma, in };
+	int rc = opts ? split_plan(&rq, rs, info, resumed) : -1;
 	free(opts);
-	if (rc == 0 && resume)
-		rc = resume_from(resume, info, rs, resumed);
 	return rc;
 }
 
@@ -747,7 +668,7 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	}
 	warn_if_dark(o, s, &lr);   /* only when there is an image to warn about */
 	split_info info = { 0 };
-	struct output out = { output, o->scene, o->pov.bits, part, is_exr(output) ? &info : NULL };
+	struct output out = { output, o->scene, o->pov.bits, part, split_is_exr(output) ? &info : NULL };
 	/* deterministic: one sample is the image; POV-Ray's +A asks for the 3x3 grid
 	 * of kernels/integrator_whitted.cl */
 	int whitted = o->integrator == INTEGRATOR_WHITTED, whitted_samples = o->pov.antialias == 1 ? 9 : 1;
