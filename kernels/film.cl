@@ -29,6 +29,19 @@ inline void film_add_aov(global float4 *aov, int pixel, const first_hit *f, int 
 		a[2].y = (float)f->object;
 }
 
+/* The film holds each pixel's sums in fixed point (shared.h's
+ * FILM_FRACTION_BITS; tests as plain counts): integers add in any order to the
+ * same total, so a render split into sample ranges, regions, passes or devices merges into
+ * exactly the sums of one run. A sample's radiance is held within
+ * +-FILM_SAMPLE_MAX, so 2^15 samples of it still fit in 63 bits. */
+#define FILM_SAMPLE_MAX 1048576.0f
+
+inline long4 film_fixed(float3 l, uint tests)
+{
+	float3 c = clamp(l, -FILM_SAMPLE_MAX, FILM_SAMPLE_MAX) * (float)(1 << FILM_FRACTION_BITS);
+	return (long4)(convert_long3_rte(c), (long)tests);
+}
+
 /* The work item's ray and test counters into the pass's. */
 inline void film_add_counts(global uint *counters, const uint *counts)
 {

@@ -118,7 +118,7 @@ inline uint path_tests(const uint *counts)
 	return counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA];
 }
 
-kernel void render_pass(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, global float4 *film,
+kernel void render_pass(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, global long4 *film,
                         global uint *counters, global float4 *aov)
 {
 	int pixel = get_global_id(0);
@@ -127,7 +127,7 @@ kernel void render_pass(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, g
 	int px = pixel % p->width, py = pixel / p->width;
 	uint counts[COUNT_N] = { 0 };
 	scene_data sc = { SCENE_BUFFERS(SCENE_FIELD) p, counts };
-	float4 acc = film[pixel];
+	long4 acc = film[pixel];
 	for (int s = 0; s < p->samples_per_pass; s++) {
 		uint key = rng_key((uint)pixel, (uint)(p->sample_base + s), (uint)p->seed);
 		uint tests = path_tests(counts);
@@ -136,7 +136,7 @@ kernel void render_pass(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, g
 		if (p->aov)
 			film_add_aov(aov, pixel, &first, p->sample_base + s);
 		/* sample by sample, so the sums do not depend on how samples group into passes */
-		acc += (float4)(l, (float)(path_tests(counts) - tests));
+		acc += film_fixed(l, path_tests(counts) - tests);
 	}
 	film[pixel] = acc;
 	film_add_counts(counters, counts);

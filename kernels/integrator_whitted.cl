@@ -464,7 +464,7 @@ inline float2 whitted_subpixel(int s)
 	return (float2)(((float)(k % 3) + 0.5f) / 3.0f, ((float)(k / 3) + 0.5f) / 3.0f);
 }
 
-kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, global float4 *film,
+kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, global long4 *film,
                            global uint *counters, global float4 *aov)
 {
 	int pixel = get_global_id(0);
@@ -473,7 +473,7 @@ kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p
 	int px = pixel % p->width, py = pixel / p->width;
 	uint counts[COUNT_N] = { 0 };
 	scene_data sc = { SCENE_BUFFERS(SCENE_FIELD) p, counts };
-	float4 acc = film[pixel];
+	long4 acc = film[pixel];
 	for (int s = 0; s < p->samples_per_pass; s++) {
 		/* one ray through a fixed place of the pixel; focal blur, which needs many
 		 * rays, is the path tracer's. Where the camera makes no ray, POV-Ray's
@@ -488,7 +488,7 @@ kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p
 			counts[COUNT_RAYS + RAY_CAMERA]++;
 			l = film_finite(whitted_radiance(&sc, camera, &first));
 		}
-		acc += (float4)(l, (float)(counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA] - tests));
+		acc += film_fixed(l, counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA] - tests);
 		if (p->aov)
 			film_add_aov(aov, pixel, &first, p->sample_base + s);
 	}

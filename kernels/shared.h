@@ -417,4 +417,8 @@ enum { SCENE_SHADOWS_PASS = 1, SCENE_SKY_LEGACY = 2 };
  * [2] x: its distance from the camera; y: the object number of sample 0's hit, -1 for none */
 #define AOV_FLOAT4S 3
 
+/* The film buffer: a long4 a pixel, the sums of its samples' rgb in fixed point
+ * with this many fraction bits, and w the camera ray's tests (kernels/film.cl). */
+#define FILM_FRACTION_BITS 28
+
 #endif

@@ -379,8 +379,7 @@ static void apply(cli_args *a, enum kind k, const struct setting *s, src_loc key
 		break;
 	case K_CONTINUE:
 		if (s->on)
-			diag_warning(s->loc, "%s: eclat cannot continue an interrupted render; it renders the whole image",
-			             s->name);
+			push(a, "--continue");
 		break;
 	case K_SHELL: shell_refused(s, key_loc); break;
 	case K_INCLUDE_INI: cli_ini_read(a, s->value, s->loc); break;

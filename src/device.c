@@ -69,6 +69,13 @@ static cl_device_type device_type(cl_device_id d)
 	return t;
 }
 
+int device_count(void)
+{
+	cl_device_id devs[MAX_DEVICES];
+	cl_platform_id plats[MAX_DEVICES];
+	return all_devices(devs, plats);
+}
+
 int device_list(FILE *out)
 {
 	cl_device_id devs[MAX_DEVICES];

@@ -24,6 +24,8 @@ typedef struct {
 /* Prints every device of every platform with its index for --device. Returns the
  * number of devices, or -1 when there is no platform (the message is printed). */
 int device_list(FILE *out);
+/* The number of devices (--device all), or -1 when there is no platform (said). */
+int device_count(void);
 
 /* index < 0: the first GPU, else the first CPU device, else the first device.
  * Returns 0, or -1 after printing why. */

@@ -60,6 +60,11 @@ typedef struct {
 	int n_io_read_dirs;
 	const char *const *io_write_dirs;
 	int n_io_write_dirs;
+	/* Called with each file the scene reads (includes, meshes, images, fonts,
+	 * #fopen), before it is opened, whatever io_security says: a render's
+	 * record of its scene hashes them (src/split.h). NULL: not called. */
+	void (*on_read)(const char *path, void *ctx);
+	void *on_read_ctx;
 } eval_options;
 
 #define EVAL_DEFAULT_INCLUDE_DEPTH 64

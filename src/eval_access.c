@@ -217,6 +217,8 @@ bool eval_access_allowed(struct eval *e, const char *path, bool write)
 
 int eval_access(struct eval *e, const char *path, bool write, src_loc loc, const char *what)
 {
+	if (!write && e->opt->on_read)
+		e->opt->on_read(path, e->opt->on_read_ctx);
 	if (e->opt->io_security == EVAL_IO_NONE)
 		return 0;
 	char *r = resolve(path);

@@ -13,7 +13,8 @@ int film_init(film *f, int width, int height, int with_aov)
 	f->rgb = calloc(n * 3, sizeof *f->rgb);
 	f->heat = calloc(n, sizeof *f->heat);
 	f->aov = with_aov ? calloc(n * AOV_FLOAT4S * 4, sizeof *f->aov) : NULL;
-	if (f->rgb && f->heat && (f->aov || !with_aov))
+	f->sums = calloc(n * 4, sizeof *f->sums);
+	if (f->rgb && f->heat && f->sums && (f->aov || !with_aov))
 		return 0;
 	film_free(f);
 	return -1;
@@ -32,14 +33,16 @@ static float to_linear(float c, float gamma)
 	return gamma == 0 ? srgb_decode(c) : powf(c, gamma);
 }
 
-void film_resolve(film *f, const float *sums, long samples, float gamma)
+void film_resolve(film *f, const int64_t *sums, long samples, float gamma)
 {
 	size_t n = (size_t)f->width * f->height;
-	float inv = samples > 0 ? 1.0f / (float)samples : 0.0f;
+	double inv = samples > 0 ? 1.0 / (double)samples : 0.0, unit = ldexp(inv, -FILM_FRACTION_BITS);
+	if (sums != f->sums)
+		memcpy(f->sums, sums, n * 4 * sizeof *sums);
 	for (size_t i = 0; i < n; i++) {
 		for (int c = 0; c < 3; c++)
-			f->rgb[3 * i + c] = to_linear(sums[4 * i + c] * inv, gamma);
-		f->heat[i] = sums[4 * i + 3] * inv;
+			f->rgb[3 * i + c] = to_linear((float)((double)sums[4 * i + c] * unit), gamma);
+		f->heat[i] = (float)((double)sums[4 * i + 3] * inv);
 	}
 	f->samples = samples;
 }
@@ -49,7 +52,9 @@ void film_free(film *f)
 	free(f->rgb);
 	free(f->heat);
 	free(f->aov);
+	free(f->sums);
 	f->rgb = f->heat = f->aov = NULL;
+	f->sums = NULL;
 }
 
 static const char *const aov_names[] = { "albedo", "normal", "depth", "id", "heat" };

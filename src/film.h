@@ -3,21 +3,24 @@
 #ifndef ECLAT_FILM_H
 #define ECLAT_FILM_H
 
+#include <stdint.h>
+
 typedef struct {
 	int width, height;
 	long samples;   /* per pixel */
 	float *rgb;     /* width * height * 3, row 0 at the top */
 	float *heat;    /* width * height: box and primitive tests per sample */
 	float *aov;     /* NULL, or the device's aov sums (AOV_FLOAT4S float4 a pixel, shared.h) */
+	int64_t *sums;  /* width * height * 4: the device's film, exact sums (FILM_FRACTION_BITS) */
 } film;
 
 /* Returns 0, or -1 when memory runs out. with_aov: allocate film.aov. */
 int film_init(film *f, int width, int height, int with_aov);
-/* Sets the film from per-pixel sums (4 floats a pixel: rgb and tests) of samples
- * samples. gamma: the working gamma the sums are in (scene.film_gamma): the
+/* Sets the film from per-pixel sums (4 a pixel: rgb in fixed point and tests, as
+ * the device's film holds them) of samples samples, and keeps a copy of them. gamma: the working gamma the sums are in (scene.film_gamma): the
  * film holds c ^ gamma, or for 0 (gamma correction off) the colours that the
  * sRGB encoding of 8-bit images turns back into c. */
-void film_resolve(film *f, const float *sums, long samples, float gamma);
+void film_resolve(film *f, const int64_t *sums, long samples, float gamma);
 void film_free(film *f);
 
 /* 1 when name is an AOV: albedo, normal, depth, id or heat. */

@@ -16,9 +16,11 @@
 #include "film.h"
 #include "image.h"
 #include "lower.h"
+#include "merge.h"
 #include "mesh_io.h"
 #include "parse.h"
 #include "render.h"
+#include "split_plan.h"
 
 #define DEFAULT_WIDTH 640
 #define DEFAULT_HEIGHT 480
@@ -48,13 +50,18 @@ struct options {
 	long max_loop_iterations;
 	int mesh_time_limit;
 	int threads;      /* --threads, POV-Ray's +WT; 0: the device's own */
+	int range_first, range_count;   /* --sample-range; count 0: all samples */
+	int devices[MAX_LIST], n_devices;   /* --device 0,2 (more than one); --device all: n_devices -1 */
+	const char *resume;             /* --resume FILE */
+	int resume_output;              /* --continue, POV-Ray's +C: resume from the output when it is there */
 	cli_pov pov;      /* what POV-Ray's switches and INI files asked for besides */
 };
 
 enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_DIR,
        OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_BVH_LAYOUT, OPT_STATS, OPT_SKIP_UNSUPPORTED, OPT_EXPORT_MESH2,
        OPT_MAX_INCLUDE_DEPTH, OPT_MAX_MACRO_DEPTH, OPT_MAX_LOOP_ITERATIONS, OPT_MESH_TIME_LIMIT,
-       OPT_IO_SECURITY, OPT_IO_ALLOW, OPT_IO_ALLOW_WRITE, OPT_THREADS };
+       OPT_IO_SECURITY, OPT_IO_ALLOW, OPT_IO_ALLOW_WRITE, OPT_THREADS, OPT_SAMPLE_RANGE, OPT_RESUME,
+       OPT_CONTINUE };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -66,6 +73,9 @@ static const struct option long_options[] = {
 	{ "integrator", required_argument, NULL, OPT_INTEGRATOR },
 	{ "time-limit", required_argument, NULL, OPT_TIME_LIMIT },
 	{ "checkpoint", required_argument, NULL, OPT_CHECKPOINT },
+	{ "sample-range", required_argument, NULL, OPT_SAMPLE_RANGE },
+	{ "resume", required_argument, NULL, OPT_RESUME },
+	{ "continue", no_argument, NULL, OPT_CONTINUE },
 	{ "aov", required_argument, NULL, OPT_AOV },
 	{ "bvh", required_argument, NULL, OPT_BVH },
 	{ "bvh-layout", required_argument, NULL, OPT_BVH_LAYOUT },
@@ -112,6 +122,10 @@ static void usage(FILE *out)
 		"                        POV-Ray's classic model, one ray a pixel (fast preview)\n"
 		"      --time-limit S    stop after S seconds, or at the samples, whichever is first\n"
 		"      --checkpoint S    write the image rendered so far every S seconds\n"
+		"      --sample-range FIRST:COUNT  render only samples FIRST to FIRST+COUNT-1 of\n"
+		"                        each pixel into an EXR for 'eclat merge' (see eclat(1))\n"
+		"      --resume FILE     continue the render an EXR of eclat's holds (a checkpoint)\n"
+		"      --continue        --resume the output when it is there (POV-Ray's +C)\n"
 		"      --aov NAME=FILE   also write an AOV: albedo, normal, depth, id or heat\n"
 		"                        (box and primitive tests per sample); repeatable\n"
 		"      --bvh NAME        sah (default): binned SAH; median[:DEPTH]: the reference\n"
@@ -121,7 +135,8 @@ static void usage(FILE *out)
 		"                        binary: the builders' tree as it is, for comparison\n"
 		"      --stats           print the BVHs' statistics and the tests per ray\n"
 		"      --threads N       at most N threads on PoCL's CPU device (POV-Ray's +WT)\n"
-		"      --device N        OpenCL device to use (default: first GPU, else first CPU)\n"
+		"      --device N        OpenCL device to use (default: first GPU, else first CPU);\n"
+		"                        N,M,... or all: render on several at once\n"
 		"      --list-devices    list the OpenCL devices and exit\n"
 		"      --kernel-dir DIR  read the kernel sources from DIR instead of the built-in copy\n"
 		"  -I, --include-path DIR  look for #include files in DIR too (repeatable)\n"
@@ -152,6 +167,7 @@ static void usage(FILE *out)
 		"and INI files (render.ini, render.ini[Section]) work too: see FOR POV-RAY USERS in\n"
 		"eclat(1). -D NAME=VALUE declares; -D alone is POV-Ray's display switch.\n"
 		"Ctrl-C finishes the pass under way and writes the image rendered so far.\n"
+		"'eclat merge PART.exr... -o IMAGE' merges the parts of a split render.\n"
 		"The scene language is described in eclat-scene(5), the options in eclat(1).\n",
 		DEFAULT_WIDTH, DEFAULT_HEIGHT, DEFAULT_SAMPLES, DEFAULT_MAX_DEPTH, EVAL_DEFAULT_INCLUDE_DEPTH,
 		EVAL_DEFAULT_MACRO_DEPTH, EVAL_MAX_MACRO_DEPTH_LIMIT, EVAL_DEFAULT_LOOP_ITERATIONS,
@@ -182,6 +198,43 @@ static double seconds_arg(const char *opt, const char *s)
 		exit(1);
 	}
 	return v;
+}
+
+/* --sample-range FIRST:COUNT */
+static void range_arg(struct options *o, const char *s)
+{
+	char *end;
+	errno = 0;
+	long first = strtol(s, &end, 10), count = -1;
+	if (!errno && end != s && *end == ':' && end[1])
+		count = strtol(end + 1, &end, 10);
+	if (errno || *end || first < 0 || count < 1 || first > (1 << 24) || count > (1 << 24)) {
+		fprintf(stderr, "eclat: --sample-range needs FIRST:COUNT, a sample from 0 and a count from 1, not '%s'\n",
+		        s);
+		exit(1);
+	}
+	o->range_first = (int)first;
+	o->range_count = (int)count;
+}
+
+/* --device N | N,M... | all */
+static void device_arg(struct options *o, const char *s)
+{
+	o->n_devices = 0;
+	if (strcmp(s, "all") == 0) {
+		o->n_devices = -1;
+		return;
+	}
+	char *list = strdup(s), *save = NULL;
+	for (char *t = list ? strtok_r(list, ",", &save) : NULL; t && o->n_devices < MAX_LIST;
+	     t = strtok_r(NULL, ",", &save))
+		o->devices[o->n_devices++] = int_arg("--device", t, 0, 63);
+	free(list);
+	if (o->n_devices == 0 || s[strlen(s) - 1] == ',') {
+		fprintf(stderr, "eclat: --device needs a device number, a list of them (0,2) or all, not '%s'\n", s);
+		exit(1);
+	}
+	o->device = o->n_devices > 0 ? o->devices[0] : -1;
 }
 
 /* --bvh sah | median[:DEPTH] */
@@ -295,11 +348,14 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case 's': o->samples = int_arg("--samples", optarg, 1, 1 << 24); break;
 		case OPT_SEED: o->seed = int_arg("--seed", optarg, 0, INT_MAX); break;
 		case OPT_MAX_DEPTH: o->max_depth = int_arg("--max-depth", optarg, 0, 256); break;
-		case OPT_DEVICE: o->device = int_arg("--device", optarg, 0, 63); break;
+		case OPT_DEVICE: device_arg(o, optarg); break;
 		case OPT_THREADS: o->threads = int_arg("--threads", optarg, 1, 512); break;
 		case OPT_INTEGRATOR: o->integrator = integrator_arg(optarg); break;
 		case OPT_TIME_LIMIT: o->time_limit = seconds_arg("--time-limit", optarg); break;
 		case OPT_CHECKPOINT: o->checkpoint = seconds_arg("--checkpoint", optarg); break;
+		case OPT_SAMPLE_RANGE: range_arg(o, optarg); break;
+		case OPT_RESUME: o->resume = optarg; break;
+		case OPT_CONTINUE: o->resume_output = 1; break;
 		case OPT_AOV: aov_arg(o, optarg); break;
 		case OPT_BVH: bvh_arg(o, optarg); break;
 		case OPT_BVH_LAYOUT: o->bvh_layout = layout_arg(optarg); break;
@@ -402,6 +458,7 @@ struct output {
 	const char *path, *scene;
 	int bits;          /* POV-Ray's +FN16: 16; 0: the format's own */
 	const int *part;   /* POV-Ray's +SC +SR +EC +ER in pixels (CLI_REGION_), or NULL */
+	split_info *info;  /* what an EXR records beside the film's sums, or NULL (another format, an AOV) */
 };
 
 /* POV-Ray's image of a part is the whole image, black outside the part. */
@@ -427,7 +484,9 @@ static int write_film(const film *f, void *ctx)
 	image_meta meta = { out->scene, f->samples, out->bits };
 	char err[512];
 	const float *rgb = out->part ? black_outside(f, out->part) : f->rgb;
-	int rc = rgb ? image_write(out->path, rgb, f->width, f->height, &meta, err, sizeof err) : -1;
+	int rc = !rgb ? -1
+	       : out->info && f->sums ? split_write_film(f, rgb, out->info, out->path, err, sizeof err)
+	       : image_write(out->path, rgb, f->width, f->height, &meta, err, sizeof err);
 	if (rgb != f->rgb)
 		free((float *)rgb);
 	if (rc == 0)
@@ -442,7 +501,7 @@ static int write_aovs(const struct options *o, const film *f)
 	float *rgb = malloc((size_t)f->width * f->height * 3 * sizeof *rgb);
 	int rc = rgb ? 0 : -1;
 	for (int i = 0; rc == 0 && i < o->n_aovs; i++) {
-		struct output out = { o->aov_file[i], o->scene, 0, NULL };
+		struct output out = { o->aov_file[i], o->scene, 0, NULL, NULL };
 		if (strcmp(o->aov_name[i], "heat") == 0) {
 			image_meta meta = { o->scene, f->samples, 0 };
 			char err[512];
@@ -560,7 +619,42 @@ static void warn_pov(const cli_frame *f, const char *output)
 		             "the %ld asked for, to '%s'", f->frame, f->clock, f->frames, output);
 }
 
-static int render_scene(const struct options *o, const scene *s, const char *output, const int *part)
+/* The options that change pixels, as split_key records them: a part, or a
+ * file to resume, made with others is refused. The number of samples is not
+ * one of them: a render resumes to more, and merge checks its parts' own. */
+static char *pixel_options(const struct options *o, const render_settings *rs)
+{
+	static const char *const integrators[] = { "path", "naive", "whitted" };   /* ORDER INTEGRATOR_ */
+	cli_frame fr;
+	cli_pov_frame(&o->pov, &fr);
+	char *text = NULL;
+	size_t len = 0;
+	FILE *f = open_memstream(&text, &len);
+	if (!f)
+		return NULL;
+	fprintf(f, "width=%d\nheight=%d\nintegrator=%s\nseed=%d\nmax-depth=%d\nbvh=%d:%d:%d\n"
+	        "skip-unsupported=%d\nclock=%.17g\nframe=%ld\n", rs->width, rs->height,
+	        integrators[rs->integrator % 3], rs->seed, rs->max_depth, o->bvh, o->median_depth,
+	        o->bvh_layout, o->skip_unsupported, fr.clock, fr.frame);
+	for (int i = 0; i < o->n_declares; i++)
+		fprintf(f, "declare=%s\n", o->declares[i]);
+	return fclose(f) == 0 ? text : (free(text), NULL);
+}
+
+/* What --sample-range, a region and --resume ask of the render (split_plan.c). */
+static int plan_split(const struct options *o, const scene *s, const char *output, const int *part,
+                      const split_inputs *in, render_settings *rs, split_info *info, int64_t **resumed)
+{
+	char *opts = pixel_options(o, rs);
+	split_request rq = { o->scene, output, o->resume, o->resume_output, o->range_first, o->range_count, part,
+	                     o->n_aovs, opts, s->film_gamma, in };
+	int rc = opts ? split_plan(&rq, rs, info, resumed) : -1;
+	free(opts);
+	return rc;
+}
+
+static int render_scene(const struct options *o, const scene *s, const char *output, const int *part,
+                        const split_inputs *in)
 {
 	lower_result lr;
 	lower_options lo = { o->bvh, o->median_depth, o->bvh_layout, o->skip_unsupported, o->width, o->height };
@@ -573,7 +667,8 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		return rc;
 	}
 	warn_if_dark(o, s, &lr);   /* only when there is an image to warn about */
-	struct output out = { output, o->scene, o->pov.bits, part };
+	split_info info = { 0 };
+	struct output out = { output, o->scene, o->pov.bits, part, split_is_exr(output) ? &info : NULL };
 	/* deterministic: one sample is the image; POV-Ray's +A asks for the 3x3 grid
 	 * of kernels/integrator_whitted.cl */
 	int whitted = o->integrator == INTEGRATOR_WHITTED, whitted_samples = o->pov.antialias == 1 ? 9 : 1;
@@ -586,14 +681,20 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		.time_limit = o->time_limit,
 		.checkpoint = o->checkpoint, .on_checkpoint = write_film, .ctx = &out, .stop = &stop_signal,
 	};
-	device_ctx dev;
+	device_ctx dev = { 0 };
 	cl_program prog = NULL;
 	film f = { 0 };
 	render_stats st;
 	int rc = 1;
+	int64_t *resumed = NULL;
 	catch_signals();
 	int ran = -1;   /* 1: failed after some passes, whose samples f holds */
-	if (set_threads(o) == 0 && device_open(&dev, o->device) == 0 &&
+	int several = o->n_devices < 0 || o->n_devices > 1;
+	int planned = plan_split(o, s, output, part, in, &rs, &info, &resumed) == 0 && set_threads(o) == 0;
+	if (planned && several)
+		ran = render_multi(o->devices, o->n_devices < 0 ? 0 : o->n_devices, o->kernel_dir, &lr, &rs, &f, &st,
+		                   dev.name, sizeof dev.name);
+	else if (planned && !several && device_open(&dev, o->device) == 0 &&
 	    (prog = device_build(&dev, o->kernel_dir, lower_kernel_options(&lr), lr.functions)) != NULL)
 		ran = render_run(&dev, prog, &lr, &rs, &f, &st);
 	if (ran >= 0) {
@@ -609,6 +710,8 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 			        st.samples, output);
 	}
 	film_free(&f);
+	free(resumed);
+	split_key_free(&info.key);
 	if (prog)
 		clReleaseProgram(prog);
 	device_close(&dev);
@@ -658,6 +761,8 @@ static int export_mesh2(const struct options *o)
 
 int main(int argc, char **argv)
 {
+	if (argc > 1 && strcmp(argv[1], "merge") == 0)
+		return merge_main(argc - 1, argv + 1);
 	struct options o;
 	parse_options(argc, argv, &o);
 	if (o.list_devices)
@@ -693,6 +798,9 @@ int main(int argc, char **argv)
 	eopt.n_io_read_dirs = o.n_io_read_dirs;
 	eopt.io_write_dirs = o.io_write_dirs;
 	eopt.n_io_write_dirs = o.n_io_write_dirs;
+	split_inputs inputs = { 0 };
+	eopt.on_read = split_note_input;
+	eopt.on_read_ctx = &inputs;
 	cli_frame frame;
 	cli_pov_frame(&o.pov, &frame);
 	eopt.clock = frame.clock;
@@ -718,8 +826,9 @@ int main(int argc, char **argv)
 	} else if (eval_scene(tree, &s, &eopt) == 0 && diag_error_count() == 0) {
 		if (o.dump_scene)
 			scene_dump(&s, stdout);
-		rc = render_scene(&o, &s, output, has_part ? part : NULL);
+		rc = render_scene(&o, &s, output, has_part ? part : NULL, &inputs);
 	}
+	split_inputs_free(&inputs);
 	scene_free(&s);
 	ast_free(tree);
 	diag_free_all();

@@ -51,7 +51,7 @@ static void buffer_table(const lower_result *lr, const dev_params *params, size_
 	SCENE_BUFFERS(SCENE_ROW)
 #undef SCENE_ROW
 	b[BUF_params] = (struct host_buffer){ "params", params, sizeof *params, CL_MEM_READ_ONLY };
-	b[BUF_film] = (struct host_buffer){ "film", NULL, npix * 4 * sizeof(float), CL_MEM_READ_WRITE };
+	b[BUF_film] = (struct host_buffer){ "film", NULL, npix * 4 * sizeof(cl_long), CL_MEM_READ_WRITE };
 	b[BUF_counters] = (struct host_buffer){ "counters", NULL, COUNT_N * sizeof(cl_uint), CL_MEM_READ_WRITE };
 	b[BUF_aov] = (struct host_buffer){ "aov", NULL, params->aov ? npix * AOV_FLOAT4S * 4 * sizeof(float) : 0,
 	                                   CL_MEM_READ_WRITE };
@@ -65,7 +65,7 @@ struct pass_loop {
 	size_t npix;
 	const render_settings *rs;
 	render_stats *st;
-	float *sums;
+	int64_t *sums;
 	double t0;
 };
 
@@ -165,12 +165,13 @@ static int injected_failure(void)
 	return s && ++passes == atoi(s);
 }
 
-static int run_pass(struct pass_loop *pl, int count)
+/* Samples base to base + count - 1 of every pixel (of its rows). */
+static int run_pass(struct pass_loop *pl, int base, int count)
 {
 	cl_uint counts[COUNT_N] = { 0 };
 	if (injected_failure())
 		return device_fail("clEnqueueNDRangeKernel", CL_OUT_OF_RESOURCES);
-	pl->params.sample_base = (int)pl->st->samples;
+	pl->params.sample_base = base;
 	pl->params.samples_per_pass = count;
 	cl_int err = clEnqueueWriteBuffer(pl->d->queue, pl->bufs[BUF_params], CL_TRUE, 0, sizeof pl->params,
 	                                  &pl->params, 0, NULL, NULL);
@@ -182,11 +183,14 @@ static int run_pass(struct pass_loop *pl, int count)
 	/* The Whitted kernel keeps a stack of ray frames per work item; PoCL puts a
 	 * work group's private arrays on one thread's stack, so its groups are kept
 	 * small (the kernel ignores the work items past the last pixel). */
-	size_t local = WHITTED_GROUP, global = (pl->npix + local - 1) / local * local;
+	const render_settings *rs = pl->rs;
+	size_t first = rs->rows ? (size_t)rs->row_first * rs->width : 0;
+	size_t n = rs->rows ? (size_t)rs->rows * rs->width : pl->npix;
+	size_t local = WHITTED_GROUP, global = (n + local - 1) / local * local;
 	if (pl->params.integrator == INTEGRATOR_WHITTED)
-		err = clEnqueueNDRangeKernel(pl->d->queue, pl->k, 1, NULL, &global, &local, 0, NULL, NULL);
+		err = clEnqueueNDRangeKernel(pl->d->queue, pl->k, 1, &first, &global, &local, 0, NULL, NULL);
 	else
-		err = clEnqueueNDRangeKernel(pl->d->queue, pl->k, 1, NULL, &pl->npix, NULL, 0, NULL, NULL);
+		err = clEnqueueNDRangeKernel(pl->d->queue, pl->k, 1, &first, &n, NULL, 0, NULL, NULL);
 	if (err != CL_SUCCESS)
 		return device_fail("clEnqueueNDRangeKernel", err);
 	err = clEnqueueReadBuffer(pl->d->queue, pl->bufs[BUF_counters], CL_TRUE, 0, sizeof counts, counts,
@@ -209,12 +213,40 @@ static int pass_size(size_t npix)
 	return k < 1 ? 1 : k > 64 ? 64 : (int)k;
 }
 
+/* The next pass's samples: the next of this render's, or of the queue that
+ * several devices share. 0 when there are none left. */
+static int next_pass(struct pass_loop *pl, int per, int *base, int *count)
+{
+	const render_settings *rs = pl->rs;
+	render_queue *q = rs->queue;
+	if (!q) {
+		int left = rs->samples - (int)pl->st->samples;
+		*base = rs->sample_first + (int)pl->st->samples;
+		*count = left < per ? left : per;
+		return left > 0;
+	}
+	pthread_mutex_lock(&q->lock);
+	int left = q->end - q->next;
+	per = per < q->most ? per : q->most;
+	*base = q->next;
+	*count = left < per ? left : per;
+	q->next += left > 0 ? *count : 0;
+	pthread_mutex_unlock(&q->lock);
+	return left > 0;
+}
+
 static int run_passes(struct pass_loop *pl, film *f)
 {
 	const render_settings *rs = pl->rs;
 	float zero = 0.0f;
-	cl_int err = clEnqueueFillBuffer(pl->d->queue, pl->bufs[BUF_film], &zero, sizeof zero, 0,
-	                                 pl->npix * 4 * sizeof(float), 0, NULL, NULL);
+	cl_int err;
+	if (rs->start_sums)
+		err = clEnqueueWriteBuffer(pl->d->queue, pl->bufs[BUF_film], CL_TRUE, 0, pl->npix * 4 * sizeof(cl_long),
+		                           rs->start_sums, 0, NULL, NULL);
+	else
+		err = clEnqueueFillBuffer(pl->d->queue, pl->bufs[BUF_film], &zero, sizeof zero, 0,
+		                          pl->npix * 4 * sizeof(cl_long), 0, NULL, NULL);
+	pl->st->samples = rs->start_sums ? rs->start_samples : 0;
 	if (err == CL_SUCCESS && pl->params.aov)
 		err = clEnqueueFillBuffer(pl->d->queue, pl->bufs[BUF_aov], &zero, sizeof zero, 0,
 		                          pl->npix * AOV_FLOAT4S * 4 * sizeof(float), 0, NULL, NULL);
@@ -222,9 +254,9 @@ static int run_passes(struct pass_loop *pl, film *f)
 		return device_fail("clEnqueueFillBuffer", err);
 	int tty = !rs->quiet && isatty(STDERR_FILENO), per = pass_size(pl->npix);
 	double last_checkpoint = pl->t0;
-	while (pl->st->samples < rs->samples) {
-		int left = rs->samples - (int)pl->st->samples;
-		if (run_pass(pl, left < per ? left : per)) {
+	int base, count;
+	while (next_pass(pl, per, &base, &count)) {
+		if (run_pass(pl, base, count)) {
 			if (tty)
 				fputc('\n', stderr);
 			/* keep the passes done, when the device still gives them back */

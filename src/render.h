@@ -2,6 +2,7 @@
 #ifndef ECLAT_RENDER_H
 #define ECLAT_RENDER_H
 
+#include <pthread.h>
 #include <signal.h>
 #include <stdint.h>
 
@@ -9,9 +10,22 @@
 #include "film.h"
 #include "lower.h"
 
+/* Samples that several devices take passes from (render_multi.c): the next
+ * one and the end, absolute sample numbers. */
+typedef struct {
+	pthread_mutex_t lock;
+	int next, end;
+	int most;   /* samples a pass takes at most, so that a short render still feeds every device */
+} render_queue;
+
 typedef struct render_settings {
 	int width, height;
 	int samples;           /* per pixel, at most */
+	int sample_first;      /* the number of the first sample (--sample-range), for the random numbers */
+	const int64_t *start_sums;  /* NULL, or the film's sums of start_samples samples done (--resume) */
+	long start_samples;
+	int row_first, rows;   /* the rows to render (a region's); rows 0: all */
+	render_queue *queue;   /* NULL, or where the passes' samples come from (then samples is ignored) */
 	int seed;
 	int max_depth;         /* bounces */
 	int integrator;        /* INTEGRATOR_PATH, INTEGRATOR_NAIVE or INTEGRATOR_WHITTED (whose
@@ -29,7 +43,7 @@ typedef struct render_settings {
 
 typedef struct {
 	double seconds;
-	long samples;                /* per pixel, done */
+	long samples;                /* per pixel, done (start_samples included) */
 	uint64_t counts[COUNT_N];    /* camera, bounce and shadow rays, box and primitive tests */
 } render_stats;
 
@@ -43,5 +57,14 @@ double render_rays(const render_stats *st);
  * lost work. */
 int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_settings *rs, film *f,
                render_stats *st);
+
+/* Renders rs on several devices at once (render_multi.c): devices idx[0..n-1],
+ * or n 0: every device, each with the kernels built for it (kernel_dir as
+ * device_build's), taking passes of samples from one queue; their sums add
+ * into f exactly, so the image is one device's. name gets the devices' names.
+ * Returns as render_run does (a failure after some passes is -1: the samples
+ * done need not be the first ones). */
+int render_multi(const int *idx, int n, const char *kernel_dir, lower_result *lr, const render_settings *rs,
+                 film *f, render_stats *st, char *name, size_t name_len);
 
 #endif
