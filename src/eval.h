@@ -47,7 +47,8 @@ typedef struct {
 	 * 0 means the EVAL_DEFAULT_ value. */
 	int max_include_depth, max_macro_depth;
 	long max_loop_iterations;
-	/* Seconds assimp may take on one mesh file (--mesh-time-limit); 0: no limit. */
+	/* Seconds a library (assimp, OpenImageIO, libpng, FreeType) may take on one
+	 * file (--load-time-limit, alias --mesh-time-limit); 0: no limit. */
 	unsigned mesh_time_limit;
 	/* File I/O security (eval_access.c): the files a scene may make eclat read
 	 * and write. The scene's own folder and the include folders always count;

@@ -39,14 +39,14 @@ static int image_heights(struct eval *e, const ast_node *at, const char *name, d
 		free(path);
 		return -1;
 	}
-	if (image_read(use, MAX_TEXELS, &d, why, sizeof why)) {
+	if (image_read(use, MAX_TEXELS, e->opt->mesh_time_limit, &d, why, sizeof why)) {
 		eval_error(e, at->loc, "cannot read height field image '%s': %s", name, why);
 		free(path);
 		return -1;
 	}
 	unsigned char *index = NULL;
 	int iw, ih;
-	if (!image_png_indices(use, MAX_TEXELS, &index, &iw, &ih) || iw != d.width || ih != d.height) {
+	if (!image_png_indices(use, MAX_TEXELS, e->opt->mesh_time_limit, &index, &iw, &ih) || iw != d.width || ih != d.height) {
 		free(index);
 		index = NULL;
 	}

@@ -427,7 +427,7 @@ static int image_load(struct eval *e, const char *name, double gamma, int premul
 		free(path);
 		return -1;
 	}
-	if (image_read(use, IMAGE_MAX_TEXELS, &d, why, sizeof why)) {
+	if (image_read(use, IMAGE_MAX_TEXELS, e->opt->mesh_time_limit, &d, why, sizeof why)) {
 		eval_error(e, loc, "cannot read image '%s': %s", name, why);
 		free(path);
 		return -1;

@@ -95,7 +95,7 @@ extern "C" int image_write(const char *path, const float *rgb, int width, int he
 	return write_atomic(path, rgb, width, height, 3, true, meta, err, errlen);
 }
 
-extern "C" int image_read(const char *path, long max_texels, image_data *out, char *err, size_t errlen)
+extern "C" int image_read_here(const char *path, long max_texels, image_data *out, char *err, size_t errlen)
 {
 	std::string p(path);
 	*out = image_data();
@@ -105,11 +105,23 @@ extern "C" int image_read(const char *path, long max_texels, image_data *out, ch
 		return fail(err, errlen, why.empty() ? "no image format reads it" : why);
 	}
 	const ImageSpec spec = in->spec();   /* a copy: reading may change the reader's own (GIF's does) */
+	/* The header is all that was read: what it claims is checked before the
+	 * decoder allocates for it (a tiny file may claim 100000 x 100000). */
 	long texels = (long)spec.width * spec.height;
-	if (spec.width <= 0 || spec.height <= 0 || texels > max_texels) {
-		char msg[160];
-		std::snprintf(msg, sizeof msg, "it is %d x %d pixels, more than the %ld pixels an image may have",
-		              spec.width, spec.height, max_texels);
+	char msg[200];
+	if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1) {
+		std::snprintf(msg, sizeof msg, "its header claims %d x %d x %d pixels: a corrupt file?", spec.width,
+		              spec.height, spec.depth);
+		return fail(err, errlen, msg);
+	}
+	if (spec.width > IMAGE_MAX_SIDE || spec.height > IMAGE_MAX_SIDE || texels > max_texels) {
+		std::snprintf(msg, sizeof msg, "it is %d x %d pixels, more than the %ld pixels (%d on a side) an image may have",
+		              spec.width, spec.height, max_texels, IMAGE_MAX_SIDE);
+		return fail(err, errlen, msg);
+	}
+	if (spec.nchannels < 1 || spec.nchannels > 16 || spec.deep) {
+		std::snprintf(msg, sizeof msg, "it has %d channels%s: not an image eclat reads", spec.nchannels,
+		              spec.deep ? ", deep" : "");
 		return fail(err, errlen, msg);
 	}
 	int nc = spec.nchannels;

@@ -78,6 +78,7 @@ static const struct option long_options[] = {
 	{ "max-macro-depth", required_argument, NULL, OPT_MAX_MACRO_DEPTH },
 	{ "max-loop-iterations", required_argument, NULL, OPT_MAX_LOOP_ITERATIONS },
 	{ "mesh-time-limit", required_argument, NULL, OPT_MESH_TIME_LIMIT },
+	{ "load-time-limit", required_argument, NULL, OPT_MESH_TIME_LIMIT },
 	{ "io-security", required_argument, NULL, OPT_IO_SECURITY },
 	{ "io-allow", required_argument, NULL, OPT_IO_ALLOW },
 	{ "io-allow-write", required_argument, NULL, OPT_IO_ALLOW_WRITE },
@@ -133,8 +134,9 @@ static void usage(FILE *out)
 		"      --max-include-depth N  #include files nested at most N deep (default %d)\n"
 		"      --max-macro-depth N  macro calls nested at most N deep (default %d, at most %d)\n"
 		"      --max-loop-iterations N  stop a #while or #for after N turns (default %ld)\n"
-		"      --mesh-time-limit S  give up on a mesh file assimp is still reading after S\n"
-		"                        seconds (default %d; 0: no limit)\n"
+		"      --load-time-limit S, --mesh-time-limit S  give up on a mesh, image or font\n"
+		"                        file a library is still reading after S seconds\n"
+		"                        (default %d; 0: no limit)\n"
 		"      --io-security LEVEL  the files a scene may read and write: restricted\n"
 		"                        (default): its folder, the include folders, the current\n"
 		"                        folder and those allowed; read-only: reads anywhere,\n"
