@@ -115,7 +115,7 @@ extern "C" int image_read_here(const char *path, long max_texels, image_data *ou
 		return fail(err, errlen, msg);
 	}
 	if (spec.width > IMAGE_MAX_SIDE || spec.height > IMAGE_MAX_SIDE || texels > max_texels) {
-		std::snprintf(msg, sizeof msg, "it is %d x %d pixels, more than the %ld pixels (%d on a side) an image may have",
+		std::snprintf(msg, sizeof msg, "its header says %d x %d pixels, more than the %ld pixels (%d on a side) an image may have",
 		              spec.width, spec.height, max_texels, IMAGE_MAX_SIDE);
 		return fail(err, errlen, msg);
 	}
