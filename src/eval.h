@@ -50,6 +50,9 @@ typedef struct {
 	/* Seconds a library (assimp, OpenImageIO, libpng, FreeType) may take on one
 	 * file (--load-time-limit, alias --mesh-time-limit); 0: no limit. */
 	unsigned mesh_time_limit;
+	/* Bytes the scene's images, meshes and height fields may take
+	 * (--memory-limit); 0: what the host has available (eval_memory.c). */
+	double memory_limit;
 	/* File I/O security (eval_access.c): the files a scene may make eclat read
 	 * and write. The scene's own folder and the include folders always count;
 	 * io_current_folder adds the current one (the command line's), which the

@@ -5,12 +5,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host_memory.h"
 #include "image.h"
 #include "loader.h"
 
 struct image_job {
 	const char *path;
-	long max_texels;
+	const image_limits *lim;
 	image_data *out;
 };
 
@@ -29,7 +30,7 @@ static int image_work(int fd, void *arg)
 	image_data d;
 	char err[ERR_LEN] = "";
 	struct image_head h = { 0 };
-	h.rc = image_read_here(j->path, j->max_texels, &d, err, sizeof err);
+	h.rc = image_read_here(j->path, j->lim->max_texels, &d, err, sizeof err);
 	if (h.rc)
 		return loader_write(fd, &h, sizeof h) || loader_write(fd, err, sizeof err);
 	h.width = d.width;
@@ -59,9 +60,17 @@ static int image_take(int fd, void *arg, char *err, size_t errlen)
 		return -1;
 	}
 	/* the child checked the size; a child gone wrong must not make this one allocate */
-	if (h.width <= 0 || h.height <= 0 || (long)h.width * h.height > j->max_texels)
+	if (h.width <= 0 || h.height <= 0 || (long)h.width * h.height > j->lim->max_texels)
 		return -2;
 	size_t n = (size_t)h.width * h.height * 4;
+	if (j->lim->max_bytes > 0 && (double)n * sizeof(float) > j->lim->max_bytes) {
+		char need[32], left[32];
+		host_memory_format((double)n * sizeof(float), need, sizeof need);
+		host_memory_format(j->lim->max_bytes, left, sizeof left);
+		snprintf(err, errlen, "its %d x %d pixels need %s, more than the %s of memory left to the scene "
+		         "(--memory-limit)", h.width, h.height, need, left);
+		return -1;
+	}
 	float *rgba = malloc(n * sizeof *rgba);
 	if (!rgba) {
 		snprintf(err, errlen, "out of memory for %d x %d pixels", h.width, h.height);
@@ -80,7 +89,7 @@ static int image_take(int fd, void *arg, char *err, size_t errlen)
 	return 0;
 }
 
-int image_read(const char *path, long max_texels, unsigned time_limit, image_data *out, char *err, size_t errlen)
+int image_read(const char *path, const image_limits *lim, image_data *out, char *err, size_t errlen)
 {
 	memset(out, 0, sizeof *out);
 	const char *not_file = loader_not_a_file(path);
@@ -88,8 +97,8 @@ int image_read(const char *path, long max_texels, unsigned time_limit, image_dat
 		snprintf(err, errlen, "%s", not_file);
 		return -1;
 	}
-	struct image_job j = { path, max_texels, out };
-	return loader_run("OpenImageIO", time_limit, image_work, image_take, &j, err, errlen);
+	struct image_job j = { path, lim, out };
+	return loader_run("OpenImageIO", lim->time_limit, image_work, image_take, &j, err, errlen);
 }
 
 struct indices_job {
@@ -132,15 +141,17 @@ static int indices_take(int fd, void *arg, char *err, size_t errlen)
 	return 0;
 }
 
-int image_png_indices(const char *path, long max_texels, unsigned time_limit, unsigned char **out, int *width,
-                      int *height)
+int image_png_indices(const char *path, const image_limits *lim, unsigned char **out, int *width, int *height)
 {
 	*out = NULL;
 	if (loader_not_a_file(path))
 		return 0;
-	struct indices_job j = { path, max_texels, NULL, 0, 0 };
+	long max = lim->max_texels;
+	if (lim->max_bytes > 0 && lim->max_bytes < max)
+		max = (long)lim->max_bytes;   /* a byte a pixel */
+	struct indices_job j = { path, max, NULL, 0, 0 };
 	char err[ERR_LEN];
-	if (loader_run("libpng", time_limit, indices_work, indices_take, &j, err, sizeof err) || !j.px)
+	if (loader_run("libpng", lim->time_limit, indices_work, indices_take, &j, err, sizeof err) || !j.px)
 		return 0;   /* image_read, which ran first, reads the same file and says what is wrong */
 	*out = j.px;
 	*width = j.width;

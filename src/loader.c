@@ -62,6 +62,13 @@ static void child(int fd, unsigned time_limit, loader_work work, void *arg)
 	signal(SIGALRM, SIG_DFL);   /* a fuzzer's handler would report a timeout */
 	signal(SIGPIPE, SIG_DFL);   /* a parent that stopped listening ends the child */
 	alarm(time_limit);          /* 0: none; a fork starts with no alarm of its own */
+	/* were memory to run out while a decoder is at a hostile file, the kernel
+	 * should end the child, not eclat */
+	int adj = open("/proc/self/oom_score_adj", O_WRONLY);
+	if (adj >= 0) {
+		if (write(adj, "1000", 4) < 0) { /* an old kernel: no matter */ }
+		close(adj);
+	}
 	/* libraries print their complaints (libpng's "Read error"); the answer
 	 * carries the one that matters, at the scene's line */
 	int null = open("/dev/null", O_WRONLY);
