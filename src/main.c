@@ -446,6 +446,9 @@ static int write_film(const film *f, void *ctx)
 	if (rc == 0)
 		return 0;
 	fprintf(stderr, "eclat: %s\n", rgb ? err : "out of memory");
+	char kept[600];
+	if (film_rescue(f, out->path, &meta, kept, sizeof kept) == 0)
+		fprintf(stderr, "eclat: the %ld samples per pixel are kept in '%s'\n", f->samples, kept);
 	return -1;
 }
 
