@@ -32,17 +32,17 @@
  * C++), which this C target does not link: here no image can be read, so an
  * image_map takes the path of a file that will not load, as a missing one
  * does. Image files need a fuzz target of their own. */
-int image_read(const char *path, long max_texels, image_data *out, char *err, size_t errlen)
+int image_read(const char *path, const image_limits *lim, image_data *out, char *err, size_t errlen)
 {
-	(void)path, (void)max_texels;
+	(void)path, (void)lim;
 	memset(out, 0, sizeof *out);
 	snprintf(err, errlen, "the scene fuzzer reads no images");
 	return -1;
 }
 
-int image_png_indices(const char *path, long max_texels, unsigned char **out, int *width, int *height)
+int image_png_indices(const char *path, const image_limits *lim, unsigned char **out, int *width, int *height)
 {
-	(void)path, (void)max_texels, (void)width, (void)height;
+	(void)path, (void)lim, (void)width, (void)height;
 	*out = NULL;
 	return 0;
 }

@@ -687,18 +687,24 @@ int cli_pov_region(const cli_pov *p, int width, int height, int rect[4])
 	static const char *const names[4] = { "+SC", "+SR", "+EC", "+ER" };   /* ORDER CLI_REGION_ */
 	int size[4] = { width, height, width, height };
 	for (int i = 0; i < 4; i++) {
-		double v = p->region[i];
+		double v = p->region[i], r;
 		if (!(p->region_given & 1 << i))
-			rect[i] = i < 2 ? 0 : size[i] - 1;
+			r = i < 2 ? 0 : size[i] - 1;
 		else if (v >= 0 && (i < 2 ? v < 1 : v <= 1))
-			rect[i] = (int)(size[i] * v) - (i < 2 ? 0 : 1);
+			r = floor(size[i] * v) - (i < 2 ? 0 : 1);
 		else
-			rect[i] = (int)(v - 1);
-		if (rect[i] >= size[i]) {
+			r = floor(v - 1);
+		/* checked as a double: a pixel such as 4e100 (or NaN) is no int */
+		if (!(r < size[i])) {
 			diag_error(SRC_NOWHERE, "%s: %g is past the image's %s (%d pixels)", names[i], v,
 			           i % 2 ? "height" : "width", size[i]);
 			return -1;
 		}
+		if (r < (i < 2 ? 0 : -1)) {
+			diag_error(SRC_NOWHERE, "%s: %g is before the image's first pixel", names[i], v);
+			return -1;
+		}
+		rect[i] = (int)r;
 	}
 	if (rect[CLI_REGION_RIGHT] < rect[CLI_REGION_LEFT] || rect[CLI_REGION_BOTTOM] < rect[CLI_REGION_TOP]) {
 		diag_error(SRC_NOWHERE, "the part of the image to render (+SC +SR +EC +ER) is empty");

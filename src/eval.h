@@ -47,8 +47,12 @@ typedef struct {
 	 * 0 means the EVAL_DEFAULT_ value. */
 	int max_include_depth, max_macro_depth;
 	long max_loop_iterations;
-	/* Seconds assimp may take on one mesh file (--mesh-time-limit); 0: no limit. */
+	/* Seconds a library (assimp, OpenImageIO, libpng, FreeType) may take on one
+	 * file (--load-time-limit, alias --mesh-time-limit); 0: no limit. */
 	unsigned mesh_time_limit;
+	/* Bytes the scene's images, meshes and height fields may take
+	 * (--memory-limit); 0: what the host has available (eval_memory.c). */
+	double memory_limit;
 	/* File I/O security (eval_access.c): the files a scene may make eclat read
 	 * and write. The scene's own folder and the include folders always count;
 	 * io_current_folder adds the current one (the command line's), which the

@@ -28,6 +28,17 @@
 static const char *const types[] = { "gif", "tga", "pot", "png", "pgm", "ppm", "jpeg", "tiff", "sys", "exr", "hdr",
                                      "iff", "bmp" };
 
+/* What a grid point takes, from its height to its two triangles in the mesh
+ * and their share of the device's triangles and BVH: about 128 bytes. */
+#define BYTES_PER_POINT 128.0
+
+static int claim_grid(struct eval *e, src_loc loc, int w, int h)
+{
+	char what[96];
+	snprintf(what, sizeof what, "a height field of %d x %d points", w, h);
+	return eval_memory_claim(e, loc, (double)w * h * BYTES_PER_POINT, what);
+}
+
 /* The grid's heights (0 .. 65535), bottom row first, from the image file. */
 static int image_heights(struct eval *e, const ast_node *at, const char *name, double **h, int *w, int *hh)
 {
@@ -39,18 +50,24 @@ static int image_heights(struct eval *e, const ast_node *at, const char *name, d
 		free(path);
 		return -1;
 	}
-	if (image_read(use, MAX_TEXELS, &d, why, sizeof why)) {
+	image_limits lim = { MAX_TEXELS, e->opt->mesh_time_limit, eval_memory_left(e) };
+	if (image_read(use, &lim, &d, why, sizeof why)) {
 		eval_error(e, at->loc, "cannot read height field image '%s': %s", name, why);
 		free(path);
 		return -1;
 	}
 	unsigned char *index = NULL;
 	int iw, ih;
-	if (!image_png_indices(use, MAX_TEXELS, &index, &iw, &ih) || iw != d.width || ih != d.height) {
+	if (!image_png_indices(use, &lim, &index, &iw, &ih) || iw != d.width || ih != d.height) {
 		free(index);
 		index = NULL;
 	}
 	free(path);
+	if (claim_grid(e, at->loc, d.width, d.height)) {
+		free(d.rgba);
+		free(index);
+		return -1;
+	}
 	*w = d.width;
 	*hh = d.height;
 	*h = eval_xrealloc(NULL, (size_t)d.width * d.height * sizeof **h);
@@ -86,6 +103,8 @@ static int function_heights(struct eval *e, const ast_node *fn, double **h, int 
 	int rc = eval_function_index(e, fn, "the height_field is left out", &f);
 	if (rc)
 		return rc;
+	if (claim_grid(e, fn->loc, *w, *hh))
+		return -1;
 	*h = eval_xrealloc(NULL, (size_t)*w * *hh * sizeof **h);
 	for (int row = 0; row < *hh; row++)
 		for (int x = 0; x < *w; x++) {

@@ -139,7 +139,14 @@ struct eval {
 	struct eval_file *files; /* #fopen's open files (eval_fileio.c) */
 	int n_files;
 	struct eval_access *access;  /* the folders the scene may read and write (eval_access.c) */
+	double memory_used, memory_limit;  /* bytes (eval_memory.c); limit 0: not looked up yet */
 };
+
+/* Memory for what the scene loads (eval_memory.c): claim bytes before
+ * allocating them; -1 after an error at loc that names what and the numbers.
+ * eval_memory_left: the bytes still free to claim. */
+int eval_memory_claim(struct eval *e, src_loc loc, double bytes, const char *what);
+double eval_memory_left(struct eval *e);
 
 /* Errors and warnings with the chain of includes and macro calls as notes. */
 void eval_error(struct eval *e, src_loc loc, const char *fmt, ...) __attribute__((format(printf, 3, 4)));

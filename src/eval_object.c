@@ -1013,6 +1013,13 @@ static int mesh_file(struct eval *e, struct cursor *c, const ast_node *item, str
 	free(path);
 	if (rc)
 		return -1;
+	/* the child read the file; what it sent is here already (mesh_io.c), and
+	 * the lowering and the BVH will want about as much again */
+	double bytes = 2.0 * ((double)m.n_v * sizeof *m.v * (m.nrm ? 2 : 1) + (double)m.n_faces * sizeof *m.face * 3);
+	if (eval_memory_claim(e, arg->loc, bytes, "the mesh")) {
+		scene_mesh_free(&m);
+		return -1;
+	}
 	m.face_mat = eval_xrealloc(NULL, (m.n_faces ? m.n_faces : 1) * sizeof *m.face_mat);
 	for (int f = 0; f < m.n_faces; f++)
 		m.face_mat[f] = -1;   /* every face takes the mesh's texture */

@@ -20,6 +20,7 @@
 #include FT_OUTLINE_H
 
 #include "eval_int.h"
+#include "loader.h"
 #include "prism.h"
 #include "revolve.h"
 
@@ -591,8 +592,7 @@ static unsigned next_char(const unsigned char **s)
 /* The glyphs of the string, placed as POV-Ray places them (ProcessNewTTF): the
  * first with its left edge at 0, each next one advance (and kerning) further,
  * offset added after each; the left bearing is taken as the glyph's xMin. */
-static int text_glyphs(struct eval *e, FT_Face face, const char *str, const double offset[3], struct build *b,
-                       src_loc loc)
+static int text_glyphs(FT_Face face, const char *str, const double offset[3], struct build *b, unsigned *bad)
 {
 	FT_Outline_Funcs funcs = { .move_to = move_to, .line_to = line_to, .conic_to = conic_to, .cubic_to = cubic_to };
 	double scale = 1.0 / face->units_per_EM, total[2] = { 0, 0 };
@@ -601,7 +601,7 @@ static int text_glyphs(struct eval *e, FT_Face face, const char *str, const doub
 	for (int i = 0; *s; i++) {
 		FT_UInt g = FT_Get_Char_Index(face, next_char(&s));
 		if (FT_Load_Glyph(face, g, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP)) {
-			eval_error(e, loc, "text: the font has no outline for glyph %u", g);
+			*bad = g;
 			return -1;
 		}
 		FT_GlyphSlot slot = face->glyph;
@@ -629,6 +629,75 @@ static int text_glyphs(struct eval *e, FT_Face face, const char *str, const doub
 	}
 	start_glyph(b);   /* the end of the last */
 	b->ol.n_glyphs--;
+	return 0;
+}
+
+/* FreeType runs in a child process (src/loader.h): a font with a broken table
+ * may crash or hang it, and that must be an error at the text, not eclat's end.
+ * The child sends the outline back: its edges and where each glyph starts. */
+enum { FONT_OK, FONT_NOT_A_FONT, FONT_NO_GLYPH };
+
+struct font_job {
+	const char *path, *str;
+	const double *offset;
+	int answer;             /* FONT_ */
+	unsigned bad_glyph;     /* FONT_NO_GLYPH's */
+	struct build b;
+};
+
+/* The outline's counts are capped so that a child gone wrong cannot make eclat
+ * allocate without bound (a glyph is at most a few thousand edges, and the
+ * string is the scene's). */
+#define FONT_MAX_EDGES (1 << 26)
+
+static int font_work(int fd, void *arg)
+{
+	struct font_job *j = arg;
+	FT_Library lib;
+	FT_Face face;
+	int head[4] = { FONT_NOT_A_FONT, 0, 0, 0 };   /* answer, bad glyph, edges, glyphs */
+	if (FT_Init_FreeType(&lib) == 0) {
+		if (FT_New_Face(lib, j->path, 0, &face) == 0) {
+			unsigned bad = 0;
+			head[0] = text_glyphs(face, j->str, j->offset, &j->b, &bad) ? FONT_NO_GLYPH : FONT_OK;
+			head[1] = (int)bad;
+			FT_Done_Face(face);
+		}
+		FT_Done_FreeType(lib);
+	}
+	if (head[0] == FONT_OK) {
+		head[2] = j->b.ol.n_edges;
+		head[3] = j->b.ol.n_glyphs;
+	}
+	return loader_write(fd, head, sizeof head) ||
+	       (head[2] && loader_write(fd, j->b.ol.edge, (size_t)head[2] * sizeof *j->b.ol.edge)) ||
+	       (head[0] == FONT_OK && loader_write(fd, j->b.ol.glyph, ((size_t)head[3] + 1) * sizeof *j->b.ol.glyph));
+}
+
+static int font_take(int fd, void *arg, char *err, size_t errlen)
+{
+	(void)err;
+	(void)errlen;
+	struct font_job *j = arg;
+	int head[4];
+	if (loader_read(fd, head, sizeof head))
+		return -2;
+	j->answer = head[0];
+	j->bad_glyph = (unsigned)head[1];
+	if (head[0] != FONT_OK)
+		return 0;
+	if (head[2] < 0 || head[2] > FONT_MAX_EDGES || head[3] < 0 || head[3] > FONT_MAX_EDGES)
+		return -2;
+	j->b.ol.n_edges = head[2];
+	j->b.ol.n_glyphs = head[3];
+	j->b.ol.edge = eval_xrealloc(NULL, ((size_t)head[2] + 1) * sizeof *j->b.ol.edge);
+	j->b.ol.glyph = eval_xrealloc(NULL, ((size_t)head[3] + 1) * sizeof *j->b.ol.glyph);
+	if ((head[2] && loader_read(fd, j->b.ol.edge, (size_t)head[2] * sizeof *j->b.ol.edge)) ||
+	    loader_read(fd, j->b.ol.glyph, ((size_t)head[3] + 1) * sizeof *j->b.ol.glyph))
+		return -2;
+	for (int g = 0; g <= head[3]; g++)   /* prism.c indexes edges by these */
+		if (j->b.ol.glyph[g] < 0 || j->b.ol.glyph[g] > head[2] || (g && j->b.ol.glyph[g] < j->b.ol.glyph[g - 1]))
+			return -2;
 	return 0;
 }
 
@@ -689,30 +758,31 @@ static int text_args(struct eval *e, struct cursor *c, const ast_node *b, scene_
 			free(with);
 		}
 	}
-	FT_Library lib;
-	FT_Face face;
 	int rc = -1;
 	if (!path) {
 		eval_error(e, font_loc, "cannot find the font file '%s'", font);
 	} else if (eval_access(e, path, false, font_loc, "text")) {
 		/* refused, and said so */
-	} else if (FT_Init_FreeType(&lib)) {
-		eval_error(e, font_loc, "cannot start FreeType to read '%s'", font);
 	} else {
-		if (FT_New_Face(lib, path, 0, &face)) {
+		struct font_job j = { .path = path, .str = str, .offset = offset };
+		char why[512];
+		const char *not_file = loader_not_a_file(path);
+		if (not_file)
+			eval_error(e, font_loc, "cannot read the font '%s': %s", font, not_file);
+		else if (loader_run("FreeType", e->opt->mesh_time_limit, font_work, font_take, &j, why, sizeof why))
+			eval_error(e, font_loc, "cannot read the font '%s': %s", font, why);
+		else if (j.answer == FONT_NOT_A_FONT)
 			eval_error(e, font_loc, "'%s' is not a font FreeType can read", font);
-		} else {
-			struct build bld = { 0 };
-			rc = text_glyphs(e, face, str, offset, &bld, arg->loc);
-			if (rc == 0)
-				store(e, &bld, o);
-			else {
-				free(bld.ol.edge);
-				free(bld.ol.glyph);
-			}
-			FT_Done_Face(face);
+		else if (j.answer == FONT_NO_GLYPH)
+			eval_error(e, arg->loc, "text: the font has no outline for glyph %u", j.bad_glyph);
+		else {
+			store(e, &j.b, o);
+			rc = 0;
 		}
-		FT_Done_FreeType(lib);
+		if (rc) {
+			free(j.b.ol.edge);
+			free(j.b.ol.glyph);
+		}
 	}
 	free(path);
 	free(font);

@@ -427,12 +427,14 @@ static int image_load(struct eval *e, const char *name, double gamma, int premul
 		free(path);
 		return -1;
 	}
-	if (image_read(use, IMAGE_MAX_TEXELS, &d, why, sizeof why)) {
+	image_limits lim = { IMAGE_MAX_TEXELS, e->opt->mesh_time_limit, eval_memory_left(e) };
+	if (image_read(use, &lim, &d, why, sizeof why)) {
 		eval_error(e, loc, "cannot read image '%s': %s", name, why);
 		free(path);
 		return -1;
 	}
 	free(path);
+	eval_memory_claim(e, loc, (double)d.width * d.height * 4 * sizeof *d.rgba, "the image");   /* fits: checked */
 	scene_image im = { .key = eval_xstrdup(key), .rgba = d.rgba, .width = d.width, .height = d.height,
 	                   .premultiplied = premul >= 0 ? premul != 0 : d.premultiplied != 0, .loc = loc };
 	image_decode(&im, &d);

@@ -3,7 +3,10 @@
 #ifndef ECLAT_FILM_H
 #define ECLAT_FILM_H
 
+#include <stddef.h>
 #include <stdint.h>
+
+#include "image.h"
 
 typedef struct {
 	int width, height;
@@ -31,5 +34,10 @@ int film_aov_known(const char *name);
  * sample, -1 where none) and heat (box and primitive tests of the camera ray, per
  * sample). Returns -1 when the AOV needs film.aov and it is missing. */
 int film_aov(const film *f, const char *name, float *rgb);
+
+/* Writes f's colours, linear, to an EXR named after target in $TMPDIR (else
+ * /tmp, /var/tmp), for when target cannot be written: 0 with its name in
+ * where, or -1 (src/film_rescue.c). */
+int film_rescue(const film *f, const char *target, const image_meta *meta, char *where, size_t n);
 
 #endif

@@ -48,15 +48,28 @@ typedef struct {
 	int bits;            /* per channel in the file: 8, 16, 32 */
 } image_data;
 
-/* Reads path; refuses an image of more than max_texels pixels, saying so with
- * the numbers. Returns 0, or -1 with OpenImageIO's reason in err. Free the
- * pixels with free(). */
-int image_read(const char *path, long max_texels, image_data *out, char *err, size_t errlen);
+/* Reads path; refuses, from the file's header and before decoding, an image of
+ * more than max_texels pixels or IMAGE_MAX_SIDE on a side, saying so with the
+ * numbers, and pixels that would take more than max_bytes here. OpenImageIO
+ * runs in a child process (src/image_child.c) given time_limit seconds (0: no
+ * limit), so a decoder that crashes or hangs is an error. Returns 0, or -1 with the reason in err. Free the pixels with free().
+ * image_read_here does the same in this process (the child's work, and the
+ * fuzz target's). */
+#define IMAGE_MAX_SIDE 65536
+typedef struct {
+	long max_texels;
+	unsigned time_limit;
+	double max_bytes;   /* the memory the pixels may take here (16 bytes each); 0: no limit */
+} image_limits;
+int image_read(const char *path, const image_limits *lim, image_data *out, char *err, size_t errlen);
+int image_read_here(const char *path, long max_texels, image_data *out, char *err, size_t errlen);
 
 /* A colormapped PNG's palette indices, top row first, one byte a pixel (free()
  * them): 1, or 0 when the file is no such PNG (or not one of at most max_texels
- * pixels, or unreadable: image_read says why). libpng (src/image_png.c). */
-int image_png_indices(const char *path, long max_texels, unsigned char **out, int *width, int *height);
+ * pixels, or unreadable: image_read says why). libpng (src/image_png.c), in a
+ * child process as image_read's decoder is. */
+int image_png_indices(const char *path, const image_limits *lim, unsigned char **out, int *width, int *height);
+int image_png_indices_here(const char *path, long max_texels, unsigned char **out, int *width, int *height);
 /* 1 when the extension of path names a format OpenImageIO can write. */
 int image_format_known(const char *path);
 

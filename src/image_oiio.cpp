@@ -9,8 +9,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <cerrno>
 #include <cstdio>
 #include <string>
+#include <fcntl.h>
 #include <unistd.h>
 #include <vector>
 
@@ -40,6 +42,32 @@ extern "C" int image_format_known(const char *path)
 {
 	auto out = ImageOutput::create(path);
 	return out ? 1 : 0;
+}
+
+/* "" when the file just written is on the disk and reads back whole; else why
+ * not. Some of OpenImageIO's writers (PNG's) do not look at what fwrite says,
+ * so a full disk would make an empty or cut image that claims success: the
+ * file is synced (a full disk's delayed blocks fail here) and decoded. */
+static std::string written_whole(const std::string &tmp, int width, int height)
+{
+	int fd = open(tmp.c_str(), O_RDONLY);
+	if (fd < 0 || fsync(fd) != 0) {
+		std::string why = std::strerror(errno);
+		if (fd >= 0)
+			close(fd);
+		return why;
+	}
+	close(fd);
+	auto in = ImageInput::open(tmp);
+	if (!in)
+		return "the file written does not read back (" + OIIO::geterror() + "): is the disk full?";
+	const ImageSpec &spec = in->spec();
+	std::vector<float> px((size_t)spec.width * spec.height * spec.nchannels);
+	bool ok = spec.width == width && spec.height == height &&
+	          in->read_image(0, 0, 0, spec.nchannels, TypeDesc::FLOAT, px.data());
+	std::string why = ok ? "" : "the file written does not read back whole (" + in->geterror() + "): is the disk full?";
+	in->close();
+	return why;
 }
 
 /* Writes pixels (channels floats a pixel) to a temporary file beside path, then
@@ -72,12 +100,17 @@ static int write_atomic(const std::string &p, const float *rgb, int width, int h
 	std::string dir = Filesystem::parent_path(p);
 	std::string tmp = (dir.empty() ? std::string() : dir + "/") + "." +
 	                  Filesystem::filename(p) + ".eclat-" + std::to_string(getpid()) + ".tmp";
-	if (!out->open(tmp, spec))
-		return fail(err, errlen, "cannot write '" + p + "': " + out->geterror());
+	if (!out->open(tmp, spec)) {
+		std::string why = out->geterror();
+		Filesystem::remove(tmp);   /* opening may have made it before failing to write its header */
+		return fail(err, errlen, "cannot write '" + p + "': " + why);
+	}
 	bool ok = out->write_image(TypeDesc::FLOAT, pixels.data());
 	std::string msg = out->geterror();
 	ok = out->close() && ok;
-	if (!ok) {
+	if (ok)
+		msg = written_whole(tmp, width, height);
+	if (!ok || !msg.empty()) {
 		Filesystem::remove(tmp);
 		return fail(err, errlen, "cannot write '" + p + "': " + (msg.empty() ? out->geterror() : msg));
 	}
@@ -95,7 +128,7 @@ extern "C" int image_write(const char *path, const float *rgb, int width, int he
 	return write_atomic(path, rgb, width, height, 3, true, meta, err, errlen);
 }
 
-extern "C" int image_read(const char *path, long max_texels, image_data *out, char *err, size_t errlen)
+extern "C" int image_read_here(const char *path, long max_texels, image_data *out, char *err, size_t errlen)
 {
 	std::string p(path);
 	*out = image_data();
@@ -105,11 +138,23 @@ extern "C" int image_read(const char *path, long max_texels, image_data *out, ch
 		return fail(err, errlen, why.empty() ? "no image format reads it" : why);
 	}
 	const ImageSpec spec = in->spec();   /* a copy: reading may change the reader's own (GIF's does) */
+	/* The header is all that was read: what it claims is checked before the
+	 * decoder allocates for it (a tiny file may claim 100000 x 100000). */
 	long texels = (long)spec.width * spec.height;
-	if (spec.width <= 0 || spec.height <= 0 || texels > max_texels) {
-		char msg[160];
-		std::snprintf(msg, sizeof msg, "it is %d x %d pixels, more than the %ld pixels an image may have",
-		              spec.width, spec.height, max_texels);
+	char msg[200];
+	if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1) {
+		std::snprintf(msg, sizeof msg, "its header claims %d x %d x %d pixels: a corrupt file?", spec.width,
+		              spec.height, spec.depth);
+		return fail(err, errlen, msg);
+	}
+	if (spec.width > IMAGE_MAX_SIDE || spec.height > IMAGE_MAX_SIDE || texels > max_texels) {
+		std::snprintf(msg, sizeof msg, "its header says %d x %d pixels, more than the %ld pixels (%d on a side) an image may have",
+		              spec.width, spec.height, max_texels, IMAGE_MAX_SIDE);
+		return fail(err, errlen, msg);
+	}
+	if (spec.nchannels < 1 || spec.nchannels > 16 || spec.deep) {
+		std::snprintf(msg, sizeof msg, "it has %d channels%s: not an image eclat reads", spec.nchannels,
+		              spec.deep ? ", deep" : "");
 		return fail(err, errlen, msg);
 	}
 	int nc = spec.nchannels;

@@ -7,7 +7,7 @@
 
 #include "image.h"
 
-int image_png_indices(const char *path, long max_texels, unsigned char **out, int *width, int *height)
+int image_png_indices_here(const char *path, long max_texels, unsigned char **out, int *width, int *height)
 {
 	*out = NULL;
 	FILE *f = fopen(path, "rb");

@@ -989,6 +989,8 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	if (rc == 0)
 		lower_emitters(out);
 	out->functions = lower_function_source(s);
+	if (s->n_functions > 0 && !out->functions)
+		rc = -1;   /* said why, or out of memory: no kernel without its functions */
 	for (int m = 0; m < s->n_meshes; m++) {
 		free(lw.meshes[m].prims.p);
 		bvh_free(&lw.meshes[m].bvh);

@@ -105,8 +105,11 @@ int lower_camera_solids(const scene *s);
 /* The OpenCL build options for lr's kernels (the node layout is a -D, and
  * SCENE_FUNCTIONS says that lr->functions follows the kernels' files). */
 const char *lower_kernel_options(const lower_result *lr);
-/* The scene's functions as OpenCL C, or NULL when it has none (or on out of memory). */
+/* The scene's functions as OpenCL C, or NULL when it has none (or on out of
+ * memory, or after an error that a program is malformed). */
 char *lower_function_source(const scene *s);
+/* 1 when function f's program keeps scene.h's promises; else 0, why in why. */
+int lower_function_valid(const scene *s, int f, char *why, size_t n);
 
 /* A POV-Ray texture and interior as the kernels read them (ambient multiplied
  * by ambient_light); its pattern pigments go into lt. local: a mesh's own

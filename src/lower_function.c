@@ -7,11 +7,13 @@
  * double. No name, string or text of the scene reaches the kernels' source, so
  * whatever a scene writes, the program is well-formed and does only
  * arithmetic. The host's twin is scene_function_eval. */
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "diag.h"
 #include "lower.h"
 
 /* Each op's expression on its operands #0, #1, ...: the same as apply() in
@@ -71,7 +73,14 @@ static void statement(struct text *t, const scene *s, const scene_fop *o, int *s
 {
 	put(t, "\treal t%d = ", temp);
 	if (o->op == FOP_CONST) {
-		put(t, "(real)(%.17g);\n", o->value);
+		/* %g writes "inf" and "nan", which OpenCL C would read as names:
+		 * evaluation refuses such constants, and here they are still numbers */
+		if (isnan(o->value))
+			put(t, "(real)NAN;\n");
+		else if (isinf(o->value))
+			put(t, "%s(real)INFINITY;\n", o->value < 0 ? "-" : "");
+		else
+			put(t, "(real)(%.17g);\n", o->value);
 	} else if (o->op == FOP_PARAM) {
 		put(t, "p%d;\n", o->arg);
 	} else if (o->op == FOP_NOISE3) {
@@ -115,10 +124,53 @@ static void function(struct text *t, const scene *s, int f)
 		put(t, "\treturn 0;\n}\n\n");
 }
 
+/* The program is what the ops promise (scene.h): eval_function.c makes it so,
+ * and this keeps the text well-formed whatever hands it a program (the fuzz
+ * target does): every op known, the stack within SCENE_FUNCTION_STACK and
+ * never short, a parameter one of the function's, a call an earlier function. */
+int lower_function_valid(const scene *s, int f, char *why, size_t n)
+{
+	const scene_function *fn = &s->functions[f];
+	if (fn->n_params < 0 || fn->n_params > SCENE_FUNCTION_STACK || fn->n_ops < 0) {
+		snprintf(why, n, "%d parameters and %d ops", fn->n_params, fn->n_ops);
+		return 0;
+	}
+	int top = 0;
+	for (int i = 0; i < fn->n_ops; i++) {
+		const scene_fop *o = &fn->ops[i];
+		int pop = o->op == FOP_CALL && o->arg >= 0 && o->arg < f ? s->functions[o->arg].n_params
+		        : scene_fop_arity(o->op);
+		if (o->op < 0 || o->op >= FOP_COUNT || (o->op > FOP_CALL && o->op != FOP_NOISE3 && !templates[o->op]))
+			snprintf(why, n, "op %d is %d, no op", i, o->op);
+		else if (o->op == FOP_PARAM && (o->arg < 0 || o->arg >= fn->n_params))
+			snprintf(why, n, "op %d reads parameter %d of %d", i, o->arg, fn->n_params);
+		else if (o->op == FOP_CALL && (o->arg < 0 || o->arg >= f))
+			snprintf(why, n, "op %d calls function %d, not an earlier one", i, o->arg);
+		else if (pop > top)
+			snprintf(why, n, "op %d takes %d values from a stack of %d", i, pop, top);
+		else if (top - pop + 1 > SCENE_FUNCTION_STACK)
+			snprintf(why, n, "op %d makes the stack deeper than %d", i, SCENE_FUNCTION_STACK);
+		else {
+			top += 1 - pop;
+			continue;
+		}
+		return 0;
+	}
+	return 1;
+}
+
 char *lower_function_source(const scene *s)
 {
 	if (s->n_functions == 0)
 		return NULL;
+	for (int f = 0; f < s->n_functions; f++) {
+		char why[128];
+		if (!lower_function_valid(s, f, why, sizeof why)) {
+			diag_error(s->functions[f].loc, "the function's program is malformed (%s): eclat's error, "
+			           "not the scene's", why);
+			return NULL;
+		}
+	}
 	struct text t = { 0 };
 	put(&t, "/* The scene's functions, written by src/lower_function.c. */\n");
 	for (int f = 0; f < s->n_functions; f++)

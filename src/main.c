@@ -14,6 +14,7 @@
 #include "device.h"
 #include "eval.h"
 #include "film.h"
+#include "host_memory.h"
 #include "image.h"
 #include "lower.h"
 #include "merge.h"
@@ -49,6 +50,7 @@ struct options {
 	int max_include_depth, max_macro_depth;   /* 0: the evaluator's defaults */
 	long max_loop_iterations;
 	int mesh_time_limit;
+	double memory_limit;   /* bytes; 0: what the host has */
 	int threads;      /* --threads, POV-Ray's +WT; 0: the device's own */
 	int range_first, range_count;   /* --sample-range; count 0: all samples */
 	int devices[MAX_LIST], n_devices;   /* --device 0,2 (more than one); --device all: n_devices -1 */
@@ -61,7 +63,7 @@ enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_D
        OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_BVH_LAYOUT, OPT_STATS, OPT_SKIP_UNSUPPORTED, OPT_EXPORT_MESH2,
        OPT_MAX_INCLUDE_DEPTH, OPT_MAX_MACRO_DEPTH, OPT_MAX_LOOP_ITERATIONS, OPT_MESH_TIME_LIMIT,
        OPT_IO_SECURITY, OPT_IO_ALLOW, OPT_IO_ALLOW_WRITE, OPT_THREADS, OPT_SAMPLE_RANGE, OPT_RESUME,
-       OPT_CONTINUE };
+       OPT_CONTINUE, OPT_MEMORY_LIMIT };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -88,6 +90,8 @@ static const struct option long_options[] = {
 	{ "max-macro-depth", required_argument, NULL, OPT_MAX_MACRO_DEPTH },
 	{ "max-loop-iterations", required_argument, NULL, OPT_MAX_LOOP_ITERATIONS },
 	{ "mesh-time-limit", required_argument, NULL, OPT_MESH_TIME_LIMIT },
+	{ "load-time-limit", required_argument, NULL, OPT_MESH_TIME_LIMIT },
+	{ "memory-limit", required_argument, NULL, OPT_MEMORY_LIMIT },
 	{ "io-security", required_argument, NULL, OPT_IO_SECURITY },
 	{ "io-allow", required_argument, NULL, OPT_IO_ALLOW },
 	{ "io-allow-write", required_argument, NULL, OPT_IO_ALLOW_WRITE },
@@ -148,8 +152,11 @@ static void usage(FILE *out)
 		"      --max-include-depth N  #include files nested at most N deep (default %d)\n"
 		"      --max-macro-depth N  macro calls nested at most N deep (default %d, at most %d)\n"
 		"      --max-loop-iterations N  stop a #while or #for after N turns (default %ld)\n"
-		"      --mesh-time-limit S  give up on a mesh file assimp is still reading after S\n"
-		"                        seconds (default %d; 0: no limit)\n"
+		"      --load-time-limit S, --mesh-time-limit S  give up on a mesh, image or font\n"
+		"                        file a library is still reading after S seconds\n"
+		"                        (default %d; 0: no limit)\n"
+		"      --memory-limit SIZE  the memory (512M, 4G) the scene's images, meshes and\n"
+		"                        height fields may take (default: what the host has free)\n"
 		"      --io-security LEVEL  the files a scene may read and write: restricted\n"
 		"                        (default): its folder, the include folders, the current\n"
 		"                        folder and those allowed; read-only: reads anywhere,\n"
@@ -374,6 +381,12 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case OPT_MESH_TIME_LIMIT:
 			o->mesh_time_limit = int_arg("--mesh-time-limit", optarg, 0, 86400);
 			break;
+		case OPT_MEMORY_LIMIT:
+			if (host_memory_parse(optarg, &o->memory_limit)) {
+				fprintf(stderr, "eclat: --memory-limit needs a size such as 512M or 4G, not '%s'\n", optarg);
+				exit(1);
+			}
+			break;
 		case OPT_IO_SECURITY: o->io_security = io_security_arg(optarg); break;
 		case OPT_IO_ALLOW: io_dir_arg("--io-allow", o->io_read_dirs, &o->n_io_read_dirs, optarg); break;
 		case OPT_IO_ALLOW_WRITE:
@@ -492,6 +505,9 @@ static int write_film(const film *f, void *ctx)
 	if (rc == 0)
 		return 0;
 	fprintf(stderr, "eclat: %s\n", rgb ? err : "out of memory");
+	char kept[600];
+	if (film_rescue(f, out->path, &meta, kept, sizeof kept) == 0)
+		fprintf(stderr, "eclat: the %ld samples per pixel are kept in '%s'\n", f->samples, kept);
 	return -1;
 }
 
@@ -792,6 +808,7 @@ int main(int argc, char **argv)
 	eopt.max_macro_depth = o.max_macro_depth;
 	eopt.max_loop_iterations = o.max_loop_iterations;
 	eopt.mesh_time_limit = (unsigned)o.mesh_time_limit;
+	eopt.memory_limit = o.memory_limit;
 	eopt.io_security = o.io_security;
 	eopt.io_current_folder = true;
 	eopt.io_read_dirs = o.io_read_dirs;

@@ -7,20 +7,27 @@ set -u
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/eclat-test.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 failures=0
+# A tests/*.tap script reports each case as a TAP line, so that make check
+# counts (and names) each case; a tests/*.test script reports one result.
+cases=0
+case $0 in *.tap) tap=1 ;; *) tap= ;; esac
 
 fail() {
-	echo "FAIL: $*"
+	cases=$((cases + 1))
+	if [ -n "$tap" ]; then echo "not ok $cases - $*"; else echo "FAIL: $*"; fi
 	failures=$((failures + 1))
 }
 
 pass() {
-	echo "ok: $*"
+	cases=$((cases + 1))
+	if [ -n "$tap" ]; then echo "ok $cases - $*"; else echo "ok: $*"; fi
 }
 
 # finish: the script's exit status, 1 when any check failed. Cases left out for
 # want of an optional mesh are named on one line that make check gathers.
 finish() {
 	[ -z "$left_out" ] || echo "left out: $(basename "$0" .test) ($left_out)"
+	[ -z "$tap" ] || { echo "1..$cases"; exit 0; }   # the failures are in the TAP lines
 	[ "$failures" -eq 0 ] || { echo "$failures check(s) failed"; exit 1; }
 	exit 0
 }

@@ -263,6 +263,55 @@ static void check_source(const char *src)
 	failures += !clean;
 }
 
+/* Programs made here, not by the evaluator (issue 20): constants that are no
+ * finite number must still be written as OpenCL C that builds (a stand-in for
+ * the kernels' real and noise is enough to build it), and a program that breaks
+ * scene.h's promises (a stack too short, a call of a later function, an op that
+ * is none) must be refused, never written. */
+static void check_hand_made(device_ctx *dev)
+{
+	scene s;
+	scene_init(&s);
+	scene_fop odd[] = { { FOP_PARAM, 0, 0 }, { FOP_CONST, 0, NAN }, { FOP_ADD, 0, 0 }, { FOP_CONST, 0, INFINITY },
+	                    { FOP_MUL, 0, 0 }, { FOP_CONST, 0, -INFINITY }, { FOP_SUB, 0, 0 }, { FOP_CONST, 0, 1e308 },
+	                    { FOP_CONST, 0, -0.0 }, { FOP_CONST, 0, 4.9e-324 }, { FOP_SELECT3, 0, 0 }, { FOP_ADD, 0, 0 } };
+	scene_function fn = { .n_params = 1, .ops = malloc(sizeof odd), .n_ops = (int)(sizeof odd / sizeof *odd) };
+	memcpy(fn.ops, odd, sizeof odd);
+	scene_add_function(&s, &fn);
+	char *src = lower_function_source(&s);
+	const char *prelude = "typedef float real;\nfloat pattern_noise(float3 p, int g) { return p.x + g; }\n";
+	const char *parts[2] = { prelude, src ? src : "" };
+	cl_int err;
+	cl_program p = clCreateProgramWithSource(dev->context, 2, parts, NULL, &err);
+	bool built = src && p && clBuildProgram(p, 1, &dev->device, "", NULL, NULL) == CL_SUCCESS;
+	printf("%s: NaN, infinities, -0 and a denormal as constants build as OpenCL C\n", built ? "ok" : "FAIL");
+	if (!built && src)
+		printf("%s", src);
+	failures += !built;
+	if (p)
+		clReleaseProgram(p);
+	free(src);
+	static const scene_fop broken[][2] = {
+		{ { FOP_CONST, 0, 1 }, { FOP_ADD, 0, 0 } },      /* a stack too short */
+		{ { FOP_CONST, 0, 1 }, { FOP_CALL, 5, 0 } },     /* a call of a later function */
+		{ { FOP_PARAM, 3, 0 }, { FOP_NEG, 0, 0 } },      /* a parameter it does not have */
+		{ { FOP_CONST, 0, 1 }, { FOP_COUNT + 7, 0, 0 } },   /* no op */
+	};
+	for (size_t i = 0; i < sizeof broken / sizeof *broken; i++) {
+		scene b;
+		scene_init(&b);
+		scene_function bf = { .n_params = 1, .ops = malloc(sizeof broken[i]), .n_ops = 2 };
+		memcpy(bf.ops, broken[i], sizeof broken[i]);
+		scene_add_function(&b, &bf);
+		char *bsrc = lower_function_source(&b);
+		printf("%s: a malformed program (%zu) is refused\n", bsrc ? "FAIL" : "ok", i);
+		failures += bsrc != NULL;
+		free(bsrc);
+		scene_free(&b);
+	}
+	scene_free(&s);
+}
+
 /* The sphere of radius r about c: the ray's nearest hit after 0, or INFINITY. */
 static double sphere_hit(const double c[3], double r, const double o[3], const double d[3])
 {
@@ -412,6 +461,7 @@ int main(int argc, char **argv)
 	}
 	for (int i = 0; i < N_ISO; i++)
 		test_isosurface(&dev, prog, &s, &lr, i, n);
+	check_hand_made(&dev);
 	free(pts);
 	free(out);
 	clReleaseProgram(prog);
