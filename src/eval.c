@@ -1191,6 +1191,8 @@ int eval_scene(const ast_node *root, scene *s, const eval_options *opt)
 		eval_scene_statement(&e, item);
 	eval_cursor_free(&c);
 	film_gamma(&e);
+	if (!e.noise_given)   /* POV-Ray's default, 2, is 1 for a scene older than 3.5 */
+		s->noise_generator = e.version < 3.5 ? 1 : 2;
 	eval_free(&e);
 	return diag_error_count() > e.errors_at_start ? -1 : 0;
 }

@@ -128,6 +128,7 @@ struct eval {
 	double version;
 	bool version_given;      /* a #version ran */
 	src_loc version_loc;     /* where the last #version ran */
+	bool noise_given;        /* global_settings gave a noise_generator */
 	struct rng rng;
 	ast_node **trees;        /* included files, kept while their macros may run */
 	int n_trees;

@@ -36,7 +36,7 @@ int eval_pattern_list_size(int kind)
 /* POV-Ray 3.7's defaults for a pattern's modifiers. */
 void eval_pattern_defaults(scene_pigment *pg, int kind, src_loc loc)
 {
-	*pg = (scene_pigment){ .kind = kind, .wave = WAVE_RAMP, .noise_generator = 2, .frequency = 1,
+	*pg = (scene_pigment){ .kind = kind, .wave = WAVE_RAMP, .frequency = 1,
 	                       .wave_exponent = 1, .loc = loc };
 	double *p = pg->params[0];
 	switch (kind) {

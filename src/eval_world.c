@@ -742,8 +742,34 @@ static int global_arg(struct eval *e, const ast_node *item)
 	return 0;
 }
 
+/* noise_generator N: the generator of the patterns that name none. 1 when
+ * item is something else. */
+static int noise_generator(struct eval *e, struct cursor *c, const ast_node *item)
+{
+	if (item->kind != AST_IDENT || strcmp(item->str, AST_WORD_NOISE_GENERATOR) != 0 || eval_lookup(e, item->str))
+		return 1;
+	int err = 0;
+	double g;
+	const ast_node *arg = eval_next_expr(c, &err);
+	if (!arg) {
+		if (!err)
+			eval_error(e, item->loc, "'noise_generator' needs a value");
+		return -1;
+	}
+	if (eval_expect_float(e, arg, &g))
+		return -1;
+	if (g < 1 || g >= 4) {
+		eval_error(e, arg->loc, "noise_generator is 1, 2 or 3");
+		return -1;
+	}
+	e->s->noise_generator = (int)g;
+	e->noise_given = true;
+	return 0;
+}
+
 /* global_settings { [assumed_gamma F] [max_trace_level N] [adc_bailout F]
- *                   [ambient_light COLOR] }: POV-Ray's other settings are ignored. */
+ *                   [ambient_light COLOR] [noise_generator N] }: POV-Ray's other
+ * settings are ignored. */
 static int global_settings(struct eval *e, const ast_node *b)
 {
 	struct cursor c;
@@ -751,6 +777,8 @@ static int global_settings(struct eval *e, const ast_node *b)
 	const ast_node *item;
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		if ((rc = noise_generator(e, &c, item)) <= 0)
+			continue;
 		if ((rc = eval_skip_pov_word(e, &c, item)) <= 0)
 			continue;
 		if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {

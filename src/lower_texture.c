@@ -156,7 +156,7 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 	lt->patterns = grow_to(lt->patterns, &lt->cap_patterns, lt->n_patterns, sizeof *lt->patterns);
 	dev_pattern d = {
 		.rows = { row(&inv, 0), row(&inv, 1), row(&inv, 2) },
-		.kind = pg->kind, .wave = pg->wave, .noise_generator = pg->noise_generator,
+		.kind = pg->kind, .wave = pg->wave, .noise_generator = scene_noise_generator(s, pg),
 		.frequency = (float)pg->frequency, .phase = (float)pg->phase, .wave_exponent = (float)pg->wave_exponent,
 		.bump_size = (float)pg->bump_size, .normal = { (float)pg->accuracy, 0, 0, 0 },
 		.params = { f4v(pg->params[0]), f4v(pg->params[1]) },

@@ -53,7 +53,7 @@ typedef struct {
  * PATTERN_SOLID holds a colour_map alone (a declared map). */
 typedef struct {
 	int kind;                /* PATTERN_ */
-	int wave, noise_generator;
+	int wave, noise_generator;   /* 1, 2 or 3; 0: global_settings' (scene_noise_generator) */
 	double frequency, phase, wave_exponent;
 	double params[2][4];     /* by kind, as dev_pattern's */
 	double bump_size, accuracy;  /* a normal's: its amount (0.5) and accuracy (0.02) */
@@ -356,7 +356,7 @@ enum {
 /* CONST pushes value; PARAM pushes parameter arg; CALL pops the callee's
  * parameters (the last on top) and pushes function arg's value for them;
  * NOISE3 pops x, y, z and pushes POV-Ray's Noise there with noise_generator
- * arg (f_noise3d). */
+ * arg, or the scene's when arg is 0 (f_noise3d). */
 typedef struct {
 	int op, arg;
 	double value;
@@ -414,10 +414,13 @@ typedef struct {
 	                       * gamma correction off (an older #version without assumed_gamma):
 	                       * the colours are written into 8-bit images as they are */
 	float adc_bailout;    /* 1/255 */
+	int noise_generator;  /* a pattern's without one of its own: 1, 2 or 3, POV-Ray's 2 */
 	float ambient_light[3]; /* 1 */
 } scene;
 
 void scene_init(scene *s);
+/* The noise generator pg uses: its own, else the scene's. */
+int scene_noise_generator(const scene *s, const scene_pigment *pg);
 /* Appends; exits with a message on out of memory. */
 void scene_add_object(scene *s, const scene_object *o);
 void scene_add_light(scene *s, const scene_light *l);
