@@ -51,14 +51,16 @@ const char *eval_pov_word(const char *name)
 }
 
 /* A POV-Ray word eclat does not have, used as an item (confidence 0.9,
- * quick_color Red...): ignored with one warning, and the values after it with
- * it. 1 when item is no such word. */
+ * variance 0.01...): ignored with one warning, and the values after it with
+ * it. 1 when item is no such word. quick_color is ignored without a word:
+ * POV-Ray itself uses it only below +Q6, and eclat renders at full quality. */
 int eval_skip_pov_word(struct eval *e, struct cursor *c, const ast_node *item)
 {
 	const ast_node *w = eval_pov_word_item(e, item);
 	if (!w)
 		return 1;
-	eval_warn_once(e, w->loc, w->str, "'%s' is not supported yet; ignored", w->str);
+	if (strcmp(w->str, "quick_color") != 0 && strcmp(w->str, "quick_colour") != 0)
+		eval_warn_once(e, w->loc, w->str, "'%s' is not supported yet; ignored", w->str);
 	int err = 0;
 	if (w == item)   /* its values are the items after it, as far as they go */
 		while (eval_next_optional(c, &err))
