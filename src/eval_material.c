@@ -915,9 +915,59 @@ static int interior_block(struct eval *e, const ast_node *b, scene_material *m)
 
 /* texture { [TEXTURE_IDENTIFIER] [pigment {...}] [normal {...}] [finish {...}]
  *           [PATTERN texture_map {...} | PATTERN TEXTURE, TEXTURE] [TRANSFORMATIONS] } */
+/* One item of tiles { }: a texture, layered on those before it in its tile,
+ * or tile2, after which the textures are the second tile's. */
+static int tile_item(struct eval *e, const ast_node *item, scene_material tile[2], int n[2], int *which)
+{
+	if (item->kind == AST_IDENT && strcmp(item->str, AST_WORD_TILE2) == 0 && !eval_lookup(e, item->str) && *which == 0) {
+		*which = 1;
+		return 0;
+	}
+	if (item->kind != AST_BLOCK || item->kw != KW_TEXTURE)
+		return eval_not_valid(e, item, "tiles");
+	value v;
+	if (eval_material_value(e, item, &v))
+		return -1;
+	eval_apply_texture(e, item->loc, &tile[*which], n[*which]++ > 0, &v.mat);
+	eval_value_free(&v);
+	return 0;
+}
+
+/* tiles { TEXTURE... tile2 TEXTURE... }: POV-Ray's old name for a checker of
+ * two textures (Parse_Tiles), the first tile where checker gives 1. */
+static int tiles(struct eval *e, const ast_node *b, struct pattern *p, scene_material *m)
+{
+	scene_material tile[2] = { e->default_mat, e->default_mat };
+	int n[2] = { 0, 0 }, which = 0, err = 0, rc = 0;
+	struct cursor c;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL)
+		rc = tile_item(e, item, tile, n, &which);
+	eval_cursor_free(&c);
+	if (rc || err)
+		return -1;
+	if (n[0] == 0 || n[1] == 0) {
+		eval_error(e, b->loc, n[0] == 0 ? "tiles needs a texture for its first tile"
+		                                 : "tiles needs 'tile2' and a texture after it");
+		return -1;
+	}
+	start_pattern(p, b, scene_pattern_name(PATTERN_CHECKER));
+	copy_finish(m, &tile[1]);
+	for (int i = 1; i >= 0; i--) {
+		double col[5];
+		for (int k = 0; k < 5; k++)
+			col[k] = tile[i].pigment[k];
+		list_add(p, col, -1, scene_add_texture(e->s, &tile[i]));
+	}
+	return 0;
+}
+
 static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p, scene_material *m,
                         bool first)
 {
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_TILES) == 0)
+		return tiles(e, item, p, m);
 	value v;
 	int skip = pattern_word(e, c, item, p);
 	if (skip <= 0)
