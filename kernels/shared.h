@@ -193,6 +193,7 @@ enum {                       /* ORDER: the names in src/eval_pattern.c */
 	PATTERN_WOOD, PATTERN_WRINKLES,
 	PATTERN_IMAGE_MAP,   /* a colour, not a value: texture.cl's texture_image */
 	PATTERN_FUNCTION,    /* function { }: the scene's function params[0].x (function.cl) */
+	PATTERN_AVERAGE,     /* no value: every map entry, weighted by its value (texture.cl) */
 	PATTERN_COUNT
 };
 /* POV-Ray's wave types, applied to a continuous pattern's value. */

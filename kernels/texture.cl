@@ -209,6 +209,16 @@ inline pigment_colour texture_image(const scene_data *sc, global const dev_patte
 
 #define TEXTURE_STACK 8   /* nested pigments waiting; lower.c keeps maps shallower */
 
+/* The sum of the average pattern's weights, its entries' values (never 0:
+ * POV-Ray divides by it; eclat gives no colour instead of NaNs). */
+inline float texture_map_weights(global const dev_map_entry *e, int n)
+{
+	float total = 0.0f;
+	for (int i = 0; i < n; i++)
+		total += e[i].value;
+	return total != 0.0f ? total : INFINITY;
+}
+
 /* The pigment at the shading point: the solid colour, or the pattern's map at
  * the pattern's value there, nested pigments evaluated and blended in turn. */
 inline pigment_colour texture_pigment(const scene_data *sc, const shading_point *sp)
@@ -229,6 +239,21 @@ inline pigment_colour texture_pigment(const scene_data *sc, const shading_point 
 		n--;
 		global const dev_pattern *pt = &sc->patterns[stack[n]];
 		float w = weight[n], v = 0.0f;
+		if (pt->kind == PATTERN_AVERAGE) {   /* every entry, by its weight (POV-Ray's ComputeAverage) */
+			global const dev_map_entry *e = sc->maps + pt->map_first;
+			float total = texture_map_weights(e, pt->map_count);
+			for (int i = 0; i < pt->map_count; i++) {
+				float wi = w * e[i].value / total;
+				if (e[i].pigment >= 0 && n < TEXTURE_STACK) {
+					stack[n] = e[i].pigment;
+					weight[n++] = wi;
+				} else {
+					sum += wi * e[i].colour;
+					transmit += wi * e[i].transmit;
+				}
+			}
+			continue;
+		}
 		if (pt->kind != PATTERN_SOLID) {
 			float3 q = texture_pattern_point(pt, p);
 			if (pt->kind == PATTERN_IMAGE_MAP) {   /* a colour of its own, no map */
@@ -300,9 +325,17 @@ inline texture_blend texture_blend_at(const scene_data *sc, const shading_point 
 			continue;
 		}
 		global const dev_pattern *pt = &sc->patterns[m->pattern];
+		global const dev_map_entry *e = sc->maps + pt->map_first;
+		if (pt->kind == PATTERN_AVERAGE) {   /* every texture, by its weight */
+			float total = texture_map_weights(e, pt->map_count);
+			for (int i = 0; i < pt->map_count && n < TEXTURE_BLEND; i++) {
+				stack[n] = e[i].material;
+				weight[n++] = w * e[i].value / total;
+			}
+			continue;
+		}
 		float3 q = texture_pattern_point(pt, m->flags & MATERIAL_LOCAL ? sp->object_x : sp->x);
 		float v = pattern_value(pt, sc->warps, q, sp->n0, sp->d);
-		global const dev_map_entry *e = sc->maps + pt->map_first;
 		int c;
 		float f;
 		int a = texture_map_search(e, pt->map_count, v, &c, &f);

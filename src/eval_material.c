@@ -201,7 +201,7 @@ static int entry_color(struct eval *e, const ast_node *at, value *v, int map_kw,
  * the items after the value are those of a pigment { } or texture { }. */
 static int body_entry(struct eval *e, const ast_node *entry, int map_kw, struct map_build *mb)
 {
-	double at = 0, c[5];
+	double at = 1, c[5];
 	/* The maps of the average pattern may leave the value out (a weight of 1):
 	 * the first item is the value when it is a float and more items follow. */
 	int first = 0;
@@ -210,7 +210,7 @@ static int body_entry(struct eval *e, const ast_node *entry, int map_kw, struct 
 		if (eval_expr(e, entry->kids[0], &v0))
 			return -1;
 		first = v0.kind == V_FLOAT;
-		at = v0.v[0];
+		at = first ? v0.v[0] : 1;
 		eval_value_free(&v0);
 	}
 	if (entry->n_kids < 1) {
@@ -341,11 +341,11 @@ static int map_block(struct eval *e, const ast_node *b, value *out)
 	eval_cursor_free(&c);
 	if (rc == 0 && !err) {
 		double avg[5] = { 0 }, weights = 0;
-		for (int i = 0; i < mb.n; i++)   /* the average pattern's: values are weights */
-			weights += mb.unordered ? 1 : mb.p[i].at;
+		for (int i = 0; i < mb.n; i++)   /* the average pattern's: values are weights, 1 if left out */
+			weights += mb.p[i].at;
 		for (int i = 0; i < mb.n; i++)
 			for (int k = 0; k < 5 && weights != 0; k++)
-				out->v[k] += mb.p[i].c[k] * (mb.unordered ? 1 : mb.p[i].at) / weights;
+				out->v[k] += mb.p[i].c[k] * mb.p[i].at / weights;
 		if (mb.unordered)
 			memcpy(avg, out->v, sizeof avg);
 		else
@@ -354,7 +354,8 @@ static int map_block(struct eval *e, const ast_node *b, value *out)
 			out->mat = mb.first;
 		for (int k = 0; k < 5; k++)
 			out->mat.pigment[k] = (float)avg[k];
-		out->mat.pattern = mb.unordered || mb.n == 0 ? -1 : map_pigment(e, &mb, b->loc);
+		out->mat.pattern = mb.n == 0 ? -1 : map_pigment(e, &mb, b->loc);
+		out->n = mb.unordered;   /* entries without values: only the average pattern takes them */
 	}
 	free(mb.p);
 	return rc || err ? -1 : 0;
@@ -533,6 +534,8 @@ static int map_into(struct eval *e, const ast_node *item, struct pattern *p)
 	p->has_map = true;
 	p->map_pigment = v.mat.pattern;
 	bool average = strcmp(p->name, "average") == 0;
+	if (v.n && !average)   /* POV-Ray's "Expected float": eclat kept the mean */
+		p->map_pigment = -1;
 	for (int k = 0; k < 5; k++)
 		p->map[k] = average ? v.v[k] : v.mat.pigment[k];
 	p->map_mat = v.mat;
@@ -627,6 +630,10 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	                                item->kw == KW_PIGMENT_MAP)) {
 		if (!p->at)
 			eval_warning(e, item->loc, "a %s without a pattern is ignored", ast_keyword_name(item->kw));
+		if (p->kind == PATTERN_AVERAGE && item->kw != KW_PIGMENT_MAP) {
+			eval_error(e, item->loc, "average takes a pigment_map, not a %s", ast_keyword_name(item->kw));
+			return -1;
+		}
 		return p->at ? map_into(e, item, p) : 0;
 	}
 	if (item->kind == AST_BLOCK && item->kw == KW_PIGMENT && p->at) {   /* checker pigment {...}, ... */
@@ -680,6 +687,11 @@ static int pigment_block(struct eval *e, const ast_node *b, scene_material *m, c
 	eval_cursor_free(&c);
 	if (rc || err) {
 		free(p.pg.map);   /* an inherited pattern's copy of its map */
+		return -1;
+	}
+	if (p.at && p.kind == PATTERN_AVERAGE && !p.has_map) {
+		eval_error(e, p.at->loc, "average needs a pigment_map");
+		free(p.pg.map);
 		return -1;
 	}
 	if (p.at) {
@@ -1236,6 +1248,8 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		free(p.pg.map);
 		return -1;
 	}
+	if (p.at && p.kind == PATTERN_AVERAGE)   /* its normal_map, normals of normals, was warned about */
+		p.kind = -1;
 	if (p.at && p.kind < 0 && p.name[0])
 		eval_warn_once(e, p.at->loc, p.name, "pattern '%s' is not supported yet in a normal; ignored", p.name);
 	if (p.at && p.kind > 0)
