@@ -194,6 +194,7 @@ enum {                       /* ORDER: the names in src/eval_pattern.c */
 	PATTERN_IMAGE_MAP,   /* a colour, not a value: texture.cl's texture_image */
 	PATTERN_FUNCTION,    /* function { }: the scene's function params[0].x (function.cl) */
 	PATTERN_AVERAGE,     /* no value: every map entry, weighted by its value (texture.cl) */
+	PATTERN_SLOPE,       /* of the shading normal, and of the altitude (pattern.cl) */
 	PATTERN_COUNT
 };
 /* POV-Ray's wave types, applied to a continuous pattern's value. */
@@ -231,7 +232,8 @@ typedef struct {
  * or a normal's (normal.cl, pattern_perturb: POV-Ray's normal { PATTERN
  * [Amount] }).
  * bump_size: a normal's Amount or bump_size (POV-Ray's default 0.5); unused by pigments.
- * normal: a normal's x: accuracy (POV-Ray's default 0.02); y, z, w: 0.
+ * normal: a normal's x: accuracy (POV-Ray's default 0.02); slope's y, z: the
+ *   altitude's range, low and width (0: none); w: 0.
  * A normal's map entries are its slope_map (none: map_count 0): value, the
  *   entry's key; colour.x, the height; colour.y, the slope. normal_map (nested
  *   normals) is not supported.
@@ -260,6 +262,9 @@ typedef struct {
  *              2 bilinear, 4 normalized distance), w 1 for once;
  *              params[1].x filter all, y transmit all; no map
  *   function:  params[0].x the scene's function (scene.functions)
+ *   slope:     params[0].xyz the slope's unit direction, params[1].xyz the
+ *              altitude's, each times its share of their summed lengths;
+ *              params[0].w, params[1].w the slope's range, low and width
  *   granite, leopard, ...: none */
 typedef struct {
 	float4 rows[3];

@@ -280,10 +280,15 @@ enum kw_class {
  *   interpolate, gamma, premultiplied, all, use_color, use_colour, use_index
  *   (eval_pattern.c)
  *   open: in a shape that takes it, cylinder { ... open } (eval_object.c)
+ *   average: the pattern of a map's entries (eval_material.c)
+ *   slope and altitude: the slope pattern, slope { V altitude V } (eval_pattern.c)
  *   tiles and tile2: in a texture, tiles { TEXTURE tile2 TEXTURE } (eval_material.c)
  * The shapes' own names are not here: the shapes' table has them (src/shape.h),
  * and tests/man.test reads them from src/shape_*.c. */
 #define AST_WORD_MESH_FILE "file"
+#define AST_WORD_AVERAGE "average"
+#define AST_WORD_SLOPE "slope"
+#define AST_WORD_ALTITUDE "altitude"
 #define AST_WORD_TILES "tiles"
 #define AST_WORD_TILE2 "tile2"
 #define AST_WORD_AOI "aoi"

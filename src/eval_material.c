@@ -481,7 +481,7 @@ static void pattern_result(struct eval *e, struct pattern *p, double c[5], int *
 	                : "rgb 0.5, the average of the default colour map";
 	char key[64];
 	snprintf(key, sizeof key, "pattern %s", p->name);
-	if (strcmp(p->name, "average") != 0 || !p->has_map)   /* average is its map's mean: exact */
+	if (strcmp(p->name, AST_WORD_AVERAGE) != 0 || !p->has_map)   /* average is its map's mean: exact */
 		eval_warn_once(e, p->at->loc, key, "pattern '%s' is not supported yet; using %s", p->name, how);
 	for (int k = 0; k < 5; k++) {
 		double sum = 0;
@@ -501,8 +501,16 @@ static void start_pattern(struct pattern *p, const ast_node *item, const char *n
 
 /* A pattern keyword with its argument (gradient x), or a pattern that is no
  * eclat keyword (cubic, square...): starts the pattern. 1 when item is none. */
-static int pattern_start(struct eval *e, const ast_node *item, struct pattern *p)
+static int pattern_start(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p)
 {
+	const ast_node *w = eval_slope_word(e, item);
+	if (w) {   /* slope's arguments are no pattern modifiers: read them here */
+		start_pattern(p, w, AST_WORD_SLOPE);
+		int rc = eval_pattern_slope(e, c, item, &p->pg);
+		if (rc == 2)
+			p->kind = -1;
+		return rc < 0 ? -1 : 0;
+	}
 	if (is_pattern(item)) {
 		start_pattern(p, item, ast_keyword_name(item->kw));
 		return p->kind > 0 ? eval_pattern_argument(e, item, &p->pg) : 0;
@@ -533,7 +541,7 @@ static int map_into(struct eval *e, const ast_node *item, struct pattern *p)
 		return -1;
 	p->has_map = true;
 	p->map_pigment = v.mat.pattern;
-	bool average = strcmp(p->name, "average") == 0;
+	bool average = strcmp(p->name, AST_WORD_AVERAGE) == 0;
 	if (v.n && !average)   /* POV-Ray's "Expected float": eclat kept the mean */
 		p->map_pigment = -1;
 	for (int k = 0; k < 5; k++)
@@ -557,6 +565,8 @@ static void list_add(struct pattern *p, const double c[5], int pigment, int text
  * with the numbers after them. 1 when item is neither. */
 static int pattern_word(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p)
 {
+	if (eval_slope_word(e, item))
+		return pattern_start(e, c, item, p);
 	const ast_node *w = eval_pov_word_item(e, item);
 	if (!w)
 		return 1;
@@ -617,7 +627,7 @@ static int pigment_value(struct eval *e, const ast_node *item, struct pattern *p
 static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p,
                         scene_material *m)
 {
-	int rc = pattern_start(e, item, p);
+	int rc = pattern_start(e, c, item, p);
 	if (rc <= 0)
 		return rc;
 	if (p->kind > 0 && (rc = eval_pattern_modifier(e, c, item, &p->pg)) <= 0)
@@ -984,7 +994,7 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	int skip = pattern_word(e, c, item, p);
 	if (skip <= 0)
 		return skip;
-	if ((skip = pattern_start(e, item, p)) <= 0)
+	if ((skip = pattern_start(e, c, item, p)) <= 0)
 		return skip;
 	if (AST_IS_EXPRESSION(item->kind) && first) {
 		if (eval_expect_kind(e, item, V_TEXTURE, &v))
@@ -1212,7 +1222,7 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 					memcpy(p.pg.map, base->map, base->n_map * sizeof *base->map);
 				amount = true;
 			}
-		} else if ((rc = pattern_start(e, item, &p)) <= 0) {
+		} else if ((rc = pattern_start(e, &c, item, &p)) <= 0) {
 			amount = false;
 			if (rc == 0 && p.kind > 0) {
 				p.pg.bump_size = 0.5;
@@ -1249,6 +1259,8 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		return -1;
 	}
 	if (p.at && p.kind == PATTERN_AVERAGE)   /* its normal_map, normals of normals, was warned about */
+		p.kind = -1;
+	if (p.at && p.kind == PATTERN_SLOPE)   /* a normal of the normal's own slope: not yet */
 		p.kind = -1;
 	if (p.at && p.kind < 0 && p.name[0])
 		eval_warn_once(e, p.at->loc, p.name, "pattern '%s' is not supported yet in a normal; ignored", p.name);

@@ -158,7 +158,7 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 		.rows = { row(&inv, 0), row(&inv, 1), row(&inv, 2) },
 		.kind = pg->kind, .wave = pg->wave, .noise_generator = scene_noise_generator(s, pg),
 		.frequency = (float)pg->frequency, .phase = (float)pg->phase, .wave_exponent = (float)pg->wave_exponent,
-		.bump_size = (float)pg->bump_size, .normal = { (float)pg->accuracy, 0, 0, 0 },
+		.bump_size = (float)pg->bump_size, .normal = { (float)pg->accuracy, (float)pg->altitude[0], (float)pg->altitude[1], 0 },
 		.params = { f4v(pg->params[0]), f4v(pg->params[1]) },
 		.warp_first = lt->n_warps, .warp_count = n_warps,
 		.map_first = lt->n_maps, .map_count = pg->n_map,
