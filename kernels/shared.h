@@ -171,8 +171,10 @@ typedef struct {
 } dev_material;
 /* MATERIAL_LOCAL: a mesh's own texture, whose patterns see the mesh's space;
  * MATERIAL_ROUGH: roughness was given, so the path tracer's reflection is rough;
- * MATERIAL_TEXTURE_MAP: pattern is a pattern of whole textures. */
-enum { MATERIAL_LOCAL = 1, MATERIAL_ROUGH = 2, MATERIAL_TEXTURE_MAP = 4 };
+ * MATERIAL_TEXTURE_MAP: pattern is a pattern of whole textures;
+ * MATERIAL_INTERIOR: the object has an interior_texture, the next material,
+ * for the side its surface normal turns away from (texture_point). */
+enum { MATERIAL_LOCAL = 1, MATERIAL_ROUGH = 2, MATERIAL_TEXTURE_MAP = 4, MATERIAL_INTERIOR = 8 };
 
 /* ---- Appearance: patterns, maps and pigments (kernels/pattern.cl, kernels/texture.cl).
  *

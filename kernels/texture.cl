@@ -52,7 +52,9 @@ inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float
 	sp.object = s.object;
 	sp.emitter = s.emitter;
 	sp.material = s.material;
-	sp.m = &sc->materials[s.material];
+	if (!sp.entering && (sc->materials[s.material].flags & MATERIAL_INTERIOR))
+		sp.material++;   /* the inner side: the object's interior_texture */
+	sp.m = &sc->materials[sp.material];
 	/* the normal's pattern tilts the shading normal (a mesh's own textures'
 	 * normals are not applied yet: lower_texture.c says so) */
 	if (sp.m->normal >= 0 && !(sp.m->flags & (MATERIAL_LOCAL | MATERIAL_TEXTURE_MAP)))

@@ -282,6 +282,7 @@ enum kw_class {
  *   open: in a shape that takes it, cylinder { ... open } (eval_object.c)
  *   average: the pattern of a map's entries (eval_material.c)
  *   slope and altitude: the slope pattern, slope { V altitude V } (eval_pattern.c)
+ *   interior_texture: an object's, interior_texture { ... } (eval_object.c)
  *   tiles and tile2: in a texture, tiles { TEXTURE tile2 TEXTURE } (eval_material.c)
  * The shapes' own names are not here: the shapes' table has them (src/shape.h),
  * and tests/man.test reads them from src/shape_*.c. */
@@ -289,6 +290,7 @@ enum kw_class {
 #define AST_WORD_AVERAGE "average"
 #define AST_WORD_SLOPE "slope"
 #define AST_WORD_ALTITUDE "altitude"
+#define AST_WORD_INTERIOR_TEXTURE "interior_texture"
 #define AST_WORD_TILES "tiles"
 #define AST_WORD_TILE2 "tile2"
 #define AST_WORD_AOI "aoi"

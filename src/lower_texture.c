@@ -293,6 +293,17 @@ dev_material lower_texture(lower_textures *lt, const scene *s, const scene_mater
 	return lt->subs[top];   /* a copy: the primitives' own index */
 }
 
+dev_material lower_interior_texture(lower_textures *lt, const scene *s, const scene_material *m)
+{
+	struct surface sf = { m, 0 };   /* the object's interior, as its outer side's */
+	const scene_material *t = &s->textures[m->interior_texture - 1];
+	xform to_world = scene_xform_then(&t->tex_xf, &m->interior_xf);
+	if (t->layers < 0)
+		return lower_one(lt, s, &sf, t, &to_world, 0);
+	int top = lower_layers(lt, s, &sf, t->layers, &to_world, -1, 0);
+	return lt->subs[top];
+}
+
 void lower_textures_append(lower_textures *lt, dev_material **mats, int *n_mats)
 {
 	int base = *n_mats;

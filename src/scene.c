@@ -261,6 +261,7 @@ scene_material scene_default_material(void)
 		.texture_map = -1,
 		.layers = -1,
 		.below = -1,
+		.interior_xf = scene_xform_identity(),
 		.ambient = { 0.1f, 0.1f, 0.1f },
 		.diffuse = 0.6f,
 		.brilliance = 1,

@@ -102,6 +102,10 @@ typedef struct {
 	int layers;              /* the top layer (scene.textures), or -1: not layered */
 	int below;               /* in scene.textures, a layer's next layer down, or -1;
 	                          * it shares the layer's outer space (tex_xf of the layers' owner) */
+	int interior_texture;    /* an object's interior_texture, the texture of the side its
+	                          * surface normal turns away from: 1 + its index in scene.textures,
+	                          * 0: none (so that zeroed objects have none) */
+	xform interior_xf;       /* the object's transformations written after interior_texture */
 	/* finish */
 	float ambient[3];        /* 0.1 */
 	float diffuse;           /* 0.6 */
