@@ -381,9 +381,18 @@ static bool is_pattern(const ast_node *item)
 	}
 }
 
-/* Items that shape a pattern: nothing to eclat, which averages it. */
-static bool is_pattern_modifier(const ast_node *item)
+/* uv_mapping, which eclat does not have: the pattern stays in 3D space. */
+void eval_uv_mapping_warning(struct eval *e, const ast_node *item)
 {
+	eval_warn_once(e, item->loc, "uv_mapping", "'uv_mapping' is not supported yet; the texture is mapped "
+	               "in space as if it were not there");
+}
+
+/* Items that shape a pattern: nothing to eclat, which averages it. */
+static bool is_pattern_modifier(struct eval *e, const ast_node *item)
+{
+	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING)
+		eval_uv_mapping_warning(e, item);
 	if (item->kind == AST_ARG)
 		switch (item->kw) {
 		case KW_TURBULENCE: case KW_OCTAVES: case KW_OMEGA: case KW_LAMBDA: case KW_FREQUENCY:
@@ -661,7 +670,7 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	rc = eval_transform_item(e, NULL, item, &t);
 	if (rc > 0 && p->kind > 0 && eval_pattern_transform(e, &p->pg, &t, item->loc))
 		return -1;   /* a pigment's transformations move its pattern only */
-	if (rc != 0 || is_pattern_modifier(item))
+	if (rc != 0 || is_pattern_modifier(e, item))
 		return rc < 0 ? -1 : 0;
 	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_IMAGE_MAP) == 0) {
 		start_pattern(p, item, AST_WORD_IMAGE_MAP);
@@ -1029,7 +1038,7 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	int rc = eval_transform_item(e, NULL, item, &t);
 	if (rc > 0)   /* a texture's transformations move its patterns */
 		m->tex_xf = scene_xform_then(&m->tex_xf, &t);
-	if (rc != 0 || is_pattern_modifier(item))
+	if (rc != 0 || is_pattern_modifier(e, item))
 		return rc < 0 ? -1 : 0;
 	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
 		eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
@@ -1131,6 +1140,10 @@ static int normal_item(struct eval *e, struct cursor *c, const ast_node *item, s
 	scene_pigment *pg = &p->pg;
 	const char *w = item->kind == AST_IDENT && !eval_lookup(e, item->str) ? item->str : NULL;
 	int err = 0;
+	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING) {
+		eval_uv_mapping_warning(e, item);
+		return 0;
+	}
 	if (AST_IS_EXPRESSION(item->kind) && !w && !*amount) {   /* bumps 0.5 */
 		*amount = true;
 		return eval_expect_float(e, item, &pg->bump_size);
@@ -1188,7 +1201,7 @@ static int slope_map(struct eval *e, const ast_node *b, scene_pigment *pg)
 static bool ignored_item(struct eval *e, const ast_node *item)
 {
 	xform t = scene_xform_identity();
-	return AST_IS_EXPRESSION(item->kind) || is_pattern_modifier(item) || item->kind == AST_BLOCK ||
+	return AST_IS_EXPRESSION(item->kind) || is_pattern_modifier(e, item) || item->kind == AST_BLOCK ||
 	       item->kind == AST_FLAG || eval_transform_item(e, NULL, item, &t) > 0;
 }
 

@@ -482,8 +482,10 @@ static int object_modifier(struct eval *e, struct cursor *c, const ast_node *ite
 		return interior_texture(e, item, o);
 	if (item->kind == AST_FLAG && (rc = flag_item(e, c, item, o)) <= 0)
 		return rc;
-	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING)
+	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING) {
+		eval_uv_mapping_warning(e, item);
 		return 0;
+	}
 	if ((rc = shape_flag(e, item, o)) <= 0)
 		return rc;
 	if ((rc = eval_skip_pov_word(e, c, item)) <= 0)
