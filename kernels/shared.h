@@ -279,8 +279,11 @@ typedef struct {
 } dev_pattern;
 /* PATTERN_NO_BUMP_SCALE: POV-Ray's no_bump_scale: a normal's pattern
  * transformations scale its bumps (the normal is not made unit length before
- * and after them). */
-enum { PATTERN_NO_BUMP_SCALE = 1 };
+ * and after them).
+ * PATTERN_NORMAL_MAP: a normal's map entries are normals (normal_map, checker
+ * normal { } normal { }, average): an entry's pigment is its normal's
+ * dev_pattern, or -1 for none (texture_normal). */
+enum { PATTERN_NO_BUMP_SCALE = 1, PATTERN_NORMAL_MAP = 2 };
 
 /* An entry of a pattern's map, 32 bytes: a colour, or a nested pigment (a
  * pigment_map, or checker pigment { } pigment { }) when pigment >= 0; in a

@@ -1195,6 +1195,79 @@ static int slope_map(struct eval *e, const ast_node *b, scene_pigment *pg)
 	return rc || err ? -1 : 0;
 }
 
+static int normal_block(struct eval *e, const ast_node *b, scene_material *m);
+
+/* The normal of a normal_map's entry: the items after its value, those of a
+ * normal { }; its pattern in the pool, or -1 for none (a flat one). */
+static int entry_normal(struct eval *e, const ast_node *at, ast_node *const *kids, int n, int *normal)
+{
+	if (n == 0) {   /* POV-Ray: "No normal type given" */
+		eval_error(e, at->loc, "a normal_map entry needs a normal after its value");
+		return -1;
+	}
+	ast_node body = { .kind = AST_BLOCK, .kw = KW_NORMAL, .loc = at->loc, .kids = (ast_node **)kids, .n_kids = n };
+	scene_material m = scene_default_material();
+	if (normal_block(e, &body, &m))
+		return -1;
+	*normal = m.normal;
+	return 0;
+}
+
+/* normal_map { [Value NORMAL_ITEMS]... } after a normal's pattern, or one
+ * normal { } of a list (checker normal { A } normal { B }): normals of
+ * normals, whose entries the pattern picks and blends (texture_normal). */
+static int normal_entries(struct eval *e, const ast_node *b, scene_pigment *pg)
+{
+	if (!pg->normal_map || b->kw == KW_NORMAL_MAP) {   /* a map, or a list's first: the slope_map goes */
+		free(pg->map);
+		pg->map = NULL;
+		pg->n_map = 0;
+		pg->normal_map = true;
+	}
+	if (b->kw == KW_NORMAL) {
+		int normal;
+		if (entry_normal(e, b, b->kids, b->n_kids, &normal))
+			return -1;
+		pg->map = eval_xrealloc(pg->map, (pg->n_map + 1) * sizeof *pg->map);
+		pg->map[pg->n_map] = (scene_map_entry){ .value = pg->n_map, .pigment = normal, .texture = -1 };
+		pg->n_map++;
+		return 0;
+	}
+	struct cursor c;
+	int err = 0, rc = 0;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		double v = 1;   /* average's weight when left out */
+		int first = 0, normal;
+		if (item->kind != AST_ENTRY || item->n_kids < 1) {
+			rc = eval_not_valid(e, item, "a normal_map (entries are [Value NORMAL_ITEMS])");
+			break;
+		}
+		if (pg->kind != PATTERN_AVERAGE) {
+			if ((rc = eval_expect_float(e, item->kids[0], &v)))
+				break;
+			first = 1;
+		} else if (item->n_kids >= 2 && AST_IS_EXPRESSION(item->kids[0]->kind)) {   /* a weight, or a
+			                                                                       * declared normal */
+			value w;
+			if ((rc = eval_expr(e, item->kids[0], &w)))
+				break;
+			if (w.kind == V_FLOAT) {
+				v = w.v[0];
+				first = 1;
+			}
+			eval_value_free(&w);
+		}
+		if ((rc = entry_normal(e, item, item->kids + first, item->n_kids - first, &normal)))
+			break;
+		pg->map = eval_xrealloc(pg->map, (pg->n_map + 1) * sizeof *pg->map);
+		pg->map[pg->n_map++] = (scene_map_entry){ .value = v, .pigment = normal, .texture = -1 };
+	}
+	eval_cursor_free(&c);
+	return rc || err ? -1 : 0;
+}
+
 /* What goes with a normal's pattern that eclat does not have (bump_map,
  * pigment_pattern...): its amount, modifiers, transformations and blocks,
  * ignored with it. */
@@ -1251,6 +1324,9 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		} else if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
 			eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
 			rc = 0;
+		} else if (p.at && p.kind > 0 && p.kind != PATTERN_FACETS && item->kind == AST_BLOCK &&
+		           (item->kw == KW_NORMAL_MAP || item->kw == KW_NORMAL)) {
+			rc = normal_entries(e, item, &p.pg);
 		} else if (item->kind == AST_BLOCK && (item->kw == KW_NORMAL_MAP || item->kw == KW_NORMAL)) {
 			eval_warn_once(e, item->loc, "normal_map", "normals of normals (%s) are not supported yet; "
 			               "this normal is ignored", item->kw == KW_NORMAL ? "checker normal { } normal { }"
@@ -1271,7 +1347,7 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		free(p.pg.map);
 		return -1;
 	}
-	if (p.at && p.kind == PATTERN_AVERAGE)   /* its normal_map, normals of normals, was warned about */
+	if (p.at && p.kind == PATTERN_AVERAGE && !p.pg.normal_map)   /* POV-Ray: "Average must have map." */
 		p.kind = -1;
 	if (p.at && p.kind == PATTERN_SLOPE)   /* a normal of the normal's own slope: not yet */
 		p.kind = -1;

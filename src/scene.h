@@ -58,6 +58,8 @@ typedef struct {
 	double params[2][4];     /* by kind, as dev_pattern's */
 	double bump_size, accuracy;  /* a normal's: its amount (0.5) and accuracy (0.02) */
 	double altitude[2];      /* slope's altitude range: low, width (0: none) */
+	bool normal_map;         /* a normal's map entries are normals (pigment: the normal's
+	                          * pattern, or -1: none), not its slope_map */
 	scene_warp warps[SCENE_MAX_WARPS];  /* POV-Ray's list: the first applies first; the
 	                          * transformations written in the pigment are among them */
 	int n_warps;
