@@ -708,7 +708,7 @@ static int pigment_block(struct eval *e, const ast_node *b, scene_material *m, c
 		free(p.pg.map);   /* an inherited pattern's copy of its map */
 		return -1;
 	}
-	if (p.at && p.kind == PATTERN_AVERAGE && !p.has_map) {
+	if (p.at && p.kind == PATTERN_AVERAGE && !p.has_map && !p.inherited) {   /* a declared one has its map */
 		eval_error(e, p.at->loc, "average needs a pigment_map");
 		free(p.pg.map);
 		return -1;

@@ -218,7 +218,8 @@ static int turbulence_item(struct eval *e, const ast_node *item, scene_warp *w)
 }
 
 /* warp { turbulence ... | repeat <V> [offset <V>] [flip <V>] |
- *        black_hole <Centre>, Radius [strength S] [falloff F] [inverse] [repeat <V>] } */
+ *        black_hole <Centre>, Radius [strength S] [falloff F] [inverse] [repeat <V>]
+ *        [turbulence <V>] } */
 static int warp_block(struct eval *e, const ast_node *b, scene_pigment *pg)
 {
 	if (room(e, pg, b->loc))
@@ -262,6 +263,10 @@ static int warp_block(struct eval *e, const ast_node *b, scene_pigment *pg)
 		} else if (name && strcmp(name, AST_WORD_REPEAT) == 0 && w.kind == WARP_BLACK_HOLE) {
 			rc = next_vector(e, &c, item, w.c);
 			w.c[3] = 1;
+		} else if (item->kind == AST_ARG && item->kw == KW_TURBULENCE && w.kind == WARP_BLACK_HOLE) {
+			/* POV-Ray jitters the repeated holes by it */
+			eval_warn_once(e, item->loc, "black_hole turbulence", "a black_hole's turbulence is not supported "
+			               "yet; ignored");
 		} else {
 			rc = eval_not_valid(e, item, "a warp");
 		}
