@@ -272,8 +272,8 @@ enum kw_class {
  *   spline and its types: spline { linear_spline ... }, S(T, cubic_spline)
  *   (eval_spline.c)
  *   the patterns and pattern modifiers POV-Ray has no keyword token for, in a
- *   pigment: aoi, cubic, square, triangular, noise_generator, metric, form,
- *   offset, solid, control0, control1, and in warp { }: repeat, offset, flip,
+ *   pigment: aoi, cubic, square, triangular, noise_generator, no_bump_scale,
+ *   metric, form, offset, solid, control0, control1, and in warp { }: repeat, offset, flip,
  *   black_hole, strength (eval_pattern.c); in normal { }: bump_size, accuracy,
  *   slope_map (eval_material.c); in image_map { }: image_map itself, the file
  *   formats (png, jpeg, tiff, exr, hdr, gif, tga, ppm, sys), map_type,
@@ -298,6 +298,7 @@ enum kw_class {
 #define AST_WORD_SQUARE "square"
 #define AST_WORD_TRIANGULAR "triangular"
 #define AST_WORD_NOISE_GENERATOR "noise_generator"
+#define AST_WORD_NO_BUMP_SCALE "no_bump_scale"
 #define AST_WORD_METRIC "metric"
 #define AST_WORD_FORM "form"
 #define AST_WORD_OFFSET "offset"

@@ -340,6 +340,10 @@ int eval_pattern_modifier(struct eval *e, struct cursor *c, const ast_node *item
 	if (!name)
 		return 1;
 	double v[3];
+	if (strcmp(name, AST_WORD_NO_BUMP_SCALE) == 0) {
+		pg->no_bump_scale = true;
+		return 0;
+	}
 	if (strcmp(name, AST_WORD_NOISE_GENERATOR) == 0) {
 		double g;
 		if (next_float(e, c, item, &g))

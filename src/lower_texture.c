@@ -157,7 +157,7 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 	dev_pattern d = {
 		.rows = { row(&inv, 0), row(&inv, 1), row(&inv, 2) },
 		.kind = pg->kind, .wave = pg->wave, .noise_generator = scene_noise_generator(s, pg),
-		.flags = pg->normal_map ? PATTERN_NORMAL_MAP : 0,
+		.flags = (pg->normal_map ? PATTERN_NORMAL_MAP : 0) | (pg->no_bump_scale ? PATTERN_NO_BUMP_SCALE : 0),
 		.frequency = (float)pg->frequency, .phase = (float)pg->phase, .wave_exponent = (float)pg->wave_exponent,
 		.bump_size = (float)pg->bump_size, .normal = { (float)pg->accuracy, (float)pg->altitude[0], (float)pg->altitude[1], 0 },
 		.params = { f4v(pg->params[0]), f4v(pg->params[1]) },

@@ -58,6 +58,7 @@ typedef struct {
 	double params[2][4];     /* by kind, as dev_pattern's */
 	double bump_size, accuracy;  /* a normal's: its amount (0.5) and accuracy (0.02) */
 	double altitude[2];      /* slope's altitude range: low, width (0: none) */
+	bool no_bump_scale;      /* a normal's transformations scale its bumps */
 	bool normal_map;         /* a normal's map entries are normals (pigment: the normal's
 	                          * pattern, or -1: none), not its slope_map */
 	scene_warp warps[SCENE_MAX_WARPS];  /* POV-Ray's list: the first applies first; the
