@@ -8,7 +8,8 @@
  * LAST_NORM_ONLY_PATTERN); every other pattern tilts the normal by its value
  * at four points of a pyramid around the warped point, `accuracy` away, with
  * frequency, phase and wave type applied, through the slope_map if any.
- * Left out: normal_map (nested normals), bump_map, average, uv_mapping.
+ * normal_map and the other normals of normals are texture.cl's texture_normal.
+ * Left out: bump_map, uv_mapping.
  *
  * Exported: pattern_perturb. */
 
@@ -104,8 +105,9 @@ float3 pattern_perturb(global const dev_pattern *pt, global const dev_warp *warp
                        float3 p, float3 n)
 {
 	int kind = pt->kind;
-	if (kind == PATTERN_SOLID || kind == PATTERN_AOI)
-		return normalize(n);   /* aoi: the same value at the four points, no slope */
+	if (kind == PATTERN_SOLID || kind == PATTERN_AOI || (pt->flags & PATTERN_NORMAL_MAP))
+		return normalize(n);   /* aoi: the same value at the four points, no slope; normals of
+		                        * normals: texture_normal, one level deep */
 	float4 r0 = pt->rows[0], r1 = pt->rows[1], r2 = pt->rows[2];
 	float3 q = (float3)(dot(r0.xyz, p) + r0.w, dot(r1.xyz, p) + r1.w, dot(r2.xyz, p) + r2.w);
 	int scale_bumps = !(pt->flags & PATTERN_NO_BUMP_SCALE);

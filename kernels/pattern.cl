@@ -651,6 +651,34 @@ float3 pattern_warp_point(global const dev_pattern *pt, global const dev_warp *w
 	return clamp(p, -1.0e17f, 1.0e17f);
 }
 
+/* POV-Ray's wrap of slope's value into [0, 1), 1 itself kept (its EPSILON
+ * below 1 is 1 in float). */
+inline float pattern_slope_wrap(float v)
+{
+	if (v == 1.0f)
+		return v;
+	return v < 0.0f ? 1.0f + fmod(v, 1.0f) : fmod(v, 1.0f);
+}
+
+/* slope (SlopePattern::EvaluateRaw): how far the unit normal n turns toward
+ * the slope's direction, 0 (away) to 1 (along it), blended with the altitude,
+ * p along the altitude's direction; each optionally rescaled by its range. */
+inline float pattern_slope(global const dev_pattern *pt, float3 p, float3 n)
+{
+	float3 s = pt->params[0].xyz, a = pt->params[1].xyz;
+	float slen = length(s), alen = length(a);
+	float v1 = slen > 0.0f ? clamp(dot(n, s) / slen, -1.0f, 1.0f) : 0.0f;
+	v1 = (asin(v1) / PATTERN_PI * 2.0f + 1.0f) * 0.5f;
+	if (pt->params[1].w != 0.0f)
+		v1 = (v1 - pt->params[0].w) / pt->params[1].w;
+	if (alen == 0.0f)
+		return pattern_slope_wrap(v1);
+	float v2 = dot(p, a) / alen;
+	if (pt->normal.z != 0.0f)
+		v2 = (v2 - pt->normal.y) / pt->normal.z;
+	return pattern_slope_wrap(slen * v1 + alen * v2);
+}
+
 /* The value of the pattern pt at p, a point already warped
  * (pattern_warp_point): POV-Ray's Evaluate_TPat, which normals call at
  * points around the warped one. n and d as for pattern_value. */
@@ -757,6 +785,9 @@ float pattern_at(global const dev_pattern *pt, global const dev_warp *warps, flo
 	case PATTERN_WRINKLES:
 		v = pattern_wrinkles(p, generator);
 		break;
+	case PATTERN_SLOPE:
+		v = pattern_slope(pt, p, n);
+		break;
 	case PATTERN_FUNCTION:   /* POV-Ray wraps values above 1, not those below 0 */
 		v = scene_function_pattern((int)pt->params[0].x, p);
 		if (v > 1.0f)
@@ -770,7 +801,7 @@ float pattern_at(global const dev_pattern *pt, global const dev_warp *warps, flo
 
 /* The value of the pattern pt at p, a point in the pattern's space (pt->rows
  * already applied); n, the unit shading normal, and d, the ray's direction,
- * both in world space, serve only aoi. Continuous patterns give [0, 1] (some,
+ * both in world space, serve only aoi and slope. Continuous patterns give [0, 1] (some,
  * as in POV-Ray, a little beyond: the map clamps); discrete ones (brick,
  * checker, cubic, hexagon, square, triangular) the index of a list entry. */
 float pattern_value(global const dev_pattern *pt, global const dev_warp *warps, float3 p, float3 n, float3 d)

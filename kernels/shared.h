@@ -171,8 +171,10 @@ typedef struct {
 } dev_material;
 /* MATERIAL_LOCAL: a mesh's own texture, whose patterns see the mesh's space;
  * MATERIAL_ROUGH: roughness was given, so the path tracer's reflection is rough;
- * MATERIAL_TEXTURE_MAP: pattern is a pattern of whole textures. */
-enum { MATERIAL_LOCAL = 1, MATERIAL_ROUGH = 2, MATERIAL_TEXTURE_MAP = 4 };
+ * MATERIAL_TEXTURE_MAP: pattern is a pattern of whole textures;
+ * MATERIAL_INTERIOR: the object has an interior_texture, the next material,
+ * for the side its surface normal turns away from (texture_point). */
+enum { MATERIAL_LOCAL = 1, MATERIAL_ROUGH = 2, MATERIAL_TEXTURE_MAP = 4, MATERIAL_INTERIOR = 8 };
 
 /* ---- Appearance: patterns, maps and pigments (kernels/pattern.cl, kernels/texture.cl).
  *
@@ -193,6 +195,8 @@ enum {                       /* ORDER: the names in src/eval_pattern.c */
 	PATTERN_WOOD, PATTERN_WRINKLES,
 	PATTERN_IMAGE_MAP,   /* a colour, not a value: texture.cl's texture_image */
 	PATTERN_FUNCTION,    /* function { }: the scene's function params[0].x (function.cl) */
+	PATTERN_AVERAGE,     /* no value: every map entry, weighted by its value (texture.cl) */
+	PATTERN_SLOPE,       /* of the shading normal, and of the altitude (pattern.cl) */
 	PATTERN_COUNT
 };
 /* POV-Ray's wave types, applied to a continuous pattern's value. */
@@ -230,7 +234,8 @@ typedef struct {
  * or a normal's (normal.cl, pattern_perturb: POV-Ray's normal { PATTERN
  * [Amount] }).
  * bump_size: a normal's Amount or bump_size (POV-Ray's default 0.5); unused by pigments.
- * normal: a normal's x: accuracy (POV-Ray's default 0.02); y, z, w: 0.
+ * normal: a normal's x: accuracy (POV-Ray's default 0.02); slope's y, z: the
+ *   altitude's range, low and width (0: none); w: 0.
  * A normal's map entries are its slope_map (none: map_count 0): value, the
  *   entry's key; colour.x, the height; colour.y, the slope. normal_map (nested
  *   normals) is not supported.
@@ -259,6 +264,9 @@ typedef struct {
  *              2 bilinear, 4 normalized distance), w 1 for once;
  *              params[1].x filter all, y transmit all; no map
  *   function:  params[0].x the scene's function (scene.functions)
+ *   slope:     params[0].xyz the slope's unit direction, params[1].xyz the
+ *              altitude's, each times its share of their summed lengths;
+ *              params[0].w, params[1].w the slope's range, low and width
  *   granite, leopard, ...: none */
 typedef struct {
 	float4 rows[3];
@@ -271,8 +279,11 @@ typedef struct {
 } dev_pattern;
 /* PATTERN_NO_BUMP_SCALE: POV-Ray's no_bump_scale: a normal's pattern
  * transformations scale its bumps (the normal is not made unit length before
- * and after them). */
-enum { PATTERN_NO_BUMP_SCALE = 1 };
+ * and after them).
+ * PATTERN_NORMAL_MAP: a normal's map entries are normals (normal_map, checker
+ * normal { } normal { }, average): an entry's pigment is its normal's
+ * dev_pattern, or -1 for none (texture_normal). */
+enum { PATTERN_NO_BUMP_SCALE = 1, PATTERN_NORMAL_MAP = 2 };
 
 /* An entry of a pattern's map, 32 bytes: a colour, or a nested pigment (a
  * pigment_map, or checker pigment { } pigment { }) when pigment >= 0; in a

@@ -30,6 +30,8 @@ typedef struct {
 	float filter, transmit;
 } pigment_colour;
 
+float3 texture_normal(const scene_data *sc, int normal, float3 x, float3 n);
+
 inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float3 o, float3 d)
 {
 	shading_point sp;
@@ -52,11 +54,13 @@ inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float
 	sp.object = s.object;
 	sp.emitter = s.emitter;
 	sp.material = s.material;
-	sp.m = &sc->materials[s.material];
+	if (!sp.entering && (sc->materials[s.material].flags & MATERIAL_INTERIOR))
+		sp.material++;   /* the inner side: the object's interior_texture */
+	sp.m = &sc->materials[sp.material];
 	/* the normal's pattern tilts the shading normal (a mesh's own textures'
 	 * normals are not applied yet: lower_texture.c says so) */
 	if (sp.m->normal >= 0 && !(sp.m->flags & (MATERIAL_LOCAL | MATERIAL_TEXTURE_MAP)))
-		sp.ns = pattern_perturb(&sc->patterns[sp.m->normal], sc->warps, sc->maps, sp.x, sp.ns);
+		sp.ns = texture_normal(sc, sp.m->normal, sp.x, sp.ns);
 	return sp;
 }
 
@@ -68,7 +72,7 @@ inline void texture_use(const scene_data *sc, shading_point *sp, int material)
 	sp->m = &sc->materials[material];
 	sp->ns = sp->n0;
 	if (sp->m->normal >= 0 && !(sp->m->flags & MATERIAL_LOCAL))
-		sp->ns = pattern_perturb(&sc->patterns[sp->m->normal], sc->warps, sc->maps, sp->x, sp->ns);
+		sp->ns = texture_normal(sc, sp->m->normal, sp->x, sp->ns);
 }
 
 /* A point of world space (or of the mesh's, for a mesh's own textures) in a
@@ -97,6 +101,53 @@ inline int texture_map_search(global const dev_map_entry *e, int n, float v, int
 		return 0;
 	*frac = (v - e[c - 1].value) / (e[c].value - e[c - 1].value);
 	return c - 1;
+}
+
+/* The sum of the average pattern's weights, its entries' values (never 0:
+ * POV-Ray divides by it; eclat gives no colour instead of NaNs). */
+inline float texture_map_weights(global const dev_map_entry *e, int n)
+{
+	float total = 0.0f;
+	for (int i = 0; i < n; i++)
+		total += e[i].value;
+	return total != 0.0f ? total : INFINITY;
+}
+
+/* The unit normal n (facing the ray) perturbed at x by the normal pattern
+ * normal. A normal of normals (PATTERN_NORMAL_MAP) perturbs n by the one or
+ * two entries its pattern's value picks and blends the results by weight, or
+ * (average) by every entry: POV-Ray's Perturb_Normal and Do_Average_Normals,
+ * one level deep; each entry's normal is placed by every transformation around
+ * it, as nested pigments are. */
+float3 texture_normal(const scene_data *sc, int normal, float3 x, float3 n)
+{
+	global const dev_pattern *pt = &sc->patterns[normal];
+	if (!(pt->flags & PATTERN_NORMAL_MAP))
+		return pattern_perturb(pt, sc->warps, sc->maps, x, n);
+	global const dev_map_entry *e = sc->maps + pt->map_first;
+	float3 sum = (float3)(0.0f);
+	if (pt->kind == PATTERN_AVERAGE) {
+		float total = texture_map_weights(e, pt->map_count);
+		for (int i = 0; i < pt->map_count; i++) {
+			float3 ni = e[i].pigment >= 0 ? pattern_perturb(&sc->patterns[e[i].pigment], sc->warps, sc->maps, x, n)
+			                              : n;
+			sum += e[i].value / total * ni;
+		}
+		return length(sum) > 0.0f ? normalize(sum) : n;
+	}
+	float v = pattern_value(pt, sc->warps, texture_pattern_point(pt, x), n, -n);
+	int b;
+	float f;
+	int a = texture_map_search(e, pt->map_count, v, &b, &f);
+	int idx[2] = { a, b };
+	float wt[2] = { a == b ? 1.0f : 1.0f - f, a == b ? 0.0f : f };
+	for (int k = 0; k < 2; k++) {
+		if (wt[k] <= 0.0f)
+			continue;
+		int child = e[idx[k]].pigment;
+		sum += wt[k] * (child >= 0 ? pattern_perturb(&sc->patterns[child], sc->warps, sc->maps, x, n) : n);
+	}
+	return length(sum) > 0.0f ? normalize(sum) : n;
 }
 
 /* ---- image_map: POV-Ray 3.7's (imageutil.cpp), in float ---- */
@@ -229,6 +280,21 @@ inline pigment_colour texture_pigment(const scene_data *sc, const shading_point 
 		n--;
 		global const dev_pattern *pt = &sc->patterns[stack[n]];
 		float w = weight[n], v = 0.0f;
+		if (pt->kind == PATTERN_AVERAGE) {   /* every entry, by its weight (POV-Ray's ComputeAverage) */
+			global const dev_map_entry *e = sc->maps + pt->map_first;
+			float total = texture_map_weights(e, pt->map_count);
+			for (int i = 0; i < pt->map_count; i++) {
+				float wi = w * e[i].value / total;
+				if (e[i].pigment >= 0 && n < TEXTURE_STACK) {
+					stack[n] = e[i].pigment;
+					weight[n++] = wi;
+				} else {
+					sum += wi * e[i].colour;
+					transmit += wi * e[i].transmit;
+				}
+			}
+			continue;
+		}
 		if (pt->kind != PATTERN_SOLID) {
 			float3 q = texture_pattern_point(pt, p);
 			if (pt->kind == PATTERN_IMAGE_MAP) {   /* a colour of its own, no map */
@@ -300,9 +366,17 @@ inline texture_blend texture_blend_at(const scene_data *sc, const shading_point 
 			continue;
 		}
 		global const dev_pattern *pt = &sc->patterns[m->pattern];
+		global const dev_map_entry *e = sc->maps + pt->map_first;
+		if (pt->kind == PATTERN_AVERAGE) {   /* every texture, by its weight */
+			float total = texture_map_weights(e, pt->map_count);
+			for (int i = 0; i < pt->map_count && n < TEXTURE_BLEND; i++) {
+				stack[n] = e[i].material;
+				weight[n++] = w * e[i].value / total;
+			}
+			continue;
+		}
 		float3 q = texture_pattern_point(pt, m->flags & MATERIAL_LOCAL ? sp->object_x : sp->x);
 		float v = pattern_value(pt, sc->warps, q, sp->n0, sp->d);
-		global const dev_map_entry *e = sc->maps + pt->map_first;
 		int c;
 		float f;
 		int a = texture_map_search(e, pt->map_count, v, &c, &f);

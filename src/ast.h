@@ -272,22 +272,33 @@ enum kw_class {
  *   spline and its types: spline { linear_spline ... }, S(T, cubic_spline)
  *   (eval_spline.c)
  *   the patterns and pattern modifiers POV-Ray has no keyword token for, in a
- *   pigment: aoi, cubic, square, triangular, noise_generator, metric, form,
- *   offset, solid, control0, control1, and in warp { }: repeat, offset, flip,
+ *   pigment: aoi, cubic, square, triangular, noise_generator, no_bump_scale,
+ *   metric, form, offset, solid, control0, control1, and in warp { }: repeat, offset, flip,
  *   black_hole, strength (eval_pattern.c); in normal { }: bump_size, accuracy,
  *   slope_map (eval_material.c); in image_map { }: image_map itself, the file
  *   formats (png, jpeg, tiff, exr, hdr, gif, tga, ppm, sys), map_type,
  *   interpolate, gamma, premultiplied, all, use_color, use_colour, use_index
  *   (eval_pattern.c)
  *   open: in a shape that takes it, cylinder { ... open } (eval_object.c)
+ *   average: the pattern of a map's entries (eval_material.c)
+ *   slope and altitude: the slope pattern, slope { V altitude V } (eval_pattern.c)
+ *   interior_texture: an object's, interior_texture { ... } (eval_object.c)
+ *   tiles and tile2: in a texture, tiles { TEXTURE tile2 TEXTURE } (eval_material.c)
  * The shapes' own names are not here: the shapes' table has them (src/shape.h),
  * and tests/man.test reads them from src/shape_*.c. */
 #define AST_WORD_MESH_FILE "file"
+#define AST_WORD_AVERAGE "average"
+#define AST_WORD_SLOPE "slope"
+#define AST_WORD_ALTITUDE "altitude"
+#define AST_WORD_INTERIOR_TEXTURE "interior_texture"
+#define AST_WORD_TILES "tiles"
+#define AST_WORD_TILE2 "tile2"
 #define AST_WORD_AOI "aoi"
 #define AST_WORD_CUBIC "cubic"
 #define AST_WORD_SQUARE "square"
 #define AST_WORD_TRIANGULAR "triangular"
 #define AST_WORD_NOISE_GENERATOR "noise_generator"
+#define AST_WORD_NO_BUMP_SCALE "no_bump_scale"
 #define AST_WORD_METRIC "metric"
 #define AST_WORD_FORM "form"
 #define AST_WORD_OFFSET "offset"

@@ -1192,6 +1192,8 @@ int eval_scene(const ast_node *root, scene *s, const eval_options *opt)
 	eval_cursor_free(&c);
 	film_gamma(&e);
 	s->sky_legacy = e.version_given && e.version < 3.7;
+	if (!e.noise_given)   /* POV-Ray's default, 2, is 1 for a scene older than 3.5 */
+		s->noise_generator = e.version < 3.5 ? 1 : 2;
 	eval_free(&e);
 	return diag_error_count() > e.errors_at_start ? -1 : 0;
 }

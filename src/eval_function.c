@@ -269,8 +269,8 @@ static int compile(struct fcomp *c, const ast_node *n)
 
 /* The pool's function made from def, made now unless it was before. name: how
  * the scene calls it (for messages), use: where. */
-/* f_noise3d, internal(76): POV-Ray's Noise at (x, y, z) with its default
- * noise_generator, 2 (eclat does not read global_settings' yet). */
+/* f_noise3d, internal(76): POV-Ray's Noise at (x, y, z) with the scene's
+ * noise_generator (global_settings may come later: 0 stands for it). */
 #define NOISE3D 76
 static int noise3d(struct eval *e, const ast_node *def, int *index)
 {
@@ -278,7 +278,7 @@ static int noise3d(struct eval *e, const ast_node *def, int *index)
 	f.ops = eval_xrealloc(NULL, 4 * sizeof *f.ops);
 	for (int i = 0; i < 3; i++)
 		f.ops[i] = (scene_fop){ FOP_PARAM, i, 0 };
-	f.ops[3] = (scene_fop){ FOP_NOISE3, 2, 0 };
+	f.ops[3] = (scene_fop){ FOP_NOISE3, 0, 0 };
 	*index = scene_add_function(e->s, &f);
 	return 0;
 }

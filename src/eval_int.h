@@ -128,6 +128,7 @@ struct eval {
 	double version;
 	bool version_given;      /* a #version ran */
 	src_loc version_loc;     /* where the last #version ran */
+	bool noise_given;        /* global_settings gave a noise_generator */
 	struct rng rng;
 	ast_node **trees;        /* included files, kept while their macros may run */
 	int n_trees;
@@ -253,6 +254,16 @@ int eval_pattern_modifier(struct eval *e, struct cursor *c, const ast_node *item
 int eval_pattern_transform(struct eval *e, scene_pigment *pg, const xform *t, src_loc loc);
 /* The argument of a pattern keyword: gradient's vector, spiral's arms. */
 int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *pg);
+
+/* The slope pattern's word at item (slope { ... }, slope V, or slope -V,
+ * which the grammar makes one difference), or NULL. */
+const ast_node *eval_slope_word(struct eval *e, const ast_node *item);
+/* Its arguments into pg (a slope pattern): 0, -1 after an error, 2 for a
+ * form eclat does not have (point_at), warned about. */
+int eval_pattern_slope(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg);
+
+/* The warning for uv_mapping, once where the scene writes it. */
+void eval_uv_mapping_warning(struct eval *e, const ast_node *item);
 
 /* image_map { ... }: pg (an image_map pattern) gets its image, read into the
  * scene's images once per file and gamma, its options and a one-entry map of

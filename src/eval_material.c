@@ -201,7 +201,7 @@ static int entry_color(struct eval *e, const ast_node *at, value *v, int map_kw,
  * the items after the value are those of a pigment { } or texture { }. */
 static int body_entry(struct eval *e, const ast_node *entry, int map_kw, struct map_build *mb)
 {
-	double at = 0, c[5];
+	double at = 1, c[5];
 	/* The maps of the average pattern may leave the value out (a weight of 1):
 	 * the first item is the value when it is a float and more items follow. */
 	int first = 0;
@@ -210,7 +210,7 @@ static int body_entry(struct eval *e, const ast_node *entry, int map_kw, struct 
 		if (eval_expr(e, entry->kids[0], &v0))
 			return -1;
 		first = v0.kind == V_FLOAT;
-		at = v0.v[0];
+		at = first ? v0.v[0] : 1;
 		eval_value_free(&v0);
 	}
 	if (entry->n_kids < 1) {
@@ -341,11 +341,11 @@ static int map_block(struct eval *e, const ast_node *b, value *out)
 	eval_cursor_free(&c);
 	if (rc == 0 && !err) {
 		double avg[5] = { 0 }, weights = 0;
-		for (int i = 0; i < mb.n; i++)   /* the average pattern's: values are weights */
-			weights += mb.unordered ? 1 : mb.p[i].at;
+		for (int i = 0; i < mb.n; i++)   /* the average pattern's: values are weights, 1 if left out */
+			weights += mb.p[i].at;
 		for (int i = 0; i < mb.n; i++)
 			for (int k = 0; k < 5 && weights != 0; k++)
-				out->v[k] += mb.p[i].c[k] * (mb.unordered ? 1 : mb.p[i].at) / weights;
+				out->v[k] += mb.p[i].c[k] * mb.p[i].at / weights;
 		if (mb.unordered)
 			memcpy(avg, out->v, sizeof avg);
 		else
@@ -354,7 +354,8 @@ static int map_block(struct eval *e, const ast_node *b, value *out)
 			out->mat = mb.first;
 		for (int k = 0; k < 5; k++)
 			out->mat.pigment[k] = (float)avg[k];
-		out->mat.pattern = mb.unordered || mb.n == 0 ? -1 : map_pigment(e, &mb, b->loc);
+		out->mat.pattern = mb.n == 0 ? -1 : map_pigment(e, &mb, b->loc);
+		out->n = mb.unordered;   /* entries without values: only the average pattern takes them */
 	}
 	free(mb.p);
 	return rc || err ? -1 : 0;
@@ -380,9 +381,18 @@ static bool is_pattern(const ast_node *item)
 	}
 }
 
-/* Items that shape a pattern: nothing to eclat, which averages it. */
-static bool is_pattern_modifier(const ast_node *item)
+/* uv_mapping, which eclat does not have: the pattern stays in 3D space. */
+void eval_uv_mapping_warning(struct eval *e, const ast_node *item)
 {
+	eval_warn_once(e, item->loc, "uv_mapping", "'uv_mapping' is not supported yet; the texture is mapped "
+	               "in space as if it were not there");
+}
+
+/* Items that shape a pattern: nothing to eclat, which averages it. */
+static bool is_pattern_modifier(struct eval *e, const ast_node *item)
+{
+	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING)
+		eval_uv_mapping_warning(e, item);
 	if (item->kind == AST_ARG)
 		switch (item->kw) {
 		case KW_TURBULENCE: case KW_OCTAVES: case KW_OMEGA: case KW_LAMBDA: case KW_FREQUENCY:
@@ -480,7 +490,7 @@ static void pattern_result(struct eval *e, struct pattern *p, double c[5], int *
 	                : "rgb 0.5, the average of the default colour map";
 	char key[64];
 	snprintf(key, sizeof key, "pattern %s", p->name);
-	if (strcmp(p->name, "average") != 0 || !p->has_map)   /* average is its map's mean: exact */
+	if (strcmp(p->name, AST_WORD_AVERAGE) != 0 || !p->has_map)   /* average is its map's mean: exact */
 		eval_warn_once(e, p->at->loc, key, "pattern '%s' is not supported yet; using %s", p->name, how);
 	for (int k = 0; k < 5; k++) {
 		double sum = 0;
@@ -500,8 +510,16 @@ static void start_pattern(struct pattern *p, const ast_node *item, const char *n
 
 /* A pattern keyword with its argument (gradient x), or a pattern that is no
  * eclat keyword (cubic, square...): starts the pattern. 1 when item is none. */
-static int pattern_start(struct eval *e, const ast_node *item, struct pattern *p)
+static int pattern_start(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p)
 {
+	const ast_node *w = eval_slope_word(e, item);
+	if (w) {   /* slope's arguments are no pattern modifiers: read them here */
+		start_pattern(p, w, AST_WORD_SLOPE);
+		int rc = eval_pattern_slope(e, c, item, &p->pg);
+		if (rc == 2)
+			p->kind = -1;
+		return rc < 0 ? -1 : 0;
+	}
 	if (is_pattern(item)) {
 		start_pattern(p, item, ast_keyword_name(item->kw));
 		return p->kind > 0 ? eval_pattern_argument(e, item, &p->pg) : 0;
@@ -532,7 +550,9 @@ static int map_into(struct eval *e, const ast_node *item, struct pattern *p)
 		return -1;
 	p->has_map = true;
 	p->map_pigment = v.mat.pattern;
-	bool average = strcmp(p->name, "average") == 0;
+	bool average = strcmp(p->name, AST_WORD_AVERAGE) == 0;
+	if (v.n && !average)   /* POV-Ray's "Expected float": eclat kept the mean */
+		p->map_pigment = -1;
 	for (int k = 0; k < 5; k++)
 		p->map[k] = average ? v.v[k] : v.mat.pigment[k];
 	p->map_mat = v.mat;
@@ -554,6 +574,8 @@ static void list_add(struct pattern *p, const double c[5], int pigment, int text
  * with the numbers after them. 1 when item is neither. */
 static int pattern_word(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p)
 {
+	if (eval_slope_word(e, item))
+		return pattern_start(e, c, item, p);
 	const ast_node *w = eval_pov_word_item(e, item);
 	if (!w)
 		return 1;
@@ -614,7 +636,7 @@ static int pigment_value(struct eval *e, const ast_node *item, struct pattern *p
 static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p,
                         scene_material *m)
 {
-	int rc = pattern_start(e, item, p);
+	int rc = pattern_start(e, c, item, p);
 	if (rc <= 0)
 		return rc;
 	if (p->kind > 0 && (rc = eval_pattern_modifier(e, c, item, &p->pg)) <= 0)
@@ -627,6 +649,10 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	                                item->kw == KW_PIGMENT_MAP)) {
 		if (!p->at)
 			eval_warning(e, item->loc, "a %s without a pattern is ignored", ast_keyword_name(item->kw));
+		if (p->kind == PATTERN_AVERAGE && item->kw != KW_PIGMENT_MAP) {
+			eval_error(e, item->loc, "average takes a pigment_map, not a %s", ast_keyword_name(item->kw));
+			return -1;
+		}
 		return p->at ? map_into(e, item, p) : 0;
 	}
 	if (item->kind == AST_BLOCK && item->kw == KW_PIGMENT && p->at) {   /* checker pigment {...}, ... */
@@ -644,7 +670,7 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	rc = eval_transform_item(e, NULL, item, &t);
 	if (rc > 0 && p->kind > 0 && eval_pattern_transform(e, &p->pg, &t, item->loc))
 		return -1;   /* a pigment's transformations move its pattern only */
-	if (rc != 0 || is_pattern_modifier(item))
+	if (rc != 0 || is_pattern_modifier(e, item))
 		return rc < 0 ? -1 : 0;
 	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_IMAGE_MAP) == 0) {
 		start_pattern(p, item, AST_WORD_IMAGE_MAP);
@@ -680,6 +706,11 @@ static int pigment_block(struct eval *e, const ast_node *b, scene_material *m, c
 	eval_cursor_free(&c);
 	if (rc || err) {
 		free(p.pg.map);   /* an inherited pattern's copy of its map */
+		return -1;
+	}
+	if (p.at && p.kind == PATTERN_AVERAGE && !p.has_map && !p.inherited) {   /* a declared one has its map */
+		eval_error(e, p.at->loc, "average needs a pigment_map");
+		free(p.pg.map);
 		return -1;
 	}
 	if (p.at) {
@@ -915,14 +946,64 @@ static int interior_block(struct eval *e, const ast_node *b, scene_material *m)
 
 /* texture { [TEXTURE_IDENTIFIER] [pigment {...}] [normal {...}] [finish {...}]
  *           [PATTERN texture_map {...} | PATTERN TEXTURE, TEXTURE] [TRANSFORMATIONS] } */
+/* One item of tiles { }: a texture, layered on those before it in its tile,
+ * or tile2, after which the textures are the second tile's. */
+static int tile_item(struct eval *e, const ast_node *item, scene_material tile[2], int n[2], int *which)
+{
+	if (item->kind == AST_IDENT && strcmp(item->str, AST_WORD_TILE2) == 0 && !eval_lookup(e, item->str) && *which == 0) {
+		*which = 1;
+		return 0;
+	}
+	if (item->kind != AST_BLOCK || item->kw != KW_TEXTURE)
+		return eval_not_valid(e, item, "tiles");
+	value v;
+	if (eval_material_value(e, item, &v))
+		return -1;
+	eval_apply_texture(e, item->loc, &tile[*which], n[*which]++ > 0, &v.mat);
+	eval_value_free(&v);
+	return 0;
+}
+
+/* tiles { TEXTURE... tile2 TEXTURE... }: POV-Ray's old name for a checker of
+ * two textures (Parse_Tiles), the first tile where checker gives 1. */
+static int tiles(struct eval *e, const ast_node *b, struct pattern *p, scene_material *m)
+{
+	scene_material tile[2] = { e->default_mat, e->default_mat };
+	int n[2] = { 0, 0 }, which = 0, err = 0, rc = 0;
+	struct cursor c;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL)
+		rc = tile_item(e, item, tile, n, &which);
+	eval_cursor_free(&c);
+	if (rc || err)
+		return -1;
+	if (n[0] == 0 || n[1] == 0) {
+		eval_error(e, b->loc, n[0] == 0 ? "tiles needs a texture for its first tile"
+		                                 : "tiles needs 'tile2' and a texture after it");
+		return -1;
+	}
+	start_pattern(p, b, scene_pattern_name(PATTERN_CHECKER));
+	copy_finish(m, &tile[1]);
+	for (int i = 1; i >= 0; i--) {
+		double col[5];
+		for (int k = 0; k < 5; k++)
+			col[k] = tile[i].pigment[k];
+		list_add(p, col, -1, scene_add_texture(e->s, &tile[i]));
+	}
+	return 0;
+}
+
 static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p, scene_material *m,
                         bool first)
 {
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_TILES) == 0)
+		return tiles(e, item, p, m);
 	value v;
 	int skip = pattern_word(e, c, item, p);
 	if (skip <= 0)
 		return skip;
-	if ((skip = pattern_start(e, item, p)) <= 0)
+	if ((skip = pattern_start(e, c, item, p)) <= 0)
 		return skip;
 	if (AST_IS_EXPRESSION(item->kind) && first) {
 		if (eval_expect_kind(e, item, V_TEXTURE, &v))
@@ -957,7 +1038,7 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	int rc = eval_transform_item(e, NULL, item, &t);
 	if (rc > 0)   /* a texture's transformations move its patterns */
 		m->tex_xf = scene_xform_then(&m->tex_xf, &t);
-	if (rc != 0 || is_pattern_modifier(item))
+	if (rc != 0 || is_pattern_modifier(e, item))
 		return rc < 0 ? -1 : 0;
 	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
 		eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
@@ -1059,6 +1140,10 @@ static int normal_item(struct eval *e, struct cursor *c, const ast_node *item, s
 	scene_pigment *pg = &p->pg;
 	const char *w = item->kind == AST_IDENT && !eval_lookup(e, item->str) ? item->str : NULL;
 	int err = 0;
+	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING) {
+		eval_uv_mapping_warning(e, item);
+		return 0;
+	}
 	if (AST_IS_EXPRESSION(item->kind) && !w && !*amount) {   /* bumps 0.5 */
 		*amount = true;
 		return eval_expect_float(e, item, &pg->bump_size);
@@ -1110,13 +1195,86 @@ static int slope_map(struct eval *e, const ast_node *b, scene_pigment *pg)
 	return rc || err ? -1 : 0;
 }
 
+static int normal_block(struct eval *e, const ast_node *b, scene_material *m);
+
+/* The normal of a normal_map's entry: the items after its value, those of a
+ * normal { }; its pattern in the pool, or -1 for none (a flat one). */
+static int entry_normal(struct eval *e, const ast_node *at, ast_node *const *kids, int n, int *normal)
+{
+	if (n == 0) {   /* POV-Ray: "No normal type given" */
+		eval_error(e, at->loc, "a normal_map entry needs a normal after its value");
+		return -1;
+	}
+	ast_node body = { .kind = AST_BLOCK, .kw = KW_NORMAL, .loc = at->loc, .kids = (ast_node **)kids, .n_kids = n };
+	scene_material m = scene_default_material();
+	if (normal_block(e, &body, &m))
+		return -1;
+	*normal = m.normal;
+	return 0;
+}
+
+/* normal_map { [Value NORMAL_ITEMS]... } after a normal's pattern, or one
+ * normal { } of a list (checker normal { A } normal { B }): normals of
+ * normals, whose entries the pattern picks and blends (texture_normal). */
+static int normal_entries(struct eval *e, const ast_node *b, scene_pigment *pg)
+{
+	if (!pg->normal_map || b->kw == KW_NORMAL_MAP) {   /* a map, or a list's first: the slope_map goes */
+		free(pg->map);
+		pg->map = NULL;
+		pg->n_map = 0;
+		pg->normal_map = true;
+	}
+	if (b->kw == KW_NORMAL) {
+		int normal;
+		if (entry_normal(e, b, b->kids, b->n_kids, &normal))
+			return -1;
+		pg->map = eval_xrealloc(pg->map, (pg->n_map + 1) * sizeof *pg->map);
+		pg->map[pg->n_map] = (scene_map_entry){ .value = pg->n_map, .pigment = normal, .texture = -1 };
+		pg->n_map++;
+		return 0;
+	}
+	struct cursor c;
+	int err = 0, rc = 0;
+	const ast_node *item;
+	eval_cursor_init(&c, e, b);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		double v = 1;   /* average's weight when left out */
+		int first = 0, normal;
+		if (item->kind != AST_ENTRY || item->n_kids < 1) {
+			rc = eval_not_valid(e, item, "a normal_map (entries are [Value NORMAL_ITEMS])");
+			break;
+		}
+		if (pg->kind != PATTERN_AVERAGE) {
+			if ((rc = eval_expect_float(e, item->kids[0], &v)))
+				break;
+			first = 1;
+		} else if (item->n_kids >= 2 && AST_IS_EXPRESSION(item->kids[0]->kind)) {   /* a weight, or a
+			                                                                       * declared normal */
+			value w;
+			if ((rc = eval_expr(e, item->kids[0], &w)))
+				break;
+			if (w.kind == V_FLOAT) {
+				v = w.v[0];
+				first = 1;
+			}
+			eval_value_free(&w);
+		}
+		if ((rc = entry_normal(e, item, item->kids + first, item->n_kids - first, &normal)))
+			break;
+		pg->map = eval_xrealloc(pg->map, (pg->n_map + 1) * sizeof *pg->map);
+		pg->map[pg->n_map++] = (scene_map_entry){ .value = v, .pigment = normal, .texture = -1 };
+	}
+	eval_cursor_free(&c);
+	return rc || err ? -1 : 0;
+}
+
 /* What goes with a normal's pattern that eclat does not have (bump_map,
  * pigment_pattern...): its amount, modifiers, transformations and blocks,
  * ignored with it. */
 static bool ignored_item(struct eval *e, const ast_node *item)
 {
 	xform t = scene_xform_identity();
-	return AST_IS_EXPRESSION(item->kind) || is_pattern_modifier(item) || item->kind == AST_BLOCK ||
+	return AST_IS_EXPRESSION(item->kind) || is_pattern_modifier(e, item) || item->kind == AST_BLOCK ||
 	       item->kind == AST_FLAG || eval_transform_item(e, NULL, item, &t) > 0;
 }
 
@@ -1150,7 +1308,7 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 					memcpy(p.pg.map, base->map, base->n_map * sizeof *base->map);
 				amount = true;
 			}
-		} else if ((rc = pattern_start(e, item, &p)) <= 0) {
+		} else if ((rc = pattern_start(e, &c, item, &p)) <= 0) {
 			amount = false;
 			if (rc == 0 && p.kind > 0) {
 				p.pg.bump_size = 0.5;
@@ -1166,6 +1324,9 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		} else if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
 			eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
 			rc = 0;
+		} else if (p.at && p.kind > 0 && p.kind != PATTERN_FACETS && item->kind == AST_BLOCK &&
+		           (item->kw == KW_NORMAL_MAP || item->kw == KW_NORMAL)) {
+			rc = normal_entries(e, item, &p.pg);
 		} else if (item->kind == AST_BLOCK && (item->kw == KW_NORMAL_MAP || item->kw == KW_NORMAL)) {
 			eval_warn_once(e, item->loc, "normal_map", "normals of normals (%s) are not supported yet; "
 			               "this normal is ignored", item->kw == KW_NORMAL ? "checker normal { } normal { }"
@@ -1186,6 +1347,10 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		free(p.pg.map);
 		return -1;
 	}
+	if (p.at && p.kind == PATTERN_AVERAGE && !p.pg.normal_map)   /* POV-Ray: "Average must have map." */
+		p.kind = -1;
+	if (p.at && p.kind == PATTERN_SLOPE)   /* a normal of the normal's own slope: not yet */
+		p.kind = -1;
 	if (p.at && p.kind < 0 && p.name[0])
 		eval_warn_once(e, p.at->loc, p.name, "pattern '%s' is not supported yet in a normal; ignored", p.name);
 	if (p.at && p.kind > 0)

@@ -206,9 +206,12 @@ static void transform_objval(struct objval *o, const xform *t)
 		o->objs[i].xf = scene_xform_then(&o->objs[i].xf, t);
 		if (o->objs[i].textured)
 			o->objs[i].material.tex_xf = scene_xform_then(&o->objs[i].material.tex_xf, t);
+		o->objs[i].material.interior_xf = scene_xform_then(&o->objs[i].material.interior_xf, t);
 	}
-	if (o->has_mat)
+	if (o->has_mat) {
 		o->mat.tex_xf = scene_xform_then(&o->mat.tex_xf, t);
+		o->mat.interior_xf = scene_xform_then(&o->mat.interior_xf, t);
+	}
 	for (int i = 0; i < o->n_lights; i++)
 		transform_light(&o->lights[i], t);
 	if (o->bound)
@@ -351,6 +354,23 @@ static int material_modifier(struct eval *e, const ast_node *item, struct objval
 	return 0;
 }
 
+/* interior_texture { TEXTURE_ITEMS }: the texture of the object's inner side,
+ * moved by the object's transformations written after it. */
+static int interior_texture(struct eval *e, const ast_node *item, struct objval *o)
+{
+	bool textured;
+	scene_material *m = target(e, o, &textured);
+	ast_node body = { .kind = AST_BLOCK, .kw = KW_TEXTURE, .loc = item->loc, .kids = item->kids,
+	                  .n_kids = item->n_kids };
+	value v;
+	if (eval_material_value(e, &body, &v))
+		return -1;
+	m->interior_texture = 1 + scene_add_texture(e->s, &v.mat);
+	m->interior_xf = scene_xform_identity();
+	eval_value_free(&v);
+	return 0;
+}
+
 static bool is_material_kw(int kw)
 {
 	return kw == KW_PIGMENT || kw == KW_FINISH || kw == KW_TEXTURE || kw == KW_NORMAL || kw == KW_INTERIOR ||
@@ -458,10 +478,14 @@ static int object_modifier(struct eval *e, struct cursor *c, const ast_node *ite
 	}
 	if (item->kind == AST_BLOCK && is_material_kw(item->kw))
 		return material_modifier(e, item, o);
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_INTERIOR_TEXTURE) == 0)
+		return interior_texture(e, item, o);
 	if (item->kind == AST_FLAG && (rc = flag_item(e, c, item, o)) <= 0)
 		return rc;
-	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING)
+	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING) {
+		eval_uv_mapping_warning(e, item);
 		return 0;
+	}
 	if ((rc = shape_flag(e, item, o)) <= 0)
 		return rc;
 	if ((rc = eval_skip_pov_word(e, c, item)) <= 0)

@@ -36,7 +36,7 @@ int eval_pattern_list_size(int kind)
 /* POV-Ray 3.7's defaults for a pattern's modifiers. */
 void eval_pattern_defaults(scene_pigment *pg, int kind, src_loc loc)
 {
-	*pg = (scene_pigment){ .kind = kind, .wave = WAVE_RAMP, .noise_generator = 2, .frequency = 1,
+	*pg = (scene_pigment){ .kind = kind, .wave = WAVE_RAMP, .frequency = 1,
 	                       .wave_exponent = 1, .loc = loc };
 	double *p = pg->params[0];
 	switch (kind) {
@@ -218,7 +218,8 @@ static int turbulence_item(struct eval *e, const ast_node *item, scene_warp *w)
 }
 
 /* warp { turbulence ... | repeat <V> [offset <V>] [flip <V>] |
- *        black_hole <Centre>, Radius [strength S] [falloff F] [inverse] [repeat <V>] } */
+ *        black_hole <Centre>, Radius [strength S] [falloff F] [inverse] [repeat <V>]
+ *        [turbulence <V>] } */
 static int warp_block(struct eval *e, const ast_node *b, scene_pigment *pg)
 {
 	if (room(e, pg, b->loc))
@@ -262,6 +263,10 @@ static int warp_block(struct eval *e, const ast_node *b, scene_pigment *pg)
 		} else if (name && strcmp(name, AST_WORD_REPEAT) == 0 && w.kind == WARP_BLACK_HOLE) {
 			rc = next_vector(e, &c, item, w.c);
 			w.c[3] = 1;
+		} else if (item->kind == AST_ARG && item->kw == KW_TURBULENCE && w.kind == WARP_BLACK_HOLE) {
+			/* POV-Ray jitters the repeated holes by it */
+			eval_warn_once(e, item->loc, "black_hole turbulence", "a black_hole's turbulence is not supported "
+			               "yet; ignored");
 		} else {
 			rc = eval_not_valid(e, item, "a warp");
 		}
@@ -335,6 +340,10 @@ int eval_pattern_modifier(struct eval *e, struct cursor *c, const ast_node *item
 	if (!name)
 		return 1;
 	double v[3];
+	if (strcmp(name, AST_WORD_NO_BUMP_SCALE) == 0) {
+		pg->no_bump_scale = true;
+		return 0;
+	}
 	if (strcmp(name, AST_WORD_NOISE_GENERATOR) == 0) {
 		double g;
 		if (next_float(e, c, item, &g))
@@ -382,6 +391,121 @@ int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *p
 		return 0;
 	}
 	return arg_float(e, item, &pg->params[0][0]);
+}
+
+/* ---- slope ---- */
+
+const ast_node *eval_slope_word(struct eval *e, const ast_node *item)
+{
+	const ast_node *w = item;
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_SLOPE) == 0)
+		return item;
+	if (item->kind == AST_BINARY && (item->op == '-' || item->op == '+'))
+		w = item->kids[0];
+	return w->kind == AST_IDENT && strcmp(w->str, AST_WORD_SLOPE) == 0 && !eval_lookup(e, w->str) ? w : NULL;
+}
+
+/* Up to two optional floats (a range: low, high), 0 when left out. */
+static int slope_range(struct eval *e, struct cursor *c, double range[2])
+{
+	int err = 0;
+	range[0] = range[1] = 0;
+	for (int i = 0; i < 2; i++) {
+		const ast_node *arg = eval_next_optional(c, &err);
+		if (!arg)
+			break;
+		if (eval_expect_float(e, arg, &range[i]))
+			return -1;
+	}
+	return err ? -1 : 0;
+}
+
+/* POV-Ray's low and width of a range; an empty one is none (with its warning). */
+static void slope_mod(struct eval *e, src_loc loc, const double range[2], double *low, double *width)
+{
+	*low = range[0];
+	*width = range[1] - range[0];
+	if (range[1] != 0 && range[1] == range[0]) {
+		eval_warning(e, loc, "zero gradient range, ignored (as POV-Ray does)");
+		*low = *width = 0;
+	}
+}
+
+/* slope { Direction [, Low, High] [altitude Direction [, Low, High]] }: POV-Ray's
+ * ParseSlopePattern. The two directions go into params[0].xyz and params[1].xyz
+ * as unit vectors times their shares of the sum of their lengths, which is
+ * what EvaluateRaw weighs them by; the slope's range in params[0].w (low) and
+ * params[1].w (width), the altitude's in altitude. */
+static int slope_block(struct eval *e, const ast_node *b, double dir[3], double range[2], double alt[3],
+                       double alt_range[2])
+{
+	struct cursor c;
+	int err = 0, rc = 0;
+	eval_cursor_init(&c, e, b);
+	const ast_node *item = eval_next(&c, &err);
+	if (item && item->kind == AST_ARG && item->kw == KW_POINT_AT) {
+		eval_warn_once(e, item->loc, "slope point_at", "slope's point_at is not supported yet");
+		eval_cursor_free(&c);
+		return 2;
+	}
+	if (!item && !err) {
+		eval_error(e, b->loc, "slope needs a direction");
+		rc = -1;
+	}
+	if (item && rc == 0)
+		rc = eval_expect_vector(e, item, dir);
+	if (rc == 0)
+		rc = slope_range(e, &c, range);
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		const ast_node *v;
+		if (item->kind != AST_IDENT || strcmp(item->str, AST_WORD_ALTITUDE) != 0 || eval_lookup(e, item->str)) {
+			rc = eval_not_valid(e, item, "slope");
+		} else if ((v = eval_next_expr(&c, &err)) == NULL) {
+			eval_error(e, item->loc, "'altitude' needs a vector");
+			rc = -1;
+		} else if ((rc = eval_expect_vector(e, v, alt)) == 0) {
+			rc = slope_range(e, &c, alt_range);
+		}
+	}
+	eval_cursor_free(&c);
+	return rc || err ? -1 : 0;
+}
+
+int eval_pattern_slope(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg)
+{
+	double dir[3] = { 0 }, alt[3] = { 0 }, range[2] = { 0 }, alt_range[2] = { 0 };
+	int err = 0, rc = 0;
+	if (item->kind == AST_BLOCK) {
+		rc = slope_block(e, item, dir, range, alt, alt_range);
+	} else if (item->kind == AST_BINARY) {   /* slope -V */
+		rc = eval_expect_vector(e, item->kids[1], dir);
+		for (int k = 0; k < 3 && item->op == '-'; k++)
+			dir[k] = -dir[k];
+	} else {
+		const ast_node *v = eval_next_expr(c, &err);
+		if (!v) {
+			if (!err)
+				eval_error(e, item->loc, "slope needs a direction");
+			return -1;
+		}
+		rc = eval_expect_vector(e, v, dir);
+	}
+	if (rc)
+		return rc;
+	double slen = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+	double alen = sqrt(alt[0] * alt[0] + alt[1] * alt[1] + alt[2] * alt[2]);
+	if (slen + alen == 0) {
+		eval_error(e, item->loc, "slope needs a direction or an altitude of some length");
+		return -1;
+	}
+	double share = slen / (slen + alen);
+	for (int k = 0; k < 3; k++) {
+		pg->params[0][k] = slen > 0 ? dir[k] / slen * share : 0;
+		pg->params[1][k] = alen > 0 ? alt[k] / alen * (1 - share) : 0;
+	}
+	slope_mod(e, item->loc, range, &pg->params[0][3], &pg->params[1][3]);
+	slope_mod(e, item->loc, alt_range, &pg->altitude[0], &pg->altitude[1]);
+	return 0;
 }
 
 /* ---- image_map ---- */

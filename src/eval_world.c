@@ -51,14 +51,16 @@ const char *eval_pov_word(const char *name)
 }
 
 /* A POV-Ray word eclat does not have, used as an item (confidence 0.9,
- * quick_color Red...): ignored with one warning, and the values after it with
- * it. 1 when item is no such word. */
+ * variance 0.01...): ignored with one warning, and the values after it with
+ * it. 1 when item is no such word. quick_color is ignored without a word:
+ * POV-Ray itself uses it only below +Q6, and eclat renders at full quality. */
 int eval_skip_pov_word(struct eval *e, struct cursor *c, const ast_node *item)
 {
 	const ast_node *w = eval_pov_word_item(e, item);
 	if (!w)
 		return 1;
-	eval_warn_once(e, w->loc, w->str, "'%s' is not supported yet; ignored", w->str);
+	if (strcmp(w->str, "quick_color") != 0 && strcmp(w->str, "quick_colour") != 0)
+		eval_warn_once(e, w->loc, w->str, "'%s' is not supported yet; ignored", w->str);
 	int err = 0;
 	if (w == item)   /* its values are the items after it, as far as they go */
 		while (eval_next_optional(c, &err))
@@ -760,8 +762,34 @@ static int charset(struct eval *e, struct cursor *c, const ast_node *item)
 	return 0;
 }
 
+/* noise_generator N: the generator of the patterns that name none. 1 when
+ * item is something else. */
+static int noise_generator(struct eval *e, struct cursor *c, const ast_node *item)
+{
+	if (item->kind != AST_IDENT || strcmp(item->str, AST_WORD_NOISE_GENERATOR) != 0 || eval_lookup(e, item->str))
+		return 1;
+	int err = 0;
+	double g;
+	const ast_node *arg = eval_next_expr(c, &err);
+	if (!arg) {
+		if (!err)
+			eval_error(e, item->loc, "'noise_generator' needs a value");
+		return -1;
+	}
+	if (eval_expect_float(e, arg, &g))
+		return -1;
+	if (g < 1 || g >= 4) {
+		eval_error(e, arg->loc, "noise_generator is 1, 2 or 3");
+		return -1;
+	}
+	e->s->noise_generator = (int)g;
+	e->noise_given = true;
+	return 0;
+}
+
 /* global_settings { [assumed_gamma F] [max_trace_level N] [adc_bailout F]
- *                   [ambient_light COLOR] }: POV-Ray's other settings are ignored. */
+ *                   [ambient_light COLOR] [noise_generator N] }: POV-Ray's other
+ * settings are ignored. */
 static int global_settings(struct eval *e, const ast_node *b)
 {
 	struct cursor c;
@@ -769,7 +797,9 @@ static int global_settings(struct eval *e, const ast_node *b)
 	const ast_node *item;
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
-		if ((rc = charset(e, &c, item)) <= 0 || (rc = eval_skip_pov_word(e, &c, item)) <= 0)
+		if ((rc = charset(e, &c, item)) <= 0 || (rc = noise_generator(e, &c, item)) <= 0)
+			continue;
+		if ((rc = eval_skip_pov_word(e, &c, item)) <= 0)
 			continue;
 		if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
 			eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);

@@ -134,7 +134,14 @@ static int add_material(struct lowering *lw, const scene_material *m, int local)
 	if (lw->n_mats == lw->cap_mats)
 		lw->mats = grow(lw->mats, &lw->cap_mats, sizeof *lw->mats);
 	lw->mats[lw->n_mats] = lower_texture(&lw->textures, lw->s, m, local);
-	return lw->n_mats++;
+	if (m->interior_texture == 0 || local)
+		return lw->n_mats++;
+	lw->mats[lw->n_mats].flags |= MATERIAL_INTERIOR;   /* the next material is its inner side */
+	if (lw->n_mats + 1 == lw->cap_mats)
+		lw->mats = grow(lw->mats, &lw->cap_mats, sizeof *lw->mats);
+	lw->mats[lw->n_mats + 1] = lower_interior_texture(&lw->textures, lw->s, m);
+	lw->n_mats += 2;
+	return lw->n_mats - 2;
 }
 
 /* ---- shapes ---- */

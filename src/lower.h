@@ -115,6 +115,8 @@ int lower_function_valid(const scene *s, int f, char *why, size_t n);
  * by ambient_light); its pattern pigments go into lt. local: a mesh's own
  * texture, whose patterns are in the mesh's space. */
 dev_material lower_texture(lower_textures *lt, const scene *s, const scene_material *m, int local);
+/* The material of m's interior_texture (m->interior_texture > 0), with m's interior. */
+dev_material lower_interior_texture(lower_textures *lt, const scene *s, const scene_material *m);
 /* Appends the materials of texture_maps' entries and lower layers (lt->subs)
  * after *mats, and makes the references to them indices into *mats. */
 void lower_textures_append(lower_textures *lt, dev_material **mats, int *n_mats);

@@ -86,7 +86,7 @@ static void statement(struct text *t, const scene *s, const scene_fop *o, int *s
 	} else if (o->op == FOP_NOISE3) {
 		*top -= 3;
 		put(t, "(real)pattern_noise((float3)((float)t%d, (float)t%d, (float)t%d), %d);\n", stack[*top],
-		    stack[*top + 1], stack[*top + 2], o->arg);
+		    stack[*top + 1], stack[*top + 2], o->arg ? o->arg : s->noise_generator);
 	} else if (o->op == FOP_CALL) {
 		int n = s->functions[o->arg].n_params;
 		*top -= n;

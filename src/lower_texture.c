@@ -156,9 +156,10 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 	lt->patterns = grow_to(lt->patterns, &lt->cap_patterns, lt->n_patterns, sizeof *lt->patterns);
 	dev_pattern d = {
 		.rows = { row(&inv, 0), row(&inv, 1), row(&inv, 2) },
-		.kind = pg->kind, .wave = pg->wave, .noise_generator = pg->noise_generator,
+		.kind = pg->kind, .wave = pg->wave, .noise_generator = scene_noise_generator(s, pg),
+		.flags = (pg->normal_map ? PATTERN_NORMAL_MAP : 0) | (pg->no_bump_scale ? PATTERN_NO_BUMP_SCALE : 0),
 		.frequency = (float)pg->frequency, .phase = (float)pg->phase, .wave_exponent = (float)pg->wave_exponent,
-		.bump_size = (float)pg->bump_size, .normal = { (float)pg->accuracy, 0, 0, 0 },
+		.bump_size = (float)pg->bump_size, .normal = { (float)pg->accuracy, (float)pg->altitude[0], (float)pg->altitude[1], 0 },
 		.params = { f4v(pg->params[0]), f4v(pg->params[1]) },
 		.warp_first = lt->n_warps, .warp_count = n_warps,
 		.map_first = lt->n_maps, .map_count = pg->n_map,
@@ -291,6 +292,17 @@ dev_material lower_texture(lower_textures *lt, const scene *s, const scene_mater
 		return lower_one(lt, s, &sf, m, &m->tex_xf, 0);
 	int top = lower_layers(lt, s, &sf, m->layers, &m->tex_xf, -1, 0);
 	return lt->subs[top];   /* a copy: the primitives' own index */
+}
+
+dev_material lower_interior_texture(lower_textures *lt, const scene *s, const scene_material *m)
+{
+	struct surface sf = { m, 0 };   /* the object's interior, as its outer side's */
+	const scene_material *t = &s->textures[m->interior_texture - 1];
+	xform to_world = scene_xform_then(&t->tex_xf, &m->interior_xf);
+	if (t->layers < 0)
+		return lower_one(lt, s, &sf, t, &to_world, 0);
+	int top = lower_layers(lt, s, &sf, t->layers, &to_world, -1, 0);
+	return lt->subs[top];
 }
 
 void lower_textures_append(lower_textures *lt, dev_material **mats, int *n_mats)

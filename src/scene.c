@@ -88,9 +88,15 @@ void scene_init(scene *s)
 	s->camera = scene_default_camera();
 	s->adc_bailout = 1.0f / 255.0f;
 	s->film_gamma = 1;
+	s->noise_generator = 2;
 
 	for (int i = 0; i < 3; i++)
 		s->ambient_light[i] = 1;
+}
+
+int scene_noise_generator(const scene *s, const scene_pigment *pg)
+{
+	return pg->noise_generator ? pg->noise_generator : s->noise_generator;
 }
 
 static void *grow(void *p, int *cap, size_t size)
@@ -264,6 +270,7 @@ scene_material scene_default_material(void)
 		.texture_map = -1,
 		.layers = -1,
 		.below = -1,
+		.interior_xf = scene_xform_identity(),
 		.ambient = { 0.1f, 0.1f, 0.1f },
 		.diffuse = 0.6f,
 		.brilliance = 1,
@@ -602,6 +609,7 @@ static const char *const pattern_names[] = {
 	"cylindrical", "dents", "facets", "gradient", "granite", "hexagon", "leopard", "marble", "onion",
 	"planar", "quilted", "radial", "ripples", "spherical", "spiral1", "spiral2", "spotted", "square",
 	"triangular", "waves", "wood", "wrinkles", "image_map", "function",
+	"average", "slope",
 };
 _Static_assert(sizeof pattern_names / sizeof *pattern_names == PATTERN_COUNT, "a name for each pattern");
 
@@ -644,7 +652,7 @@ static void mark_material(const scene *s, const scene_material *m, char *used, b
 		}
 }
 
-static void dump_pigment(FILE *out, int index, const scene_pigment *pg, bool textures)
+static void dump_pigment(FILE *out, const scene *s, int index, const scene_pigment *pg, bool textures)
 {
 	fprintf(out, "pigment %d %s", index, scene_pattern_name(pg->kind));
 	double params[8];
@@ -654,7 +662,7 @@ static void dump_pigment(FILE *out, int index, const scene_pigment *pg, bool tex
 		fputc(' ', out);
 		num(out, params[i]);
 	}
-	fprintf(out, " wave %d noise_generator %d", pg->wave, pg->noise_generator);
+	fprintf(out, " wave %d noise_generator %d", pg->wave, scene_noise_generator(s, pg));
 	if (pg->bump_size != 0 || pg->accuracy != 0) {
 		fnum(out, "bump_size", pg->bump_size);
 		fnum(out, "accuracy", pg->accuracy);
@@ -726,7 +734,7 @@ static void dump_pigments(FILE *out, const scene *s)
 		}
 	for (int i = 0; i < s->n_pigments; i++)
 		if (used[i])
-			dump_pigment(out, i, &s->pigments[i], used[i] == 2);
+			dump_pigment(out, s, i, &s->pigments[i], used[i] == 2);
 	free(used);
 	free(used_tex);
 }

@@ -53,10 +53,14 @@ typedef struct {
  * PATTERN_SOLID holds a colour_map alone (a declared map). */
 typedef struct {
 	int kind;                /* PATTERN_ */
-	int wave, noise_generator;
+	int wave, noise_generator;   /* 1, 2 or 3; 0: global_settings' (scene_noise_generator) */
 	double frequency, phase, wave_exponent;
 	double params[2][4];     /* by kind, as dev_pattern's */
 	double bump_size, accuracy;  /* a normal's: its amount (0.5) and accuracy (0.02) */
+	double altitude[2];      /* slope's altitude range: low, width (0: none) */
+	bool no_bump_scale;      /* a normal's transformations scale its bumps */
+	bool normal_map;         /* a normal's map entries are normals (pigment: the normal's
+	                          * pattern, or -1: none), not its slope_map */
 	scene_warp warps[SCENE_MAX_WARPS];  /* POV-Ray's list: the first applies first; the
 	                          * transformations written in the pigment are among them */
 	int n_warps;
@@ -101,6 +105,10 @@ typedef struct {
 	int layers;              /* the top layer (scene.textures), or -1: not layered */
 	int below;               /* in scene.textures, a layer's next layer down, or -1;
 	                          * it shares the layer's outer space (tex_xf of the layers' owner) */
+	int interior_texture;    /* an object's interior_texture, the texture of the side its
+	                          * surface normal turns away from: 1 + its index in scene.textures,
+	                          * 0: none (so that zeroed objects have none) */
+	xform interior_xf;       /* the object's transformations written after interior_texture */
 	/* finish */
 	float ambient[3];        /* 0.1 */
 	float diffuse;           /* 0.6 */
@@ -368,7 +376,7 @@ enum {
 /* CONST pushes value; PARAM pushes parameter arg; CALL pops the callee's
  * parameters (the last on top) and pushes function arg's value for them;
  * NOISE3 pops x, y, z and pushes POV-Ray's Noise there with noise_generator
- * arg (f_noise3d). */
+ * arg, or the scene's when arg is 0 (f_noise3d). */
 typedef struct {
 	int op, arg;
 	double value;
@@ -430,10 +438,13 @@ typedef struct {
 	                       * gamma correction off (an older #version without assumed_gamma):
 	                       * the colours are written into 8-bit images as they are */
 	float adc_bailout;    /* 1/255 */
+	int noise_generator;  /* a pattern's without one of its own: 1, 2 or 3, POV-Ray's 2 */
 	float ambient_light[3]; /* 1 */
 } scene;
 
 void scene_init(scene *s);
+/* The noise generator pg uses: its own, else the scene's. */
+int scene_noise_generator(const scene *s, const scene_pigment *pg);
 /* Appends; exits with a message on out of memory. */
 void scene_add_object(scene *s, const scene_object *o);
 void scene_add_light(scene *s, const scene_light *l);

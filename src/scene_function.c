@@ -115,7 +115,7 @@ double scene_function_eval(const scene *s, int f, const double *args)
 		} else if (o->op == FOP_NOISE3) {
 			top -= 3;
 			float p[3] = { (float)stack[top], (float)stack[top + 1], (float)stack[top + 2] };
-			stack[top++] = scene_noise(p, o->arg);
+			stack[top++] = scene_noise(p, o->arg ? o->arg : s->noise_generator);
 		} else if (o->op == FOP_CALL) {
 			int n = s->functions[o->arg].n_params;
 			top -= n;
