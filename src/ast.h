@@ -284,6 +284,8 @@ enum kw_class {
  *   slope and altitude: the slope pattern, slope { V altitude V } (eval_pattern.c)
  *   interior_texture: an object's, interior_texture { ... } (eval_object.c)
  *   tiles and tile2: in a texture, tiles { TEXTURE tile2 TEXTURE } (eval_material.c)
+ *   mesh_camera and smooth: in a camera, mesh_camera { ... smooth } (eval_camera_mesh.c)
+ *   charset and its sets ascii, utf8, sys: in global_settings (eval_world.c)
  * The shapes' own names are not here: the shapes' table has them (src/shape.h),
  * and tests/man.test reads them from src/shape_*.c. */
 #define AST_WORD_MESH_FILE "file"
@@ -293,6 +295,12 @@ enum kw_class {
 #define AST_WORD_INTERIOR_TEXTURE "interior_texture"
 #define AST_WORD_TILES "tiles"
 #define AST_WORD_TILE2 "tile2"
+#define AST_WORD_MESH_CAMERA "mesh_camera"
+#define AST_WORD_SMOOTH "smooth"
+#define AST_WORD_CHARSET "charset"
+#define AST_WORD_ASCII "ascii"
+#define AST_WORD_UTF8 "utf8"
+#define AST_WORD_SYS "sys"
 #define AST_WORD_AOI "aoi"
 #define AST_WORD_CUBIC "cubic"
 #define AST_WORD_SQUARE "square"

@@ -88,7 +88,7 @@ int eval_camera_mesh(struct eval *e, const ast_node *b, scene_camera *c)
 	while (rc == 0 && (item = eval_next(&cur, &err)) != NULL) {
 		if (smooth) {
 			rc = eval_not_valid(e, item, "a mesh_camera after smooth");
-		} else if (item->kind == AST_IDENT && strcmp(item->str, "smooth") == 0 && !eval_lookup(e, item->str)) {
+		} else if (item->kind == AST_IDENT && strcmp(item->str, AST_WORD_SMOOTH) == 0 && !eval_lookup(e, item->str)) {
 			smooth = true;
 		} else if (item->kind == AST_BLOCK && (item->kw == KW_MESH || item->kw == KW_MESH2)) {
 			rc = camera_mesh_one(e, item, c);

@@ -270,7 +270,7 @@ static int camera_item(struct eval *e, struct cursor *c, const ast_node *item, s
 		return rc;
 	if (item->kind == AST_BLOCK && item->kw == KW_NORMAL)
 		return eval_material_block(e, item, NULL);
-	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, "mesh_camera") == 0)
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_MESH_CAMERA) == 0)
 		return eval_camera_mesh(e, item, &ci->c);
 	return eval_not_valid(e, item, "a camera");
 }
@@ -746,7 +746,7 @@ static int global_arg(struct eval *e, const ast_node *item)
  * covers ASCII; 1 when item is not charset. */
 static int charset(struct eval *e, struct cursor *c, const ast_node *item)
 {
-	if (item->kind != AST_IDENT || strcmp(item->str, "charset") != 0 || eval_lookup(e, item->str))
+	if (item->kind != AST_IDENT || strcmp(item->str, AST_WORD_CHARSET) != 0 || eval_lookup(e, item->str))
 		return 1;
 	int err = 0;
 	const ast_node *set = eval_next(c, &err);
