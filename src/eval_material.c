@@ -50,6 +50,7 @@ static void copy_interior(scene_material *d, const scene_material *s)
 	d->fade_distance = s->fade_distance;
 	d->fade_power = s->fade_power;
 	memcpy(d->fade_color, s->fade_color, sizeof d->fade_color);
+	d->media = s->media;
 }
 
 void eval_apply_value(const value *v, scene_material *m)
@@ -873,7 +874,7 @@ static int finish_block(struct eval *e, const ast_node *b, scene_material *m)
 /* ---- interior ---- */
 
 /* interior { [INTERIOR_IDENTIFIER] [ior F] [dispersion F] [fade_distance F]
- *            [fade_power F] [fade_color COLOR] [caustics F] } */
+ *            [fade_power F] [fade_color COLOR] [caustics F] [media { }...] } */
 static int interior_item(struct eval *e, struct cursor *c, const ast_node *item, scene_material *m, bool first)
 {
 	int rc = eval_skip_pov_word(e, c, item);
@@ -886,6 +887,8 @@ static int interior_item(struct eval *e, struct cursor *c, const ast_node *item,
 		copy_interior(m, &v.mat);
 		return 0;
 	}
+	if (item->kind == AST_BLOCK && item->kw == KW_MEDIA)
+		return eval_media_interior(e, item, m);
 	double f;
 	switch (item->kind == AST_ARG ? item->kw : -1) {
 	case KW_IOR: return float_arg(e, item->kids[0], &m->ior);
@@ -909,6 +912,27 @@ static int interior_item(struct eval *e, struct cursor *c, const ast_node *item,
 static int interior_block(struct eval *e, const ast_node *b, scene_material *m)
 {
 	return material_items(e, b, m, interior_item);
+}
+
+/* density { [DENSITY_IDENTIFIER] [PATTERN] [COLOR_MAP] [MODIFIERS...] }: read as
+ * a pigment is (POV-Ray's density_map is its colour map), white by default; a
+ * media's densities multiply. */
+int eval_media_density(struct eval *e, const ast_node *b, scene_media *md)
+{
+	scene_material d = scene_default_material();
+	for (int k = 0; k < 3; k++)
+		d.pigment[k] = 1;
+	if (pigment_block(e, b, &d, NULL))
+		return -1;
+	if (md->n_density == SCENE_MEDIA_DENSITIES) {
+		eval_error(e, b->loc, "a media holds at most %d densities", SCENE_MEDIA_DENSITIES);
+		return -1;
+	}
+	md->density[md->n_density] = d.pattern;
+	for (int k = 0; k < 3; k++)
+		md->density_rgb[md->n_density][k] = d.pigment[k];
+	md->n_density++;
+	return 0;
 }
 
 /* ---- texture and material ---- */

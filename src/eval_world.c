@@ -20,20 +20,20 @@ const char *eval_pov_word(const char *name)
 		"parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
 		"sphere_sweep", "text",
 	};
-	static const char *const statements[] = { "rainbow", "media" };
+	static const char *const statements[] = { "rainbow" };
 	static const char *const patterns[] = {
 		"aoi", "average", "density_file", "image_pattern", "julia", "magnet", "mandel", "pavement",
 		"pigment_pattern", "slope", "tiling",
 	};
 	static const char *const others[] = {
 		"albedo", "always_sample", "area_illumination", "brightness", "bump_map", "charset",
-		"confidence", "control0", "control1", "count", "density", "density_map", "error_bound",
+		"control0", "control1", "count", "density_map", "error_bound",
 		"exterior", "function", "gray_threshold", "hf_gray_16", "image_map", "interior_texture", "irid",
 		"irid_wavelength", "low_error_factor", "material_map", "max_intersections",
 		"media_interaction", "metric", "minimum_reuse", "mm_per_unit", "nearest_count", "no_radiosity",
 		"noise_generator", "number_of_waves", "pattern", "photons", "pretrace_end", "pretrace_start",
 		"projected_through", "quick_color", "quick_colour", "radiosity", "recursion_limit", "slope_map",
-		"solid", "spline", "subsurface", "tiles", "variance", "warp",
+		"solid", "spline", "subsurface", "tiles", "warp",
 	};
 	for (size_t i = 0; i < sizeof objects / sizeof *objects; i++)
 		if (strcmp(objects[i], name) == 0)
@@ -875,6 +875,8 @@ int eval_block_value(struct eval *e, const ast_node *b, value *out)
 		return sky_sphere(e, b, out);
 	case KW_FOG:
 		return eval_fog_value(e, b, out);
+	case KW_MEDIA:
+		return eval_media_value(e, b, out);
 	case KW_UNKNOWN:
 		if (strcmp(b->str, "layers") == 0)
 			return eval_material_value(e, b, out);
@@ -911,6 +913,7 @@ static int statement_block(struct eval *e, const ast_node *b)
 	case KW_BACKGROUND: return background(e, b);
 	case KW_GLOBAL_SETTINGS: return global_settings(e, b);
 	case KW_FOG: return eval_fog_statement(e, b);
+	case KW_MEDIA: return eval_media_statement(e, b);
 	case KW_SKY_SPHERE:
 		if (sky_sphere(e, b, &v))
 			return -1;

@@ -122,6 +122,7 @@ typedef struct {
 	float dispersion;        /* 1 */
 	float fade_distance, fade_power; /* 0, 0: no absorption */
 	float fade_color[3];     /* 0 */
+	int media;               /* the interior's last media (scene.media) plus one; 0: none */
 } scene_material;
 
 /* The shapes of the scene language, one row each: X(NAME, name) makes
@@ -318,6 +319,32 @@ typedef struct {
 	src_loc loc;
 } scene_fog;
 
+/* A media { } (eval_media.c), POV-Ray 3.7's Parse_Media defaults
+ * (scene_default_media). An interior's media are a chain through prev, the
+ * last written first, never changed once made: materials copied by value
+ * share them, and the chain's head names the interior's media. */
+#define SCENE_MEDIA_DENSITIES 4
+enum { SCENE_SCATTER_ISOTROPIC = 1, SCENE_SCATTER_MIE_HAZY, SCENE_SCATTER_MIE_MURKY, SCENE_SCATTER_RAYLEIGH,
+       SCENE_SCATTER_HG };
+typedef struct {
+	double absorption[3], emission[3], scattering[3];   /* 0 */
+	int type;                /* SCENE_SCATTER_, 1 */
+	double eccentricity;     /* 0: Henyey-Greenstein's g */
+	double extinction;       /* 1: scattering's share of the extinction */
+	int method;              /* 3 */
+	int intervals;           /* 1 */
+	int min_samples, max_samples;  /* 10, 10 */
+	double confidence, variance, ratio, jitter, aa_threshold;  /* 0.9, 1/128, 0.9, 0, 0.1 */
+	int aa_level;            /* 3 */
+	/* density { }s, multiplied: each a pattern (scene.pigments) or -1, a constant colour */
+	int density[SCENE_MEDIA_DENSITIES];
+	float density_rgb[SCENE_MEDIA_DENSITIES][3];
+	int n_density;
+	xform xf;                /* the media's transformations: they move its densities */
+	int prev;                /* the media written before it in the same interior, or -1 */
+	src_loc loc;
+} scene_media;
+
 /* A CSG object (union inside CSG, merge, intersection, difference, inverse):
  * its leaves are consecutive scene objects, and its program (kernels/shared.h,
  * CSG_; operands of CSG_LEAF are 0 .. n_leaves - 1) says how their insides
@@ -406,6 +433,9 @@ typedef struct {
 	int n_sky_layers;
 	scene_fog *fogs;      /* in the order written; they combine as POV-Ray combines them */
 	int n_fogs, cap_fogs;
+	scene_media *media;   /* every interior's media (scene_material.media) and the atmosphere's */
+	int n_media, cap_media;
+	int atmosphere;       /* the scene-level media's chain head plus one; 0: none */
 	/* global_settings */
 	int max_trace_level;  /* 0 when the scene does not say */
 	float assumed_gamma;  /* 0 when the scene does not say */
@@ -424,6 +454,10 @@ void scene_add_light(scene *s, const scene_light *l);
 void scene_add_fog(scene *s, const scene_fog *f);
 /* POV-Ray's default fog (Create_Fog): no distance, so no fog until one is given. */
 scene_fog scene_default_fog(void);
+/* Appends a media to the pool; returns its index. */
+int scene_add_media(scene *s, const scene_media *m);
+/* POV-Ray 3.7's media defaults (method 3, one interval, 10 samples). */
+scene_media scene_default_media(void);
 /* Takes ownership of p's map; returns its index. */
 int scene_add_pigment(scene *s, const scene_pigment *p);
 /* A texture into the pool scene.textures; returns its index. */

@@ -1,0 +1,389 @@
+/* media.cl: participating media (POV-Ray 3.7's media { }), what both
+ * integrators share and the Whitted integrator's sampling.
+ *
+ * A ray knows which interiors with media it is in (media_stack): it enters or
+ * leaves one where it passes through a surface whose material has media, as
+ * POV-Ray's interior list does (an interior met again is left). The media of
+ * every interior on the stack act together at a point: their densities times
+ * their coefficients add up (media_coefficients).
+ *
+ * The Whitted integrator follows POV-Ray's MediaFunction::ComputeMedia: the
+ * segment is cut into intervals (one when nothing lights it and the density is
+ * constant), each sampled by method 3 (adaptive, as POV-Ray 3.7.0 does it:
+ * samples / 2 + 1 sub-intervals, each end sampled and the middle refined while
+ * neighbours differ by more than aa_threshold, down aa_level) or by methods 1 and 2 (samples stratified in
+ * each interval, without POV-Ray's extra samples for the variance); a sample's
+ * colour is the emission plus, for every light_source, the scattered light
+ * reaching the point (shadowed, and dimmed by the media on its way) times
+ * POV-Ray's phase function, averaged over the media. Light rays through media
+ * lose exp(-optical depth). */
+
+#define MEDIA_NEST 4        /* interiors with media a ray can be inside at once */
+#define MEDIA_LIST 8        /* media acting together at a point */
+#define MEDIA_AA_STACK 24   /* method 3's refinements waiting */
+#define MEDIA_HUGE 2e10f    /* how far a ray that leaves the scene goes through the atmosphere */
+
+typedef struct {
+	int first[MEDIA_NEST], count[MEDIA_NEST];
+	int n;
+} media_stack;
+
+inline media_stack media_none(void)
+{
+	media_stack s;
+	s.n = 0;
+	return s;
+}
+
+/* Through a surface of material m: enters its interior's media, or leaves them. */
+inline media_stack media_cross(media_stack s, global const dev_material *m)
+{
+	if (m->n_media <= 0)
+		return s;
+	for (int i = 0; i < s.n; i++) {
+		if (s.first[i] == m->media) {
+			for (int k = i + 1; k < s.n; k++) {
+				s.first[k - 1] = s.first[k];
+				s.count[k - 1] = s.count[k];
+			}
+			s.n--;
+			return s;
+		}
+	}
+	if (s.n < MEDIA_NEST) {
+		s.first[s.n] = m->media;
+		s.count[s.n++] = m->n_media;
+	}
+	return s;
+}
+
+/* The media of every interior on the stack (or the atmosphere's), as indices. */
+typedef struct {
+	int m[MEDIA_LIST];
+	int n;
+} media_list;
+
+inline media_list media_gather(const media_stack *s)
+{
+	media_list l;
+	l.n = 0;
+	for (int i = 0; i < s->n; i++)
+		for (int k = 0; k < s->count[i] && l.n < MEDIA_LIST; k++)
+			l.m[l.n++] = s->first[i] + k;
+	return l;
+}
+
+inline media_list media_atmosphere(const scene_data *sc)
+{
+	media_list l;
+	l.n = 0;
+	for (int k = 0; k < sc->p->n_atmosphere && l.n < MEDIA_LIST; k++)
+		l.m[l.n++] = sc->p->atmosphere + k;
+	return l;
+}
+
+/* A media's density at x: the product of its densities' colours there. */
+inline float3 media_density(const scene_data *sc, global const dev_media *md, float3 x)
+{
+	float3 rho = md->density_rgb.xyz;
+	for (int k = 0; k < MEDIA_DENSITIES && md->density[k] >= 0; k++) {
+		shading_point sp;
+		sp.x = sp.object_x = x;
+		sp.ns = sp.ng = sp.n0 = (float3)(0.0f, 1.0f, 0.0f);
+		sp.d = (float3)(0.0f, 0.0f, 1.0f);
+		sp.m = &sc->materials[md->density[k]];
+		rho *= texture_pigment(sc, &sp).rgb;
+	}
+	return rho;
+}
+
+inline bool media_constant(const scene_data *sc, const media_list *l)
+{
+	for (int i = 0; i < l->n; i++)
+		if (sc->media[l->m[i]].density[0] >= 0)
+			return false;
+	return true;
+}
+
+typedef struct {
+	float3 extinction, emission, scattering;
+} media_coeffs;
+
+inline media_coeffs media_coefficients(const scene_data *sc, const media_list *l, float3 x)
+{
+	media_coeffs c = { (float3)(0.0f), (float3)(0.0f), (float3)(0.0f) };
+	for (int i = 0; i < l->n; i++) {
+		global const dev_media *md = &sc->media[l->m[i]];
+		float3 rho = media_density(sc, md, x);
+		c.extinction += rho * (md->absorption.xyz + md->scattering.w * md->scattering.xyz);
+		c.emission += rho * md->emission.xyz;
+		c.scattering += rho * md->scattering.xyz;
+	}
+	return c;
+}
+
+/* POV-Ray's phase functions, averaged over the media: cos_a is the cosine
+ * between the direction to the light and the ray's direction (1: the light
+ * comes from straight ahead). Isotropic is 1. */
+inline float media_phase(const scene_data *sc, const media_list *l, float cos_a)
+{
+	float k = 0.0f;
+	for (int i = 0; i < l->n; i++) {
+		global const dev_media *md = &sc->media[l->m[i]];
+		float g = md->absorption.w;
+		switch (md->type) {
+		case MEDIA_RAYLEIGH: k += 0.799372013f * (1.0f + cos_a * cos_a); break;
+		case MEDIA_MIE_HAZY: k += 0.576655375f * (1.0f + 9.0f * pown(0.5f * (1.0f + cos_a), 8)); break;
+		case MEDIA_MIE_MURKY: k += 0.495714547f * (1.0f + 50.0f * pown(0.5f * (1.0f + cos_a), 32)); break;
+		case MEDIA_HG: k += (1.0f - g * g) / pow(1.0f + g * g - 2.0f * g * cos_a, 1.5f); break;
+		default: k += 1.0f; break;
+		}
+	}
+	return l->n > 0 ? k / (float)l->n : 0.0f;
+}
+
+/* The optical depth of the media over (o, o + t d): exact for constant
+ * densities, else the midpoint rule over samples steps. */
+inline float3 media_optical_depth(const scene_data *sc, const media_list *l, float3 o, float3 d, float t, int steps)
+{
+	if (l->n == 0 || t <= 0.0f)
+		return (float3)(0.0f);
+	if (media_constant(sc, l))
+		return t * media_coefficients(sc, l, o).extinction;
+	float3 od = (float3)(0.0f);
+	float dt = t / (float)steps;
+	for (int i = 0; i < steps; i++)
+		od += media_coefficients(sc, l, o + ((float)i + 0.5f) * dt * d).extinction;
+	return od * dt;
+}
+
+/* How finely a list's optical depth is sampled along a light ray: POV-Ray's
+ * intervals times samples of the media with most intervals. */
+inline int media_steps(const scene_data *sc, const media_list *l)
+{
+	int n = 1;
+	for (int i = 0; i < l->n; i++) {
+		global const dev_media *md = &sc->media[l->m[i]];
+		n = max(n, min(md->intervals * md->min_samples, 256));
+	}
+	return n;
+}
+
+/* What of colour, a light's, reaches o from along dir in (tmin, tmax) for a
+ * ray inside the interiors of s: visibility_shadow's surfaces, and the media
+ * of the hollow interiors it passes through (POV-Ray's ComputeShadowTexture). */
+inline float3 media_shadow(const scene_data *sc, media_stack s, float3 o, float3 dir, float tmin, float tmax,
+                           float3 colour)
+{
+	sc->counts[COUNT_RAYS + RAY_SHADOW]++;
+	float start = 0.0f;
+	for (int i = 0; i < VISIBILITY_CROSSINGS; i++) {
+		traverse_hit h = visibility_closest(sc, o, dir, tmin, tmax - start, OBJECT_NO_SHADOW, RAY_SHADOW);
+		if (h.prim < 0)   /* as POV-Ray, media count between surfaces only: an open container has none */
+			return colour;
+		media_list l = media_gather(&s);
+		colour *= exp(-media_optical_depth(sc, &l, o, dir, h.t, media_steps(sc, &l)));
+		shading_point sp = texture_point(sc, h, o, dir);
+		float pass;
+		float3 filter = texture_filter(sc, &sp, &pass);
+		if (pass < sc->p->classic.w)
+			return (float3)(0.0f);
+		colour *= filter;
+		if (!sp.entering)
+			colour *= visibility_fade(sp.m, h.t);
+		if (sc->objects[sp.object] & OBJECT_HOLLOW)
+			s = media_cross(s, &sc->materials[sp.material]);
+		o += h.t * dir;
+		start += h.t;
+		tmin = fmax(tmin, sp.eps);
+		sc->counts[COUNT_RAYS + RAY_SHADOW]++;
+	}
+	return (float3)(0.0f);
+}
+
+/* ---- the Whitted integrator: POV-Ray's sampling ---- */
+
+/* The light of every light_source scattered toward -d at x, before the
+ * coefficient: sum of phase * light reaching x (shadowed, through the media). */
+inline float3 media_lights(const scene_data *sc, const media_list *l, media_stack s, float3 x, float3 d)
+{
+	float3 sum = (float3)(0.0f);
+	for (int i = 0; i < sc->p->n_lights; i++) {
+		global const dev_light *lt = &sc->lights[i];
+		float3 to = lt->position.xyz - x, dir;
+		float dist, k = 1.0f;
+		if (lt->kind == LIGHT_KIND_PARALLEL) {
+			dir = -lt->spot.xyz;
+			dist = dot(to, dir);
+		} else {
+			dist = length(to);
+			dir = dist > 0.0f ? to / dist : (float3)(0.0f, 1.0f, 0.0f);
+			k = light_fade(lt, dist);
+			if (lt->kind == LIGHT_KIND_SPOT)
+				k *= light_spot(lt, -dir);
+		}
+		float3 c = k * lt->color.xyz;
+		if (k <= 0.0f || !(dist > 0.0f))
+			continue;
+		if (!lt->shadowless)
+			c = media_shadow(sc, s, x, dir, 1e-4f, dist, c);
+		sum += media_phase(sc, l, dot(dir, d)) * c;
+	}
+	return sum;
+}
+
+/* One sample at distance t: its colour (emission and scattered light) times
+ * the length ds it stands for, and its optical depth over ds. */
+inline float3 media_sample(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float t,
+                           float ds, bool lit, float3 *od)
+{
+	float3 x = o + t * d;
+	media_coeffs c = media_coefficients(sc, l, x);
+	*od = c.extinction * ds;
+	float3 col = c.emission;
+	if (lit && (c.scattering.x > 0.0f || c.scattering.y > 0.0f || c.scattering.z > 0.0f))
+		col += c.scattering * media_lights(sc, l, s, x, d);
+	return col * ds;
+}
+
+/* A small generator for jitter, keyed by the ray: POV-Ray's jitter is random too. */
+inline float media_jitter(uint *state)
+{
+	*state = rng_hash(*state + 0x9e3779b9U);
+	return (float)(*state >> 8) * (1.0f / 16777216.0f) - 0.5f;
+}
+
+typedef struct {
+	float d1, d3;
+	float3 c1, c3, od1, od3;
+	float w;
+	int depth;
+} media_aa_node;
+
+/* Method 3's refinement of one sub-interval (d1, d3) of [s0, s0 + ds], whose
+ * ends are sampled: POV-Ray's ComputeOneMediaSampleRecursive, walked with a
+ * stack; each node's share of the result is w. */
+inline float3 media_refine(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float s0,
+                           float ds, bool lit, global const dev_media *im, float thr, media_aa_node root,
+                           float3 *od_out, uint *rnd)
+{
+	media_aa_node stack[MEDIA_AA_STACK];
+	int n = 0;
+	stack[n++] = root;
+	float3 res = (float3)(0.0f), od = (float3)(0.0f);
+	while (n > 0) {
+		media_aa_node nd = stack[--n];
+		float d2 = 0.5f * (nd.d1 + nd.d3);
+		float j = im->sampling.x != 0.0f ? im->sampling.x * (nd.d3 - nd.d1) * media_jitter(rnd) : 0.0f;
+		float3 od2;
+		float3 c2 = media_sample(sc, l, s, o, d, s0 + (d2 + j) * ds, ds, lit, &od2);
+		if (nd.depth <= 0 || n + 2 > MEDIA_AA_STACK) {
+			res += nd.w * (nd.c1 + c2 + nd.c3) / 3.0f;
+			od += nd.w * (nd.od1 + od2 + nd.od3) / 3.0f;
+			continue;
+		}
+		float3 dl = fabs(nd.c1 - c2), dr = fabs(c2 - nd.c3);
+		if (dl.x + dl.y + dl.z > thr) {
+			media_aa_node c = { nd.d1, d2, nd.c1, c2, nd.od1, od2, 0.5f * nd.w, nd.depth - 1 };
+			stack[n++] = c;
+		} else {
+			res += nd.w * (nd.c1 / 3.0f + c2 / 6.0f);
+			od += nd.w * (nd.od1 / 3.0f + od2 / 6.0f);
+		}
+		if (dr.x + dr.y + dr.z > thr) {
+			media_aa_node c = { d2, nd.d3, c2, nd.c3, od2, nd.od3, 0.5f * nd.w, nd.depth - 1 };
+			stack[n++] = c;
+		} else {
+			res += nd.w * (c2 / 6.0f + nd.c3 / 3.0f);
+			od += nd.w * (od2 / 6.0f + nd.od3 / 3.0f);
+		}
+	}
+	*od_out = od;
+	return res;
+}
+
+/* One interval [s0, s0 + ds] by method 3, as POV-Ray 3.7.0 samples it: its
+ * emitted colour te and optical depth od, each a mean over its
+ * min_samples / 2 + 1 (at least 2) sub-intervals of width 1 / (that + 1) from
+ * the interval's start (3.7 leaves the last stretch unsampled: its images
+ * show it), each sub-interval attenuated by those before it. */
+inline void media_interval3(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float s0,
+                            float ds, bool lit, global const dev_media *im, float thr, float3 *te, float3 *od,
+                            uint *rnd)
+{
+	int sub = max(2, min(im->min_samples, 4096) / 2 + 1);
+	float dd = 1.0f / (float)(sub + 1), n = 1.0f / (float)sub, jit = im->sampling.x;
+	float3 od0, od1;
+	float d0 = 0.0f;
+	float3 c0 = media_sample(sc, l, s, o, d, s0 + ds * (jit != 0.0f ? dd * jit * media_jitter(rnd) : 0.0f), ds, lit,
+	                         &od0);
+	float3 sum_te = (float3)(0.0f), sum_od = (float3)(0.0f);
+	for (int j = 1; j <= sub; j++) {
+		d0 += dd;
+		float3 c1 = media_sample(sc, l, s, o, d, s0 + ds * (d0 + (jit != 0.0f ? dd * jit * media_jitter(rnd) : 0.0f)),
+		                         ds, lit, &od1);
+		media_aa_node root = { d0 - dd, d0, c0, c1, od0, od1, 1.0f, min(im->aa_level, 16) - 1 };
+		float3 odr;
+		float3 r = media_refine(sc, l, s, o, d, s0, ds, lit, im, thr, root, &odr, rnd);
+		sum_te += r * exp(-sum_od * n);
+		sum_od += odr;
+		c0 = c1;
+		od0 = od1;
+	}
+	*te = sum_te * n;
+	*od = sum_od * n;
+}
+
+/* One interval by methods 1 and 2: min_samples stratified samples (random
+ * within their strata by jitter; method 1: anywhere in the interval), each
+ * attenuated from the interval's start as POV-Ray's regular sampling does. */
+inline void media_interval12(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float s0,
+                             float ds, bool lit, global const dev_media *im, float3 *te, float3 *od, uint *rnd)
+{
+	int n = max(1, im->min_samples);
+	float3 sum_te = (float3)(0.0f), sum_od = (float3)(0.0f);
+	for (int j = 0; j < n; j++) {
+		float u = im->method == 1 ? media_jitter(rnd) + 0.5f
+		                          : ((float)j + 0.5f + im->sampling.x * (media_jitter(rnd) + 0.5f)) / (float)n;
+		float3 o1;
+		float3 c = media_sample(sc, l, s, o, d, s0 + u * ds, ds, lit, &o1);
+		sum_te += c * exp(-o1 * u);
+		sum_od += o1;
+	}
+	*te = sum_te / (float)n;
+	*od = sum_od / (float)n;
+}
+
+/* POV-Ray's ComputeMedia over (o, o + t d) for the media of l, on colour, the
+ * light coming from the segment's end: colour * exp(-depth) + what the media
+ * emit and scatter toward o. s: the interiors the ray is in (for light rays). */
+inline float3 media_whitted(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float t,
+                            float3 colour)
+{
+	if (l->n == 0 || !(t > 0.0f))
+		return colour;
+	global const dev_media *im = &sc->media[l->m[0]];
+	float thr = im->sampling.y;
+	for (int i = 1; i < l->n; i++) {   /* the media with most intervals leads (the first of them) */
+		global const dev_media *md = &sc->media[l->m[i]];
+		if (md->intervals > im->intervals)
+			im = md;
+		thr = fmin(thr, md->sampling.y);
+	}
+	/* every light lights the whole segment (POV-Ray narrows a spotlight's to its cone) */
+	bool lit = sc->p->n_lights > 0;
+	int intervals = !lit && media_constant(sc, l) ? 1 : max(1, min(im->intervals, 1024));
+	float ds = fmin(t, MEDIA_HUGE) / (float)intervals;
+	uint rnd = as_uint(o.x) ^ rng_hash(as_uint(d.y) ^ rng_hash(as_uint(d.x) + as_uint(t)));
+	float3 total_od = (float3)(0.0f), te_sum = (float3)(0.0f);
+	for (int i = 0; i < intervals; i++) {
+		float3 te, od;
+		if (im->method == 3)
+			media_interval3(sc, l, s, o, d, (float)i * ds, ds, lit, im, thr, &te, &od, &rnd);
+		else
+			media_interval12(sc, l, s, o, d, (float)i * ds, ds, lit, im, &te, &od, &rnd);
+		te_sum += te * exp(-total_od);
+		total_od += od;
+	}
+	return colour * exp(-total_od) + te_sum;
+}
