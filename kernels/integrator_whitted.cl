@@ -508,6 +508,7 @@ kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p
 	uint counts[COUNT_N] = { 0 };
 	scene_data sc = { SCENE_BUFFERS(SCENE_FIELD) p, counts };
 	float4 acc = film[pixel];
+	media_stack around = media_around(&sc, p->cam_location.xyz);
 	for (int s = 0; s < p->samples_per_pass; s++) {
 		/* one ray through a fixed place of the pixel; focal blur, which needs many
 		 * rays, is the path tracer's. Where the camera makes no ray, POV-Ray's
@@ -519,7 +520,7 @@ kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p
 		if (camera_ray(p, px, py, at.x, at.y, &o, &d)) {
 			d = normalize(d);
 			whitted_ray camera = whitted_child(o, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE, p->camera_solids,
-			                                   media_none());
+			                                   around);
 			counts[COUNT_RAYS + RAY_CAMERA]++;
 			l = film_finite(whitted_radiance(&sc, camera, &first));
 		}

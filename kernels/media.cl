@@ -203,13 +203,105 @@ inline float3 media_shadow(const scene_data *sc, media_stack s, float3 o, float3
 
 /* ---- the Whitted integrator: POV-Ray's sampling ---- */
 
+#define MEDIA_LIGHTS 8        /* light_sources whose lit stretch of a ray is found; the others light all of it */
+#define MEDIA_INTERVALS 64    /* intervals of one segment, at most */
+#define MEDIA_MAX_DISTANCE 1e7f   /* POV-Ray's MAX_DISTANCE */
+
+/* Where along a segment each light_source lights the media (POV-Ray's
+ * LightSourceEntry): a spotlight its cone, the others all of it. */
+typedef struct {
+	float s0[MEDIA_LIGHTS], s1[MEDIA_LIGHTS];
+} media_spans;
+
+/* The stretch (d1, d2) of the ray (o, d) in a spotlight's falloff cone:
+ * POV-Ray's ComputeSpotLightInterval. */
+inline bool media_spot_interval(global const dev_light *lt, float3 o, float3 d, float *d1, float *d2)
+{
+	float cf = lt->cos_falloff;
+	float m = 1.0f / (cf * cf);
+	float3 v = o - lt->position.xyz;
+	float k1 = dot(d, lt->spot.xyz), k2 = dot(v, lt->spot.xyz), len = length(v);
+	bool in_cone = len > 1e-10f && k2 / len >= cf;
+	if (k1 <= 0.0f && k2 < 0.0f)
+		return false;
+	float k3 = dot(v, d), k4 = dot(v, v);
+	float a = 1.0f - k1 * k1 * m, b = k3 - k1 * k2 * m, c = k4 - k2 * k2 * m;
+	if (a != 0.0f) {
+		float disc = b * b - a * c;
+		if (disc > 1e-10f) {
+			disc = sqrt(disc);
+			float t1 = (-b + disc) / a, t2 = (-b - disc) / a;
+			if (t1 > t2) {
+				float t = t1;
+				t1 = t2;
+				t2 = t;
+			}
+			float l1 = k2 + t1 * k1, l2 = k2 + t2 * k1;
+			if (l1 <= 0.0f && l2 <= 0.0f)
+				return false;
+			if (l1 <= 0.0f) {
+				if (in_cone) {
+					t1 = 0.0f;
+					t2 = t2 > 0.0f ? t2 : MEDIA_MAX_DISTANCE;
+				} else {
+					t1 = t2;
+					t2 = MEDIA_MAX_DISTANCE;
+				}
+			} else if (l2 <= 0.0f) {
+				if (in_cone) {
+					t2 = t1;
+					t1 = 0.0f;
+				} else {
+					t2 = MEDIA_MAX_DISTANCE;
+				}
+			}
+			*d1 = t1;
+			*d2 = t2;
+			return true;
+		}
+		if (disc > -1e-10f) {
+			*d1 = in_cone ? 0.0f : -b / a;
+			*d2 = in_cone ? -b / a : MEDIA_MAX_DISTANCE;
+			return true;
+		}
+		return false;
+	}
+	if (in_cone) {
+		*d1 = 0.0f;
+		*d2 = -c / b;
+		return true;
+	}
+	return false;
+}
+
+/* Each light's lit stretch of (o, o + t d); an unlit light's is empty
+ * (s0 > s1). Returns how many lights light some of it. */
+inline int media_light_spans(const scene_data *sc, float3 o, float3 d, float t, media_spans *sp)
+{
+	int n = 0;
+	for (int i = 0; i < min(sc->p->n_lights, MEDIA_LIGHTS); i++) {
+		global const dev_light *lt = &sc->lights[i];
+		float t1 = 0.0f, t2 = t;
+		bool in = true;
+		if (lt->kind == LIGHT_KIND_SPOT)
+			in = media_spot_interval(lt, o, d, &t1, &t2) && t1 < t && t2 > 0.001f;
+		sp->s0[i] = in ? fmax(t1, 0.0f) : 1.0f;
+		sp->s1[i] = in ? fmin(t2, t) : 0.0f;
+		n += in;
+	}
+	return n + max(sc->p->n_lights - MEDIA_LIGHTS, 0);
+}
+
 /* The light of every light_source scattered toward -d at x, before the
  * coefficient: sum of phase * light reaching x (shadowed, through the media). */
-inline float3 media_lights(const scene_data *sc, const media_list *l, media_stack s, float3 x, float3 d)
+inline float3 media_lights(const scene_data *sc, const media_list *l, media_stack s, float3 x, float3 d,
+                           const media_spans *spans, float at)
 {
 	float3 sum = (float3)(0.0f);
 	for (int i = 0; i < sc->p->n_lights; i++) {
 		global const dev_light *lt = &sc->lights[i];
+		if (i < MEDIA_LIGHTS && !(at >= spans->s0[i] && at <= spans->s1[i]))
+			continue;
 		float3 to = lt->position.xyz - x, dir;
 		float dist, k = 1.0f;
 		if (lt->kind == LIGHT_KIND_PARALLEL) {
@@ -235,14 +327,14 @@ inline float3 media_lights(const scene_data *sc, const media_list *l, media_stac
 /* One sample at distance t: its colour (emission and scattered light) times
  * the length ds it stands for, and its optical depth over ds. */
 inline float3 media_sample(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float t,
-                           float ds, bool lit, float3 *od)
+                           float ds, const media_spans *lit, float3 *od)
 {
 	float3 x = o + t * d;
 	media_coeffs c = media_coefficients(sc, l, x);
 	*od = c.extinction * ds;
 	float3 col = c.emission;
 	if (lit && (c.scattering.x > 0.0f || c.scattering.y > 0.0f || c.scattering.z > 0.0f))
-		col += c.scattering * media_lights(sc, l, s, x, d);
+		col += c.scattering * media_lights(sc, l, s, x, d, lit, t);
 	return col * ds;
 }
 
@@ -264,7 +356,7 @@ typedef struct {
  * ends are sampled: POV-Ray's ComputeOneMediaSampleRecursive, walked with a
  * stack; each node's share of the result is w. */
 inline float3 media_refine(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float s0,
-                           float ds, bool lit, global const dev_media *im, float thr, media_aa_node root,
+                           float ds, const media_spans *lit, global const dev_media *im, float thr, media_aa_node root,
                            float3 *od_out, uint *rnd)
 {
 	media_aa_node stack[MEDIA_AA_STACK];
@@ -308,7 +400,7 @@ inline float3 media_refine(const scene_data *sc, const media_list *l, media_stac
  * the interval's start (3.7 leaves the last stretch unsampled: its images
  * show it), each sub-interval attenuated by those before it. */
 inline void media_interval3(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float s0,
-                            float ds, bool lit, global const dev_media *im, float thr, float3 *te, float3 *od,
+                            float ds, const media_spans *lit, global const dev_media *im, float thr, float3 *te, float3 *od,
                             uint *rnd)
 {
 	int sub = max(2, min(im->min_samples, 4096) / 2 + 1);
@@ -338,7 +430,7 @@ inline void media_interval3(const scene_data *sc, const media_list *l, media_sta
  * within their strata by jitter; method 1: anywhere in the interval), each
  * attenuated from the interval's start as POV-Ray's regular sampling does. */
 inline void media_interval12(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float s0,
-                             float ds, bool lit, global const dev_media *im, float3 *te, float3 *od, uint *rnd)
+                             float ds, const media_spans *lit, global const dev_media *im, float3 *te, float3 *od, uint *rnd)
 {
 	int n = max(1, im->min_samples);
 	float3 sum_te = (float3)(0.0f), sum_od = (float3)(0.0f);
@@ -362,6 +454,7 @@ inline float3 media_whitted(const scene_data *sc, const media_list *l, media_sta
 {
 	if (l->n == 0 || !(t > 0.0f))
 		return colour;
+	t = fmin(t, MEDIA_HUGE);
 	global const dev_media *im = &sc->media[l->m[0]];
 	float thr = im->sampling.y;
 	for (int i = 1; i < l->n; i++) {   /* the media with most intervals leads (the first of them) */
@@ -370,20 +463,102 @@ inline float3 media_whitted(const scene_data *sc, const media_list *l, media_sta
 			im = md;
 		thr = fmin(thr, md->sampling.y);
 	}
-	/* every light lights the whole segment (POV-Ray narrows a spotlight's to its cone) */
-	bool lit = sc->p->n_lights > 0;
-	int intervals = !lit && media_constant(sc, l) ? 1 : max(1, min(im->intervals, 1024));
-	float ds = fmin(t, MEDIA_HUGE) / (float)intervals;
+	/* the lit and unlit stretches (ComputeMediaLightInterval): the lights'
+	 * starts and ends sorted apart, overlapping stretches merged */
+	media_spans spans;
+	float a[MEDIA_LIGHTS], b[MEDIA_LIGHTS];
+	int n_lit = media_light_spans(sc, o, d, t, &spans), n = 0;
+	for (int i = 0; i < min(sc->p->n_lights, MEDIA_LIGHTS); i++) {
+		if (spans.s0[i] > spans.s1[i])
+			continue;
+		int k = n++;
+		for (; k > 0 && a[k - 1] > spans.s0[i]; k--)
+			a[k] = a[k - 1];
+		a[k] = spans.s0[i];
+		k = n - 1;
+		for (; k > 0 && b[k - 1] > spans.s1[i]; k--)
+			b[k] = b[k - 1];
+		b[k] = spans.s1[i];
+	}
+	if (n_lit > n) {   /* lights past MEDIA_LIGHTS light everything */
+		a[0] = 0.0f;
+		b[0] = t;
+		n = 1;
+	}
+	float lo[2 * MEDIA_LIGHTS + 1], hi[2 * MEDIA_LIGHTS + 1];
+	bool lit[2 * MEDIA_LIGHTS + 1];
+	int m = 0;
+	if (n == 0) {
+		lo[0] = 0.0f, hi[0] = t, lit[0] = false;
+		m = 1;
+	} else {
+		if (a[0] > 0.0f)
+			lo[m] = 0.0f, hi[m] = a[0], lit[m++] = false;
+		lo[m] = a[0], hi[m] = b[0], lit[m++] = true;
+		for (int i = 1; i < n; i++) {
+			if (a[i] > hi[m - 1]) {
+				lo[m] = hi[m - 1], hi[m] = a[i], lit[m++] = false;
+				lo[m] = a[i], hi[m] = b[i], lit[m++] = true;
+			} else if (b[i] > hi[m - 1]) {
+				hi[m - 1] = b[i];
+			}
+		}
+		if (hi[m - 1] < t)
+			lo[m] = hi[m - 1], hi[m] = t, lit[m++] = false;
+	}
+	/* how many intervals each stretch gets (ComputeMediaSampleInterval) */
+	int intervals = max(min(im->intervals, MEDIA_INTERVALS), m);
+	float ratio = im->sampling.z, sum = 0.0f;
+	for (int i = 0; i < m; i++)
+		sum += lit[i] ? ratio : 1.0f - ratio;
 	uint rnd = as_uint(o.x) ^ rng_hash(as_uint(d.y) ^ rng_hash(as_uint(d.x) + as_uint(t)));
 	float3 total_od = (float3)(0.0f), te_sum = (float3)(0.0f);
-	for (int i = 0; i < intervals; i++) {
-		float3 te, od;
-		if (im->method == 3)
-			media_interval3(sc, l, s, o, d, (float)i * ds, ds, lit, im, thr, &te, &od, &rnd);
-		else
-			media_interval12(sc, l, s, o, d, (float)i * ds, ds, lit, im, &te, &od, &rnd);
-		te_sum += te * exp(-total_od);
-		total_od += od;
+	int remaining = intervals;
+	for (int i = 0; i < m; i++) {
+		int k;
+		if (m == 1) {
+			k = !lit[0] && media_constant(sc, l) ? 1 : intervals;
+		} else {
+			k = (int)((lit[i] ? ratio : 1.0f - ratio) / sum * (float)intervals) + 1;
+			k = min(k, remaining - m + i + 1);
+		}
+		k = max(k, 1);
+		remaining -= k;
+		float ds = (hi[i] - lo[i]) / (float)k;
+		for (int j = 0; j < k; j++) {
+			float3 te, od;
+			const media_spans *ls = lit[i] ? &spans : 0;
+			if (im->method == 3)
+				media_interval3(sc, l, s, o, d, lo[i] + (float)j * ds, ds, ls, im, thr, &te, &od, &rnd);
+			else
+				media_interval12(sc, l, s, o, d, lo[i] + (float)j * ds, ds, ls, im, &te, &od, &rnd);
+			te_sum += te * exp(-total_od);
+			total_od += od;
+		}
 	}
 	return colour * exp(-total_od) + te_sum;
+}
+
+#define MEDIA_AROUND_CROSSINGS 64   /* surfaces a ray from the camera passes to find what holds it */
+
+/* The interiors with media around x (the camera): those whose surfaces a ray
+ * from x to infinity crosses an odd number of times. The host counts the solid
+ * objects around the camera by their inside tests (lower_fog.c); media
+ * containers are any closed surface, so the device counts crossings. */
+inline media_stack media_around(const scene_data *sc, float3 x)
+{
+	media_stack s = media_none();
+	if (!(sc->p->scene_flags & SCENE_MEDIA))
+		return s;
+	float3 d = normalize((float3)(0.3141f, 0.8142f, 0.4873f));   /* along no axis, unlikely along a face */
+	float tmin = 0.0f;
+	for (int i = 0; i < MEDIA_AROUND_CROSSINGS; i++) {
+		traverse_hit h = visibility_closest(sc, x, d, tmin, INFINITY, 0, RAY_SHADOW);
+		if (h.prim < 0)
+			break;
+		shading_point sp = texture_point(sc, h, x, d);
+		s = media_cross(s, &sc->materials[sp.material]);
+		tmin = h.t + sp.eps;
+	}
+	return s;
 }
