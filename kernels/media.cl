@@ -22,6 +22,7 @@
 #define MEDIA_LIST 8        /* media acting together at a point */
 #define MEDIA_AA_STACK 24   /* method 3's refinements waiting */
 #define MEDIA_HUGE 2e10f    /* how far a ray that leaves the scene goes through the atmosphere */
+#define MEDIA_INTERVALS_MAX 64   /* intervals of one segment, at most */
 
 typedef struct {
 	int first[MEDIA_NEST], count[MEDIA_NEST];
@@ -142,31 +143,46 @@ inline float media_phase(const scene_data *sc, const media_list *l, float cos_a)
 	return l->n > 0 ? k / (float)l->n : 0.0f;
 }
 
-/* The optical depth of the media over (o, o + t d): exact for constant
- * densities, else the midpoint rule over samples steps. */
-inline float3 media_optical_depth(const scene_data *sc, const media_list *l, float3 o, float3 d, float t, int steps)
+/* The optical depth of the media over (o, o + t d), as POV-Ray estimates it
+ * for a light ray: exact for constant densities; else over the leading
+ * media's intervals, each by its method with nothing emitted (method 3:
+ * samples / 2 + 1 sub-intervals of 1 / (that + 1), each the mean of its ends
+ * and middle, nothing emitted to refine; methods 1 and 2: stratified). */
+inline float3 media_optical_depth(const scene_data *sc, const media_list *l, float3 o, float3 d, float t)
 {
 	if (l->n == 0 || t <= 0.0f)
 		return (float3)(0.0f);
 	if (media_constant(sc, l))
 		return t * media_coefficients(sc, l, o).extinction;
+	global const dev_media *im = &sc->media[l->m[0]];
+	for (int i = 1; i < l->n; i++)
+		if (sc->media[l->m[i]].intervals > im->intervals)
+			im = &sc->media[l->m[i]];
+	int intervals = clamp(im->intervals, 1, MEDIA_INTERVALS_MAX);
+	float ds = t / (float)intervals;
 	float3 od = (float3)(0.0f);
-	float dt = t / (float)steps;
-	for (int i = 0; i < steps; i++)
-		od += media_coefficients(sc, l, o + ((float)i + 0.5f) * dt * d).extinction;
-	return od * dt;
-}
-
-/* How finely a list's optical depth is sampled along a light ray: POV-Ray's
- * intervals times samples of the media with most intervals. */
-inline int media_steps(const scene_data *sc, const media_list *l)
-{
-	int n = 1;
-	for (int i = 0; i < l->n; i++) {
-		global const dev_media *md = &sc->media[l->m[i]];
-		n = max(n, min(md->intervals * md->min_samples, 256));
+	for (int i = 0; i < intervals; i++) {
+		float s0 = (float)i * ds;
+		float3 sum = (float3)(0.0f);
+		if (im->method == 3) {
+			int sub = max(2, min(im->min_samples, 4096) / 2 + 1);
+			float dd = 1.0f / (float)(sub + 1);
+			float3 e0 = media_coefficients(sc, l, o + s0 * d).extinction;
+			for (int j = 1; j <= sub; j++) {
+				float3 em = media_coefficients(sc, l, o + (s0 + ((float)j - 0.5f) * dd * ds) * d).extinction;
+				float3 e1 = media_coefficients(sc, l, o + (s0 + (float)j * dd * ds) * d).extinction;
+				sum += (e0 + em + e1) / 3.0f;
+				e0 = e1;
+			}
+			od += sum * ds / (float)sub;
+		} else {
+			int n = clamp(im->min_samples, 1, 4096);
+			for (int j = 0; j < n; j++)
+				sum += media_coefficients(sc, l, o + (s0 + ((float)j + 0.5f) / (float)n * ds) * d).extinction;
+			od += sum * ds / (float)n;
+		}
 	}
-	return n;
+	return od;
 }
 
 /* What of colour, a light's, reaches o from along dir in (tmin, tmax) for a
@@ -182,7 +198,7 @@ inline float3 media_shadow(const scene_data *sc, media_stack s, float3 o, float3
 		if (h.prim < 0)   /* as POV-Ray, media count between surfaces only: an open container has none */
 			return colour;
 		media_list l = media_gather(&s);
-		colour *= exp(-media_optical_depth(sc, &l, o, dir, h.t, media_steps(sc, &l)));
+		colour *= exp(-media_optical_depth(sc, &l, o, dir, h.t));
 		shading_point sp = texture_point(sc, h, o, dir);
 		float pass;
 		float3 filter = texture_filter(sc, &sp, &pass);
@@ -204,7 +220,6 @@ inline float3 media_shadow(const scene_data *sc, media_stack s, float3 o, float3
 /* ---- the Whitted integrator: POV-Ray's sampling ---- */
 
 #define MEDIA_LIGHTS 8        /* light_sources whose lit stretch of a ray is found; the others light all of it */
-#define MEDIA_INTERVALS 64    /* intervals of one segment, at most */
 #define MEDIA_MAX_DISTANCE 1e7f   /* POV-Ray's MAX_DISTANCE */
 
 /* Where along a segment each light_source lights the media (POV-Ray's
@@ -507,7 +522,7 @@ inline float3 media_whitted(const scene_data *sc, const media_list *l, media_sta
 			lo[m] = hi[m - 1], hi[m] = t, lit[m++] = false;
 	}
 	/* how many intervals each stretch gets (ComputeMediaSampleInterval) */
-	int intervals = max(min(im->intervals, MEDIA_INTERVALS), m);
+	int intervals = max(min(im->intervals, MEDIA_INTERVALS_MAX), m);
 	float ratio = im->sampling.z, sum = 0.0f;
 	for (int i = 0; i < m; i++)
 		sum += lit[i] ? ratio : 1.0f - ratio;
