@@ -333,7 +333,8 @@ enum { MEDIA_ISOTROPIC = 1, MEDIA_MIE_HAZY, MEDIA_MIE_MURKY, MEDIA_RAYLEIGH, MED
 #define MEDIA_DENSITIES 4
 typedef struct {
 	float4 absorption;   /* rgb; w: Henyey-Greenstein's eccentricity */
-	float4 emission;     /* rgb */
+	float4 emission;     /* rgb; w: the largest density (the path tracer's majorant is
+	                      * w * the largest channel of absorption + scattering) */
 	float4 scattering;   /* rgb; w: scattering's share of the extinction */
 	float4 density_rgb;  /* rgb: the constant densities' product; w: 1 */
 	float4 sampling;     /* x: jitter, y: aa_threshold, z: ratio */

@@ -3,6 +3,7 @@
  * by its head; each chain becomes consecutive records once, however many
  * materials (a CSG's leaves, a texture's layers) hold it, so that the first
  * record names the interior for the rays inside it (kernels/media.cl). */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -19,12 +20,32 @@ static void *grow_media(void *p, int *cap, size_t size)
 	return p;
 }
 
+/* The largest value a density's pigment takes in any channel: its map's
+ * entries bound it (nested pigments in turn); an image, 1. Delta tracking
+ * needs a bound it never passes. */
+static float density_bound(const lower_textures *lt, int pattern, int depth)
+{
+	if (pattern < 0 || pattern >= lt->n_patterns || depth > 8)
+		return 1;
+	const dev_pattern *p = &lt->patterns[pattern];
+	if (p->kind == PATTERN_IMAGE_MAP || p->map_count == 0)
+		return 1;
+	float b = 0;
+	for (int i = p->map_first; i < p->map_first + p->map_count && i < lt->n_maps; i++) {
+		const dev_map_entry *e = &lt->maps[i];
+		float c = e->pigment >= 0 ? density_bound(lt, e->pigment, depth + 1)
+		                          : fmaxf(e->colour.x, fmaxf(e->colour.y, e->colour.z));
+		b = fmaxf(b, c);
+	}
+	return b;
+}
+
 static dev_media lower_one_media(lower_textures *lt, const scene *s, const scene_media *m, const xform *to_world)
 {
 	dev_media d = {
 		.absorption = { (float)m->absorption[0], (float)m->absorption[1], (float)m->absorption[2],
 		                (float)m->eccentricity },
-		.emission = { (float)m->emission[0], (float)m->emission[1], (float)m->emission[2], 0 },
+		.emission = { (float)m->emission[0], (float)m->emission[1], (float)m->emission[2], 1 },
 		.scattering = { (float)m->scattering[0], (float)m->scattering[1], (float)m->scattering[2],
 		                (float)m->extinction },
 		.density_rgb = { 1, 1, 1, 1 },
@@ -46,8 +67,11 @@ static dev_media lower_one_media(lower_textures *lt, const scene *s, const scene
 			d.density_rgb.z *= m->density_rgb[k][2];
 			continue;
 		}
-		d.density[n++] = lower_texture_density(lt, s, m->density[k], m->density_rgb[k], &place);
+		d.density[n] = lower_texture_density(lt, s, m->density[k], m->density_rgb[k], &place);
+		d.emission.w *= density_bound(lt, lt->subs[d.density[n]].pattern, 0);
+		n++;
 	}
+	d.emission.w *= fmaxf(d.density_rgb.x, fmaxf(d.density_rgb.y, d.density_rgb.z));
 	return d;
 }
 
