@@ -86,7 +86,7 @@ inline float3 media_density(const scene_data *sc, global const dev_media *md, fl
 		sp.m = &sc->materials[md->density[k]];
 		rho *= texture_pigment(sc, &sp).rgb;
 	}
-	return rho;
+	return fmax(rho, 0.0f);   /* a map's negative entries would make light out of nothing */
 }
 
 inline bool media_constant(const scene_data *sc, const media_list *l)

@@ -928,6 +928,11 @@ int eval_media_density(struct eval *e, const ast_node *b, scene_media *md)
 		eval_error(e, b->loc, "a media holds at most %d densities", SCENE_MEDIA_DENSITIES);
 		return -1;
 	}
+	for (int k = 0; k < 3; k++)
+		if (d.pattern < 0 && !(d.pigment[k] >= 0)) {   /* negative extinction makes light out of nothing */
+			eval_error(e, b->loc, "a density must not be negative (%g)", d.pigment[k]);
+			return -1;
+		}
 	md->density[md->n_density] = d.pattern;
 	for (int k = 0; k < 3; k++)
 		md->density_rgb[md->n_density][k] = d.pigment[k];

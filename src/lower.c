@@ -981,6 +981,7 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	out->params.atmosphere = atmosphere;
 	out->params.n_atmosphere = n_atmosphere;
 	out->params.camera_solids = out->n_fogs || out->textures.n_media ? lower_camera_solids(s) : 0;
+	lower_media_warn_open(s);
 	if (rc == 0 && join(&lw, s, out))
 		rc = -1;
 	if (rc == 0)

@@ -109,6 +109,8 @@ char *lower_function_source(const scene *s);
  * records in lt, once however many materials hold it; their densities are
  * placed by to_world. Returns the first, and the count in *n. */
 int lower_media(lower_textures *lt, const scene *s, int head, const xform *to_world, int *n);
+/* Warns about media in objects that have no inside (a triangle, a mesh, a disc). */
+void lower_media_warn_open(const scene *s);
 /* A density { }'s material (its pigment: the density) in lt->subs, placed by to_world. */
 int lower_texture_density(lower_textures *lt, const scene *s, int pattern, const float rgb[3],
                           const xform *to_world);

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 
 #include "lower.h"
+#include "shape.h"
 
 static void *grow_media(void *p, int *cap, size_t size)
 {
@@ -105,4 +106,14 @@ int lower_media(lower_textures *lt, const scene *s, int head, const xform *to_wo
 		lt->media[first + --k] = lower_one_media(lt, s, &s->media[i], to_world);
 	lt->media_at[head - 1] = first;
 	return first;
+}
+
+void lower_media_warn_open(const scene *s)
+{
+	for (int i = 0; i < s->n_objects; i++) {
+		const scene_object *o = &s->objects[i];
+		if (o->material.media && !shape_of(o)->inside && !o->csg)
+			diag_warning(o->loc, "media in a %s, which has no inside: as in POV-Ray, a ray that passes "
+			             "through it carries them to the next surface it meets", shape_of(o)->name);
+	}
 }
