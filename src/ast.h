@@ -49,6 +49,7 @@ enum kw_class {
 	X(MEDIA, "media", BLOCK) \
 	X(SCATTERING, "scattering", BLOCK) \
 	X(DENSITY, "density", BLOCK) \
+	X(DENSITY_MAP, "density_map", BLOCK) \
 	X(MERGE, "merge", BLOCK) \
 	X(MESH, "mesh", BLOCK) \
 	X(MESH2, "mesh2", BLOCK) \

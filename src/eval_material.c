@@ -168,7 +168,7 @@ static int entry_color(struct eval *e, const ast_node *at, value *v, int map_kw,
                        int *pigment)
 {
 	*pigment = -1;
-	if (map_kw == KW_COLOR_MAP || map_kw == KW_COLOUR_MAP) {
+	if (map_kw == KW_COLOR_MAP || map_kw == KW_COLOUR_MAP || map_kw == KW_DENSITY_MAP) {
 		if (!eval_is_numeric(v->kind)) {
 			eval_error(e, at->loc, "expected a colour in a colour_map entry, found %s", eval_kind_name(v->kind));
 			return -1;
@@ -625,7 +625,7 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	if (AST_IS_EXPRESSION(item->kind))
 		return pigment_value(e, item, p, m);
 	if (item->kind == AST_BLOCK && (item->kw == KW_COLOR_MAP || item->kw == KW_COLOUR_MAP ||
-	                                item->kw == KW_PIGMENT_MAP)) {
+	                                item->kw == KW_PIGMENT_MAP || item->kw == KW_DENSITY_MAP)) {
 		if (!p->at)
 			eval_warning(e, item->loc, "a %s without a pattern is ignored", ast_keyword_name(item->kw));
 		return p->at ? map_into(e, item, p) : 0;

@@ -27,7 +27,7 @@ const char *eval_pov_word(const char *name)
 	};
 	static const char *const others[] = {
 		"albedo", "always_sample", "area_illumination", "brightness", "bump_map", "charset",
-		"control0", "control1", "count", "density_map", "error_bound",
+		"control0", "control1", "count", "error_bound",
 		"exterior", "function", "gray_threshold", "hf_gray_16", "image_map", "interior_texture", "irid",
 		"irid_wavelength", "low_error_factor", "material_map", "max_intersections",
 		"media_interaction", "metric", "minimum_reuse", "mm_per_unit", "nearest_count", "no_radiosity",
