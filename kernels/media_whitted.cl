@@ -209,8 +209,8 @@ inline float3 media_refine(const scene_data *sc, const media_list *l, media_stac
  * the interval's start (3.7 leaves the last stretch unsampled: its images
  * show it), each sub-interval attenuated by those before it. */
 inline void media_interval3(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float s0,
-                            float ds, const media_spans *lit, global const dev_media *im, float thr, float3 *te, float3 *od,
-                            uint *rnd)
+                            float ds, const media_spans *lit, global const dev_media *im, float thr, float3 *te,
+                            float3 *od, uint *rnd)
 {
 	int sub = max(2, min(im->min_samples, 4096) / 2 + 1);
 	float dd = 1.0f / (float)(sub + 1), n = 1.0f / (float)sub, jit = im->sampling.x;
@@ -239,7 +239,8 @@ inline void media_interval3(const scene_data *sc, const media_list *l, media_sta
  * within their strata by jitter; method 1: anywhere in the interval), each
  * attenuated from the interval's start as POV-Ray's regular sampling does. */
 inline void media_interval12(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float s0,
-                             float ds, const media_spans *lit, global const dev_media *im, float3 *te, float3 *od, uint *rnd)
+                             float ds, const media_spans *lit, global const dev_media *im, float3 *te, float3 *od,
+                             uint *rnd)
 {
 	int n = max(1, im->min_samples);
 	float3 sum_te = (float3)(0.0f), sum_od = (float3)(0.0f);

@@ -332,6 +332,7 @@ int eval_media_statement(struct eval *e, const ast_node *b);
 int eval_media_value(struct eval *e, const ast_node *b, value *out);
 /* A media's density { } (eval_material.c: it is read as a pigment). */
 int eval_media_density(struct eval *e, const ast_node *b, scene_media *md);
+int eval_density_value(struct eval *e, const ast_node *b, value *out);
 int eval_light(struct eval *e, const ast_node *b, value *out);
 int eval_scene_statement(struct eval *e, const ast_node *b);
 int eval_default(struct eval *e, const ast_node *d);

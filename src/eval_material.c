@@ -168,7 +168,7 @@ static int entry_color(struct eval *e, const ast_node *at, value *v, int map_kw,
                        int *pigment)
 {
 	*pigment = -1;
-	if (map_kw == KW_COLOR_MAP || map_kw == KW_COLOUR_MAP || map_kw == KW_DENSITY_MAP) {
+	if (map_kw == KW_COLOR_MAP || map_kw == KW_COLOUR_MAP) {
 		if (!eval_is_numeric(v->kind)) {
 			eval_error(e, at->loc, "expected a colour in a colour_map entry, found %s", eval_kind_name(v->kind));
 			return -1;
@@ -176,7 +176,7 @@ static int entry_color(struct eval *e, const ast_node *at, value *v, int map_kw,
 		eval_widen(v, 5, c);
 		return 0;
 	}
-	val_kind want = map_kw == KW_PIGMENT_MAP ? V_PIGMENT : V_TEXTURE;
+	val_kind want = map_kw == KW_PIGMENT_MAP || map_kw == KW_DENSITY_MAP ? V_PIGMENT : V_TEXTURE;
 	if (v->kind != want && !(want == V_PIGMENT && eval_is_numeric(v->kind))) {
 		eval_error(e, at->loc, "expected %s in a %s entry, found %s", eval_kind_name(want),
 		           ast_keyword_name(map_kw), eval_kind_name(v->kind));
@@ -198,7 +198,8 @@ static int entry_color(struct eval *e, const ast_node *at, value *v, int map_kw,
 	return 0;
 }
 
-/* [Value PIGMENT_BODY] of a pigment_map, [Value TEXTURE_BODY] of a texture_map:
+/* [Value PIGMENT_BODY] of a pigment_map (and of a density's density_map, whose
+ * entries are densities), [Value TEXTURE_BODY] of a texture_map:
  * the items after the value are those of a pigment { } or texture { }. */
 static int body_entry(struct eval *e, const ast_node *entry, int map_kw, struct map_build *mb)
 {
@@ -220,8 +221,9 @@ static int body_entry(struct eval *e, const ast_node *entry, int map_kw, struct 
 	}
 	if (!first)
 		mb->unordered = true;
-	ast_node body = { .kind = AST_BLOCK, .kw = map_kw == KW_PIGMENT_MAP ? KW_PIGMENT : KW_TEXTURE,
-	                  .loc = entry->kids[first]->loc, .kids = entry->kids + first, .n_kids = entry->n_kids - first };
+	int body_kw = map_kw == KW_PIGMENT_MAP || map_kw == KW_DENSITY_MAP ? KW_PIGMENT : KW_TEXTURE;
+	ast_node body = { .kind = AST_BLOCK, .kw = body_kw, .loc = entry->kids[first]->loc, .kids = entry->kids + first,
+	                  .n_kids = entry->n_kids - first };
 	value v;
 	if (eval_material_value(e, &body, &v))
 		return -1;
@@ -325,7 +327,7 @@ static int map_block(struct eval *e, const ast_node *b, value *out)
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
 		value v;
-		if (item->kind == AST_ENTRY && (b->kw == KW_PIGMENT_MAP || b->kw == KW_TEXTURE_MAP))
+		if (item->kind == AST_ENTRY && (b->kw == KW_PIGMENT_MAP || b->kw == KW_TEXTURE_MAP || b->kw == KW_DENSITY_MAP))
 			rc = body_entry(e, item, b->kw, &mb);
 		else if (item->kind == AST_ENTRY)
 			rc = map_entry(e, item, b->kw, &mb);
@@ -917,11 +919,34 @@ static int interior_block(struct eval *e, const ast_node *b, scene_material *m)
 /* density { [DENSITY_IDENTIFIER] [PATTERN] [COLOR_MAP] [MODIFIERS...] }: read as
  * a pigment is (POV-Ray's density_map is its colour map), white by default; a
  * media's densities multiply. */
+static bool density_file(const ast_node *b)
+{
+	for (int i = 0; i < b->n_kids; i++) {
+		const ast_node *k = b->kids[i];
+		if ((k->kind == AST_IDENT || k->kind == AST_BLOCK) && k->str && strcmp(k->str, "density_file") == 0)
+			return true;
+	}
+	return false;
+}
+
+/* density { ... } as a value (#declare D = density { }): a white pigment. */
+int eval_density_value(struct eval *e, const ast_node *b, value *out)
+{
+	*out = (value){ .kind = V_PIGMENT, .mat = scene_default_material() };
+	for (int k = 0; k < 3; k++)
+		out->mat.pigment[k] = 1;
+	return pigment_block(e, b, &out->mat, NULL);
+}
+
 int eval_media_density(struct eval *e, const ast_node *b, scene_media *md)
 {
 	scene_material d = scene_default_material();
 	for (int k = 0; k < 3; k++)
 		d.pigment[k] = 1;
+	if (density_file(b)) {   /* a df3 voxel file */
+		eval_warn_once(e, b->loc, "density_file", "'density_file' is not supported yet; the density is 1");
+		return 0;
+	}
 	if (pigment_block(e, b, &d, NULL))
 		return -1;
 	if (md->n_density == SCENE_MEDIA_DENSITIES) {

@@ -877,6 +877,8 @@ int eval_block_value(struct eval *e, const ast_node *b, value *out)
 		return eval_fog_value(e, b, out);
 	case KW_MEDIA:
 		return eval_media_value(e, b, out);
+	case KW_DENSITY:
+		return eval_density_value(e, b, out);
 	case KW_UNKNOWN:
 		if (strcmp(b->str, "layers") == 0)
 			return eval_material_value(e, b, out);
