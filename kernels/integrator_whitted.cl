@@ -126,7 +126,8 @@ inline float3 whitted_grid_sample(const scene_data *sc, global const dev_light *
 	float3 to = whitted_grid_point(l, s1, s2, u, v, a1, a2) - x;
 	float dist = length(to);
 	return dist > 0.0f ? whitted_shadow(sc, x, to / dist, eps, dist - eps, colour) *
-	                     fog_shadow(sc, l, x, to / dist, dist, solids) : colour;
+	                     fog_shadow(sc, l, x, to / dist, dist, solids) *
+	                     media_atmosphere_shadow(sc, l, x, to / dist, dist, solids) : colour;
 }
 
 /* An area light's shadow: POV-Ray samples the grid's corners and splits a region
@@ -255,7 +256,8 @@ inline float3 whitted_lights(const scene_data *sc, global const dev_material *f,
 				light = whitted_area_shadow(sc, l, from, dir, light, pt->eps, pt->solids);
 			else
 				light = whitted_shadow_in(sc, pt->media, from, dir, pt->eps, dist - pt->eps, light) *
-				        fog_shadow(sc, l, from, dir, dist, pt->solids);
+				        fog_shadow(sc, l, from, dir, dist, pt->solids) *
+				        media_atmosphere_shadow(sc, l, from, dir, dist, pt->solids);
 		}
 		if (fabs(light.x) <= POV_EPSILON && fabs(light.y) <= POV_EPSILON && fabs(light.z) <= POV_EPSILON)
 			continue;

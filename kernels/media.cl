@@ -232,6 +232,19 @@ inline media_stack media_around(const scene_data *sc, float3 x)
 	return s;
 }
 
+/* What the atmosphere leaves of a light_source's light on its way to x
+ * (dist along dir), in the Whitted integrator: POV-Ray dims shadow rays by the
+ * atmosphere only toward a light with media_attenuation (and media_interaction),
+ * outside solid objects, as it fogs them. */
+inline float3 media_atmosphere_shadow(const scene_data *sc, global const dev_light *l, float3 x, float3 dir, float dist,
+                                      int solids)
+{
+	if (!l->media_attenuation || l->no_media_interaction || solids > 0 || sc->p->n_atmosphere == 0)
+		return (float3)(1.0f);
+	media_list a = media_atmosphere(sc);
+	return exp(-media_optical_depth(sc, &a, x, dir, fmin(dist, MEDIA_HUGE)));
+}
+
 /* ---- what the path tracer shares with light.cl ---- */
 
 /* The media acting on a path segment: its interiors' and the atmosphere's,

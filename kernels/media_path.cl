@@ -182,7 +182,7 @@ inline float3 media_vertex_lights(const scene_data *sc, const media_list *l, med
 			if (lt->kind == LIGHT_KIND_SPOT)
 				k *= light_spot(lt, -wi);
 		}
-		if (k <= 0.0f)
+		if (k <= 0.0f || lt->no_media_interaction)
 			continue;
 		float pdf;
 		float3 f = media_scatter_eval(sc, l, x, d, wi, &pdf);

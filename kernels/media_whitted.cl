@@ -13,7 +13,7 @@
  * dimmed by the media on its way) times POV-Ray's phase function, averaged
  * over the media, times the scattering. */
 
-#define MEDIA_LIGHTS 8        /* light_sources whose lit stretch of a ray is found; the others light all of it */
+#define MEDIA_LIGHTS 64       /* light_sources whose lit stretch of a ray is found; the others light all of it */
 #define MEDIA_MAX_DISTANCE 1e7f   /* POV-Ray's MAX_DISTANCE */
 
 /* Where along a segment each light_source lights the media (POV-Ray's
@@ -91,8 +91,8 @@ inline int media_light_spans(const scene_data *sc, float3 o, float3 d, float t, 
 	for (int i = 0; i < min(sc->p->n_lights, MEDIA_LIGHTS); i++) {
 		global const dev_light *lt = &sc->lights[i];
 		float t1 = 0.0f, t2 = t;
-		bool in = true;
-		if (lt->kind == LIGHT_KIND_SPOT)
+		bool in = !lt->no_media_interaction;
+		if (in && lt->kind == LIGHT_KIND_SPOT)
 			in = media_spot_interval(lt, o, d, &t1, &t2) && t1 < t && t2 > 0.001f;
 		sp->s0[i] = in ? fmax(t1, 0.0f) : 1.0f;
 		sp->s1[i] = in ? fmin(t2, t) : 0.0f;
@@ -109,7 +109,7 @@ inline float3 media_lights(const scene_data *sc, const media_list *l, media_stac
 	float3 sum = (float3)(0.0f);
 	for (int i = 0; i < sc->p->n_lights; i++) {
 		global const dev_light *lt = &sc->lights[i];
-		if (i < MEDIA_LIGHTS && !(at >= spans->s0[i] && at <= spans->s1[i]))
+		if (lt->no_media_interaction || (i < MEDIA_LIGHTS && !(at >= spans->s0[i] && at <= spans->s1[i])))
 			continue;
 		float3 to = lt->position.xyz - x, dir;
 		float dist, k = 1.0f;
@@ -127,7 +127,8 @@ inline float3 media_lights(const scene_data *sc, const media_list *l, media_stac
 		if (k <= 0.0f || !(dist > 0.0f))
 			continue;
 		if (!lt->shadowless)
-			c = media_shadow(sc, s, x, dir, 1e-4f, dist, c);
+			c = media_shadow(sc, s, x, dir, 1e-4f, dist - 1e-3f, c) *   /* POV-Ray's SHADOW_TOLERANCE */
+			    media_atmosphere_shadow(sc, lt, x, dir, dist, 0);
 		sum += media_phase(sc, l, dot(dir, d)) * c;
 	}
 	return sum;

@@ -357,7 +357,8 @@ typedef struct {
 	float4 grid;        /* area light as POV-Ray's grid: x, y: size1, size2 (0: not an
 	                     * area light), z: adaptive level, w: 1 for orient */
 	int media_attenuation;  /* 1: fogs dim its light on the way (fog_shadow) */
-	int pad[3];
+	int no_media_interaction;  /* 1: media do not scatter its light (POV-Ray's media_interaction off) */
+	int pad[2];
 } dev_light;
 
 /* An emissive primitive, chosen for next-event estimation with probability

@@ -168,6 +168,7 @@ enum kw_class {
 	X(LEOPARD, "leopard", FLAG) \
 	X(MARBLE, "marble", FLAG) \
 	X(MEDIA_ATTENUATION, "media_attenuation", FLAG) \
+	X(MEDIA_INTERACTION, "media_interaction", FLAG) \
 	X(METALLIC, "metallic", FLAG) \
 	X(NO_IMAGE, "no_image", FLAG) \
 	X(NO_REFLECTION, "no_reflection", FLAG) \

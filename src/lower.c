@@ -653,6 +653,7 @@ static dev_light lower_light(const scene_light *l)
 		.shadowless = l->shadowless,
 		.grid = { l->area ? l->size1 : 0, l->area ? l->size2 : 0, l->adaptive, l->orient },
 		.media_attenuation = l->media_attenuation,
+		.no_media_interaction = l->no_media_interaction,
 	};
 }
 

@@ -296,6 +296,7 @@ typedef struct {
 	bool jitter, circular, orient;
 	bool shadowless;
 	bool media_attenuation;      /* fogs dim its light on the way (POV-Ray's, default off) */
+	bool no_media_interaction;   /* media_interaction off: media do not scatter its light */
 	float fade_distance, fade_power; /* 0, 0: no falloff, as in POV-Ray */
 	int looks_like;              /* first object index of its looks_like shape, or -1 */
 	src_loc loc;
