@@ -17,6 +17,7 @@
 #define DIM_EMITTER 4
 #define DIM_TEXTURE 7
 #define DIM_AREA 8
+#define DIM_MEDIA 40   /* 40: the walk's chain; 41-43 the phase; 44 on: the vertex's lights */
 
 /* The objects a ray of this bounce may not see: POV-Ray's no_image for the
  * camera's, no_reflection after a reflection. */
@@ -36,23 +37,56 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 	float last_pdf = 0.0f;   /* 0: the last bounce was a single direction, or the camera */
 	bool reflected = false;
 	int solids = p->camera_solids;   /* solid objects around the ray: no fog in them */
+	media_stack ms = media_around(sc, p->cam_location.xyz);   /* the interiors with media around the ray */
 	sc->counts[COUNT_RAYS + RAY_CAMERA]++;
 	for (int depth = 0;; depth++) {
 		traverse_hit hit = visibility_closest(sc, o, d, 0.0f, INFINITY, path_skip(depth, reflected),
 		                                      depth == 0 ? RAY_CAMERA : RAY_BOUNCE);
+		uint dim = RNG_DIMS_PER_BOUNCE * (uint)(depth + 1);
+		media_list ml = media_list_at(sc, &ms, solids);
+		media_walk walk = media_track(sc, &ml, o, d, hit.prim < 0 ? INFINITY : hit.t, &beta, &radiance, key,
+		                              dim + DIM_MEDIA);
+		float seg = walk.event ? walk.t : hit.prim < 0 ? INFINITY : hit.t;
 		if (solids == 0 && p->n_fogs > 0) {   /* the fogs' emission and absorption over the segment */
-			fog_effect fe = fog_segment(sc, o, d, hit.prim < 0 ? INFINITY : hit.t, false);
+			fog_effect fe = fog_segment(sc, o, d, seg, false);
 			radiance += beta * fe.add;
 			beta *= fe.att;
+		}
+		if (sigma.x > 0.0f || sigma.y > 0.0f || sigma.z > 0.0f)
+			beta *= exp(-sigma * fmin(seg, 1e30f));   /* Beer-Lambert inside an absorbing interior */
+		if (walk.event == 2)
+			break;
+		if (walk.event == 1) {   /* a vertex in the media: lights, then the phase function */
+			float3 x = o + walk.t * d;
+			if (depth >= p->max_depth)
+				break;
+			radiance += beta * media_vertex_lights(sc, &ml, ms, solids, x, d, key, dim + DIM_MEDIA + 4);
+			float3 u = (float3)(rng_uniform(key, dim + DIM_MEDIA + 1), rng_uniform(key, dim + DIM_MEDIA + 2),
+			                    rng_uniform(key, dim + DIM_MEDIA + 3));
+			float3 wi = media_phase_sample(sc, &ml, x, d, u);
+			float pdf;
+			float3 f = media_scatter_eval(sc, &ml, x, d, wi, &pdf);
+			if (!(pdf > 0.0f))
+				break;
+			beta *= f / pdf;
+			last_pdf = pdf;
+			reflected = false;
+			o = x;
+			d = wi;
+			if (depth + 1 >= RR_DEPTH) {
+				float q = clamp(fmax(beta.x, fmax(beta.y, beta.z)), 0.05f, 0.95f);
+				if (rng_uniform(key, dim + DIM_ROULETTE) >= q)
+					break;
+				beta /= q;
+			}
+			sc->counts[COUNT_RAYS + RAY_BOUNCE]++;
+			continue;
 		}
 		if (hit.prim < 0) {
 			radiance += beta * texture_sky(sc, d);
 			break;
 		}
-		if (sigma.x > 0.0f || sigma.y > 0.0f || sigma.z > 0.0f)
-			beta *= exp(-sigma * hit.t);   /* Beer-Lambert inside an absorbing interior */
 		shading_point sp = texture_point(sc, hit, o, d);
-		uint dim = RNG_DIMS_PER_BOUNCE * (uint)(depth + 1);
 		float3 tint = (float3)(1.0f);   /* through the layers above the chosen one */
 		pigment_colour pc = texture_choose(sc, &sp, rng_uniform(key, dim + DIM_TEXTURE), &tint);
 		beta *= tint;
@@ -73,9 +107,9 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 
 		material_lobes lobes = material_lobes_at(&m, dot(n, wo), sp.entering);
 		float3 xa = x + sp.eps * ng;   /* above the surface, on the side the ray came from */
-		radiance += beta * light_pov(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_AREA, solids);
+		radiance += beta * light_pov(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_AREA, solids, ms);
 		if (p->integrator == INTEGRATOR_PATH)
-			radiance += beta * light_emitters(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_EMITTER);
+			radiance += beta * light_emitters(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_EMITTER, ms, solids);
 
 		float3 u = (float3)(rng_uniform(key, dim + DIM_LOBE), rng_uniform(key, dim + DIM_LOBE + 1),
 		                    rng_uniform(key, dim + DIM_LOBE + 2));
@@ -96,6 +130,7 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 				solids = sp.entering ? solids + 1 : max(solids - 1, 0);
 			o = x - sp.eps * ng;
 			sigma = sp.entering ? m.absorb.xyz : (float3)(0.0f);
+			ms = media_cross(ms, &sc->materials[sp.material]);
 		} else {
 			o = xa;
 		}

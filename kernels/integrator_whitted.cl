@@ -36,12 +36,14 @@ typedef struct {
 	int level;         /* trace level when the ray is traced */
 	int kind;          /* WRAY_ */
 	int solids;        /* the solid (non-hollow) objects it is in: no fog while there is one */
+	media_stack media; /* the interiors with media it is in */
 } whitted_ray;
 
 typedef struct {
 	whitted_ray ray;
 	float3 colour;     /* the ray's colour so far */
 	float fog_t;       /* how far the ray goes through fog (INFINITY: it leaves the scene), or -1 */
+	float media_t;     /* how far it goes through its interiors' media, or -1 */
 	whitted_ray child[WHITTED_CHILDREN];
 	int n_child, next;
 } whitted_frame;
@@ -54,6 +56,7 @@ typedef struct {
 	float eps;         /* how far rays start off the surface */
 	int object;
 	int solids;        /* the solid objects around the point, for fog_shadow */
+	media_stack media; /* the interiors with media around it, for its shadow rays */
 } whitted_point;
 
 inline float whitted_max3(float3 c)
@@ -100,14 +103,31 @@ inline float3 whitted_grid_point(global const dev_light *l, int size1, int size2
 	return p;
 }
 
+/* A shadow ray: through the media of the interiors it crosses when the scene
+ * has any (POV-Ray's shadow rays carry the ray's interiors; area lights' start
+ * outside them). */
+inline float3 whitted_shadow_in(const scene_data *sc, media_stack s, float3 x, float3 l, float tmin, float tmax,
+                                float3 colour)
+{
+	if (sc->p->scene_flags & SCENE_MEDIA)
+		return media_shadow(sc, s, x, l, tmin, tmax, colour);
+	return visibility_shadow(sc, x, l, tmin, tmax, colour);
+}
+
+inline float3 whitted_shadow(const scene_data *sc, float3 x, float3 l, float tmin, float tmax, float3 colour)
+{
+	return whitted_shadow_in(sc, media_none(), x, l, tmin, tmax, colour);
+}
+
 /* The light of one grid point that reaches x. */
 inline float3 whitted_grid_sample(const scene_data *sc, global const dev_light *l, int s1, int s2, int u, int v,
                                   float3 a1, float3 a2, float3 x, float3 colour, float eps, int solids)
 {
 	float3 to = whitted_grid_point(l, s1, s2, u, v, a1, a2) - x;
 	float dist = length(to);
-	return dist > 0.0f ? visibility_shadow(sc, x, to / dist, eps, dist - eps, colour) *
-	                     fog_shadow(sc, l, x, to / dist, dist, solids) : colour;
+	return dist > 0.0f ? whitted_shadow(sc, x, to / dist, eps, dist - eps, colour) *
+	                     fog_shadow(sc, l, x, to / dist, dist, solids) *
+	                     media_atmosphere_shadow(sc, l, x, to / dist, dist, solids) : colour;
 }
 
 /* An area light's shadow: POV-Ray samples the grid's corners and splits a region
@@ -235,8 +255,9 @@ inline float3 whitted_lights(const scene_data *sc, global const dev_material *f,
 			if (l->grid.x > 0.0f)
 				light = whitted_area_shadow(sc, l, from, dir, light, pt->eps, pt->solids);
 			else
-				light = visibility_shadow(sc, from, dir, pt->eps, dist - pt->eps, light) *
-				        fog_shadow(sc, l, from, dir, dist, pt->solids);
+				light = whitted_shadow_in(sc, pt->media, from, dir, pt->eps, dist - pt->eps, light) *
+				        fog_shadow(sc, l, from, dir, dist, pt->solids) *
+				        media_atmosphere_shadow(sc, l, from, dir, dist, pt->solids);
 		}
 		if (fabs(light.x) <= POV_EPSILON && fabs(light.y) <= POV_EPSILON && fabs(light.z) <= POV_EPSILON)
 			continue;
@@ -281,9 +302,9 @@ inline float3 whitted_reflectivity(global const dev_material *f, float3 pigment,
 }
 
 inline whitted_ray whitted_child(float3 o, float3 d, float3 mult, float exponent, float weight, int level, int kind,
-                                 int solids)
+                                 int solids, media_stack media)
 {
-	whitted_ray r = { o, d, mult, exponent, weight, level, kind, solids };
+	whitted_ray r = { o, d, mult, exponent, weight, level, kind, solids, media };
 	return r;
 }
 
@@ -296,7 +317,8 @@ inline void whitted_add_child(whitted_frame *fr, whitted_ray r)
 	for (int i = 0; i < fr->n_child; i++) {
 		whitted_ray *c = &fr->child[i];
 		if (all(c->o == r.o) && all(c->d == r.d) && c->exponent == r.exponent && c->kind == r.kind &&
-		    c->level == r.level && c->solids == r.solids) {
+		    c->level == r.level && c->solids == r.solids && c->media.n == r.media.n &&
+		    (r.media.n == 0 || c->media.first[r.media.n - 1] == r.media.first[r.media.n - 1])) {
 			c->mult += r.mult;
 			c->weight = fmax(c->weight, r.weight);
 			return;
@@ -329,6 +351,7 @@ inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_poi
 	pt.eps = sp.eps;
 	pt.object = sp.object;
 	pt.solids = ray.solids;
+	pt.media = ray.media;
 	for (int mi = material, layer = 0; mi >= 0 && trans > p->classic.w; mi = sp.m->below, layer++) {
 		texture_use(sc, &sp, mi);
 		pigment_colour pc = texture_pigment(sc, &sp);
@@ -366,6 +389,7 @@ inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_poi
 	int through = ray.solids;
 	if (!(sc->objects[sp.object] & OBJECT_HOLLOW))
 		through = entering ? through + 1 : max(through - 1, 0);
+	media_stack inside = media_cross(ray.media, &sc->materials[material]);
 	if (trans > p->classic.w) {
 		float tweight = ray.weight * whitted_max3(fabs(filcol));
 		float3 att = entering ? (float3)(1.0f) : visibility_fade(sp.m, t_hit);
@@ -373,18 +397,18 @@ inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_poi
 		float3 below = sp.x - sp.eps * ng;
 		if (fabs(ratio - 1.0f) < POV_EPSILON) {
 			whitted_add_child(fr, whitted_child(below, ray.d, w * att * filcol, 1.0f, tweight, level,
-			                                    image | WRAY_CONTINUED | (ray.kind & WRAY_REFLECTED), through));
+			                                    image | WRAY_CONTINUED | (ray.kind & WRAY_REFLECTED), through, inside));
 		} else {
 			float t = 1.0f + ratio * ratio * (cos_i * cos_i - 1.0f);
 			if (t < 0.0f) {   /* total internal reflection, unfiltered */
 				tir = true;
 				float3 r = ray.d + 2.0f * cos_i * top_n;
 				whitted_add_child(fr, whitted_child(sp.x + sp.eps * ng, normalize(r), w * att, 1.0f, tweight, level,
-				                                    WRAY_REFLECTED, ray.solids));
+				                                    WRAY_REFLECTED, ray.solids, ray.media));
 			} else {
 				float3 dir = ratio * ray.d + (ratio * cos_i - sqrt(t)) * top_n;
 				whitted_add_child(fr, whitted_child(below, normalize(dir), w * att * filcol, 1.0f, tweight, level,
-				                                    image | (ray.kind & WRAY_REFLECTED), through));
+				                                    image | (ray.kind & WRAY_REFLECTED), through, inside));
 			}
 		}
 	}
@@ -393,7 +417,7 @@ inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_poi
 			continue;
 		float3 r = ray.d - 2.0f * dot(ray.d, refl_n[i]) * refl_n[i];
 		whitted_add_child(fr, whitted_child(sp.x + sp.eps * ng, normalize(r), w * refl_c[i], refl_e[i], refl_w[i],
-		                                    level, WRAY_REFLECTED, ray.solids));
+		                                    level, WRAY_REFLECTED, ray.solids, ray.media));
 	}
 }
 
@@ -404,6 +428,7 @@ inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_
 	fr.ray = ray;
 	fr.colour = (float3)(0.0f);
 	fr.fog_t = -1.0f;
+	fr.media_t = -1.0f;
 	fr.n_child = fr.next = 0;
 	global const dev_params *p = sc->p;
 	if (ray.level >= p->max_depth || ray.weight < p->classic.w)
@@ -411,8 +436,10 @@ inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_
 	int skip = ray.kind & WRAY_REFLECTED ? OBJECT_NO_REFLECTION : OBJECT_NO_IMAGE;
 	int kind = ray.level == 0 ? RAY_CAMERA : RAY_BOUNCE;
 	traverse_hit hit = visibility_closest(sc, ray.o, ray.d, 0.0f, INFINITY, skip, kind);
-	if (ray.solids == 0 && p->n_fogs > 0)
+	if (ray.solids == 0 && (p->n_fogs > 0 || p->n_atmosphere > 0))
 		fr.fog_t = hit.prim < 0 ? INFINITY : hit.t;
+	if (ray.solids == 0 && ray.media.n > 0 && hit.prim >= 0)
+		fr.media_t = hit.t;
 	if (hit.prim < 0) {
 		fr.colour = texture_sky(sc, ray.d);
 		return fr;
@@ -429,6 +456,7 @@ inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_
  * frames; a finished frame adds its colour to its parent's. */
 inline float3 whitted_radiance(const scene_data *sc, whitted_ray camera, first_hit *first)
 {
+	global const dev_params *p = sc->p;
 	whitted_frame stack[WHITTED_FRAMES];
 	int sp = 0;
 	stack[sp++] = whitted_shade(sc, camera, first);
@@ -443,7 +471,15 @@ inline float3 whitted_radiance(const scene_data *sc, whitted_ray camera, first_h
 		}
 		float3 c = top->colour;
 		whitted_ray r = top->ray;
-		if (top->fog_t >= 0.0f) {   /* the fog over the ray, after all it brought back */
+		if (top->media_t >= 0.0f) {   /* the interiors' media, then the atmosphere's and the fog */
+			media_list l = media_gather(&r.media);
+			c = media_whitted(sc, &l, r.media, r.o, r.d, top->media_t, c);
+		}
+		if (top->fog_t >= 0.0f && p->n_atmosphere > 0) {
+			media_list l = media_atmosphere(sc);
+			c = media_whitted(sc, &l, r.media, r.o, r.d, top->fog_t, c);
+		}
+		if (top->fog_t >= 0.0f && p->n_fogs > 0) {   /* the fog over the ray, after all it brought back */
 			fog_effect fe = fog_segment(sc, r.o, r.d, top->fog_t, false);
 			c = fe.add + fe.att * c;
 		}
@@ -474,6 +510,7 @@ kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p
 	uint counts[COUNT_N] = { 0 };
 	scene_data sc = { SCENE_BUFFERS(SCENE_FIELD) p, counts };
 	long4 acc = film[pixel];
+	media_stack around = media_around(&sc, p->cam_location.xyz);
 	for (int s = 0; s < p->samples_per_pass; s++) {
 		/* one ray through a fixed place of the pixel; focal blur, which needs many
 		 * rays, is the path tracer's. Where the camera makes no ray, POV-Ray's
@@ -484,7 +521,8 @@ kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p
 		float2 at = whitted_subpixel(p->sample_base + s);
 		if (camera_view(&sc, px, py, at.x, at.y, &o, &d)) {
 			d = normalize(d);
-			whitted_ray camera = whitted_child(o, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE, p->camera_solids);
+			whitted_ray camera = whitted_child(o, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE, p->camera_solids,
+			                                   around);
 			counts[COUNT_RAYS + RAY_CAMERA]++;
 			l = film_finite(whitted_radiance(&sc, camera, &first));
 		}

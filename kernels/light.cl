@@ -53,7 +53,7 @@ inline float light_spot(global const dev_light *l, float3 to_surface)
 /* The sum over all light_sources of their contribution at x (normal n, facing
  * wo); solids: the solid objects around x, for fog_shadow. */
 inline float3 light_pov(const scene_data *sc, const bsdf *m, const material_lobes *lobes,
-                        float3 x, float3 ng, float3 n, float3 wo, uint key, uint dim, int solids)
+                        float3 x, float3 ng, float3 n, float3 wo, uint key, uint dim, int solids, media_stack ms)
 {
 	float3 sum = (float3)(0.0f);
 	for (int i = 0; i < sc->p->n_lights; i++) {
@@ -85,7 +85,8 @@ inline float3 light_pov(const scene_data *sc, const bsdf *m, const material_lobe
 			continue;
 		float3 light = k * l->color.xyz;
 		if (!l->shadowless && dist > 0.0f)
-			light = visibility_shadow(sc, x, wi, 0.0f, dist, light) * fog_shadow(sc, l, x, wi, dist, solids);
+			light = media_shadow_path(sc, ms, solids, x, wi, 0.0f, dist, light, key, dim + 2 * i) *
+			        fog_shadow(sc, l, x, wi, dist, solids);
 		sum += M_PI_F * light * f;
 	}
 	return sum;
@@ -143,18 +144,15 @@ inline float light_power_heuristic(float a, float b)
 	return a * a / (a * a + b * b);
 }
 
-/* One sample of one emissive primitive, weighted against BSDF sampling. */
-inline float3 light_emitters(const scene_data *sc, const bsdf *m, const material_lobes *lobes, float3 x,
-                             float3 ng, float3 n, float3 wo, uint key, uint dim)
+/* A point pos on one emissive primitive chosen by power, seen from x along
+ * wi (the sphere's visible cap when x is outside it), or NULL. */
+inline global const dev_emitter *light_emitter_sample(const scene_data *sc, float3 x, uint key, uint dim, float3 *wi,
+                                                      float3 *pos)
 {
-	global const dev_params *p = sc->p;
 	global const dev_emitter *em = sc->emitters;
-	if (p->n_emitters == 0)
-		return (float3)(0.0f);
-	global const dev_emitter *e = &em[light_choose(em, p->n_emitters, rng_uniform(key, dim))];
+	global const dev_emitter *e = &em[light_choose(em, sc->p->n_emitters, rng_uniform(key, dim))];
 	global const dev_prim *prim = &sc->prims[e->prim];
 	float u1 = rng_uniform(key, dim + 1), u2 = rng_uniform(key, dim + 2);
-	float3 wi, pos;
 	if (prim->type == PRIM_SPHERE && dot(prim->a.xyz - x, prim->a.xyz - x) > prim->a.w * prim->a.w * 1.0001f) {
 		float3 axis = prim->a.xyz - x;
 		float d2 = dot(axis, axis), r = prim->a.w;
@@ -162,20 +160,36 @@ inline float3 light_emitters(const scene_data *sc, const bsdf *m, const material
 		float cos_t = 1.0f - u1 * (1.0f - cos_max), sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t));
 		float3 t, b, w = axis * rsqrt(d2);
 		material_basis(w, &t, &b);
-		wi = normalize(sin_t * cos(2.0f * M_PI_F * u2) * t + sin_t * sin(2.0f * M_PI_F * u2) * b + cos_t * w);
-		float th = sphere_intersect(x, wi, sc->prims, prim, 0.0f, INFINITY);
+		*wi = normalize(sin_t * cos(2.0f * M_PI_F * u2) * t + sin_t * sin(2.0f * M_PI_F * u2) * b + cos_t * w);
+		float th = sphere_intersect(x, *wi, sc->prims, prim, 0.0f, INFINITY);
 		if (th == INFINITY)
-			return (float3)(0.0f);
-		pos = x + th * wi;
+			return 0;
+		*pos = x + th * *wi;
 	} else if (prim->type == PRIM_SPHERE) {
 		float z = 1.0f - 2.0f * u1, s = sqrt(fmax(0.0f, 1.0f - z * z)), phi = 2.0f * M_PI_F * u2;
-		pos = prim->a.xyz + prim->a.w * (float3)(s * cos(phi), s * sin(phi), z);
-		wi = normalize(pos - x);
+		*pos = prim->a.xyz + prim->a.w * (float3)(s * cos(phi), s * sin(phi), z);
+		*wi = normalize(*pos - x);
 	} else {
 		float su = sqrt(u1);
-		pos = (1.0f - su) * prim->a.xyz + su * (1.0f - u2) * prim->b.xyz + su * u2 * prim->c.xyz;
-		wi = normalize(pos - x);
+		*pos = (1.0f - su) * prim->a.xyz + su * (1.0f - u2) * prim->b.xyz + su * u2 * prim->c.xyz;
+		*wi = normalize(*pos - x);
 	}
+	return e;
+}
+
+/* One sample of one emissive primitive, weighted against BSDF sampling. */
+inline float3 light_emitters(const scene_data *sc, const bsdf *m, const material_lobes *lobes, float3 x,
+                             float3 ng, float3 n, float3 wo, uint key, uint dim, media_stack ms, int solids)
+{
+	global const dev_params *p = sc->p;
+	global const dev_emitter *em = sc->emitters;
+	if (p->n_emitters == 0)
+		return (float3)(0.0f);
+	float3 wi, pos;
+	global const dev_emitter *e = light_emitter_sample(sc, x, key, dim, &wi, &pos);
+	if (!e)
+		return (float3)(0.0f);
+	global const dev_prim *prim = &sc->prims[e->prim];
 	float dist = length(pos - x);
 	float pdf_light = light_pdf(em, prim, x, wi, dist), pdf_bsdf;
 	float3 f = material_eval(m, lobes, n, wo, wi, &pdf_bsdf);
@@ -186,5 +200,7 @@ inline float3 light_emitters(const scene_data *sc, const bsdf *m, const material
 	 * that cross transparent ones find the emitter by BSDF sampling */
 	if (traverse_any(sc->nodes, sc->prims, p->n_prims, p->n_planes, x, wi, 0.0f, dist * (1.0f - 1e-4f), sc->counts))
 		return (float3)(0.0f);
-	return light_emitted(sc, e->prim, pos, wi, dist) * f * (light_power_heuristic(pdf_light, pdf_bsdf) / pdf_light);
+	media_list l = media_list_at(sc, &ms, solids);   /* through the media the point is in, unbroken */
+	float3 tr = media_transmittance(sc, &l, x, wi, dist, key, dim + 3);
+	return tr * light_emitted(sc, e->prim, pos, wi, dist) * f * (light_power_heuristic(pdf_light, pdf_bsdf) / pdf_light);
 }

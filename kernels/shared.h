@@ -168,6 +168,9 @@ typedef struct {
 	int flags;             /* MATERIAL_ */
 	int normal;            /* the normal's dev_pattern (pattern_perturb), or -1: none */
 	int below;             /* a layered texture's next layer down, or -1 */
+	int media, n_media;    /* the interior's dev_media records (media, media + 1, ...); the
+	                        * first also names the interior for the rays inside it */
+	int pad[2];
 } dev_material;
 /* MATERIAL_LOCAL: a mesh's own texture, whose patterns see the mesh's space;
  * MATERIAL_ROUGH: roughness was given, so the path tracer's reflection is rough;
@@ -329,6 +332,28 @@ typedef struct {
 	int octaves, type, turb_on;
 } dev_fog;
 
+/* A media { }, 128 bytes: POV-Ray 3.7's participating media (kernels/media.cl).
+ * Coefficients are per unit of length, times the density at the point: the
+ * product of the colours of densities (each a dev_material whose pigment is
+ * the density { }, placed as the interior, -1: none) and density_rgb.
+ * Extinction is absorption + scattering * scattering.w (POV-Ray's extinction).
+ * type: MEDIA_ISOTROPIC ... MEDIA_HG, POV-Ray's scattering types 1 to 5.
+ * Sampling (the Whitted integrator): method 1, 2 or 3, intervals, samples, and
+ * for method 3 aa_level, sampling.y aa_threshold and sampling.x jitter. */
+enum { MEDIA_ISOTROPIC = 1, MEDIA_MIE_HAZY, MEDIA_MIE_MURKY, MEDIA_RAYLEIGH, MEDIA_HG };
+#define MEDIA_DENSITIES 4
+typedef struct {
+	float4 absorption;   /* rgb; w: Henyey-Greenstein's eccentricity */
+	float4 emission;     /* rgb; w: the largest density (the path tracer's majorant is
+	                      * w * the largest channel of absorption + scattering) */
+	float4 scattering;   /* rgb; w: scattering's share of the extinction */
+	float4 density_rgb;  /* rgb: the constant densities' product; w: 1 */
+	float4 sampling;     /* x: jitter, y: aa_threshold, z: ratio */
+	int method, intervals, min_samples, max_samples;
+	int aa_level, type, pad[2];
+	int density[MEDIA_DENSITIES];
+} dev_media;
+
 /* A light_source, 128 bytes. POV-Ray's lights are invisible and do not fall off
  * with distance unless fade_power is given; every vertex samples all of them. */
 enum { LIGHT_KIND_POINT = 0, LIGHT_KIND_SPOT = 1, LIGHT_KIND_PARALLEL = 2 };
@@ -343,7 +368,8 @@ typedef struct {
 	float4 grid;        /* area light as POV-Ray's grid: x, y: size1, size2 (0: not an
 	                     * area light), z: adaptive level, w: 1 for orient */
 	int media_attenuation;  /* 1: fogs dim its light on the way (fog_shadow) */
-	int pad[3];
+	int no_media_interaction;  /* 1: media do not scatter its light (POV-Ray's media_interaction off) */
+	int pad[2];
 } dev_light;
 
 /* An emissive primitive, chosen for next-event estimation with probability
@@ -394,13 +420,15 @@ typedef struct {
 	int n_fogs;         /* dev_fog records */
 	int camera_solids;  /* the solid (non-hollow) objects around the camera: POV-Ray fogs no
 	                     * camera ray inside one */
-	int pad[3];
+	int atmosphere, n_atmosphere;  /* the scene-level media's dev_media records */
+	int pad;
 } dev_params;
 /* SCENE_SHADOWS_PASS: some surface lets shadow rays through (no_shadow, filter,
  * transmit), so shadow rays look at what they meet instead of stopping at the first.
  * SCENE_SKY_LEGACY: the sky_sphere blends its layers as POV-Ray before 3.7 (a
- * scene whose #version is older). */
-enum { SCENE_SHADOWS_PASS = 1, SCENE_SKY_LEGACY = 2 };
+ * scene whose #version is older).
+ * SCENE_MEDIA: some interior has media, so shadow rays follow the interiors they cross. */
+enum { SCENE_SHADOWS_PASS = 1, SCENE_SKY_LEGACY = 2, SCENE_MEDIA = 4 };
 
 /* The scene's buffers, read by every kernel that renders, in the kernels'
  * argument order (after them: params, film, counters, aov). One list for the
@@ -420,7 +448,8 @@ enum { SCENE_SHADOWS_PASS = 1, SCENE_SKY_LEGACY = 2 };
 	X(dev_image, images) \
 	X(float4, texels) \
 	X(dev_fog, fogs) \
-	X(float4, camera_rays)
+	X(float4, camera_rays) \
+	X(dev_media, media)
 
 /* The aov buffer, when asked for: three float4 a pixel, sums over its samples.
  * [0] rgb: albedo of the first surface; w: samples that hit a surface

@@ -46,6 +46,10 @@ enum kw_class {
 	X(LIGHT_SOURCE, "light_source", BLOCK) \
 	X(LOOKS_LIKE, "looks_like", BLOCK) \
 	X(MATERIAL, "material", BLOCK) \
+	X(MEDIA, "media", BLOCK) \
+	X(SCATTERING, "scattering", BLOCK) \
+	X(DENSITY, "density", BLOCK) \
+	X(DENSITY_MAP, "density_map", BLOCK) \
 	X(MERGE, "merge", BLOCK) \
 	X(MESH, "mesh", BLOCK) \
 	X(MESH2, "mesh2", BLOCK) \
@@ -93,6 +97,17 @@ enum kw_class {
 	X(FALLOFF, "falloff", ARG) \
 	X(FOCAL_POINT, "focal_point", ARG) \
 	X(FOG_ALT, "fog_alt", ARG) \
+	X(ABSORPTION, "absorption", ARG) \
+	X(INTERVALS, "intervals", ARG) \
+	X(SAMPLES, "samples", ARG) \
+	X(METHOD, "method", ARG) \
+	X(CONFIDENCE, "confidence", ARG) \
+	X(VARIANCE, "variance", ARG) \
+	X(RATIO, "ratio", ARG) \
+	X(AA_LEVEL, "aa_level", ARG) \
+	X(AA_THRESHOLD, "aa_threshold", ARG) \
+	X(ECCENTRICITY, "eccentricity", ARG) \
+	X(EXTINCTION, "extinction", ARG) \
 	X(FOG_OFFSET, "fog_offset", ARG) \
 	X(FOG_TYPE, "fog_type", ARG) \
 	X(FREQUENCY, "frequency", ARG) \
@@ -153,6 +168,7 @@ enum kw_class {
 	X(LEOPARD, "leopard", FLAG) \
 	X(MARBLE, "marble", FLAG) \
 	X(MEDIA_ATTENUATION, "media_attenuation", FLAG) \
+	X(MEDIA_INTERACTION, "media_interaction", FLAG) \
 	X(METALLIC, "metallic", FLAG) \
 	X(NO_IMAGE, "no_image", FLAG) \
 	X(NO_REFLECTION, "no_reflection", FLAG) \

@@ -12,7 +12,7 @@ typedef enum { /* ORDER: eval_kind_name */
 	V_NONE,      /* an array element not set yet */
 	V_FLOAT, V_VECTOR, V_COLOR, V_STRING,
 	V_OBJECT, V_PIGMENT, V_FINISH, V_TEXTURE, V_NORMAL, V_INTERIOR, V_MATERIAL,
-	V_COLOR_MAP, V_TRANSFORM, V_CAMERA, V_ARRAY, V_MACRO, V_FUNCTION, V_SPLINE, V_FOG, V_OTHER,
+	V_COLOR_MAP, V_TRANSFORM, V_CAMERA, V_ARRAY, V_MACRO, V_FUNCTION, V_SPLINE, V_FOG, V_MEDIA, V_OTHER,
 } val_kind;
 
 /* A light and the looks_like objects that go with it. */
@@ -65,6 +65,7 @@ typedef struct value {
 	xform xf;                /* V_TRANSFORM */
 	scene_camera *cam;       /* V_CAMERA */
 	scene_fog *fog;          /* V_FOG */
+	int media;               /* V_MEDIA: its index in scene.media */
 	struct array *arr;       /* V_ARRAY */
 	const ast_node *node;    /* V_MACRO, V_FUNCTION: the definition */
 } value;
@@ -344,6 +345,14 @@ int eval_camera_mesh(struct eval *e, const ast_node *b, scene_camera *c);
 int eval_fog(struct eval *e, const ast_node *b, scene_fog *out);
 int eval_fog_statement(struct eval *e, const ast_node *b);
 int eval_fog_value(struct eval *e, const ast_node *b, value *out);
+/* media { } (eval_media.c): in an interior (appended to m's media), at the
+ * scene's level (the atmosphere), and as a value */
+int eval_media_interior(struct eval *e, const ast_node *b, scene_material *m);
+int eval_media_statement(struct eval *e, const ast_node *b);
+int eval_media_value(struct eval *e, const ast_node *b, value *out);
+/* A media's density { } (eval_material.c: it is read as a pigment). */
+int eval_media_density(struct eval *e, const ast_node *b, scene_media *md);
+int eval_density_value(struct eval *e, const ast_node *b, value *out);
 int eval_light(struct eval *e, const ast_node *b, value *out);
 int eval_scene_statement(struct eval *e, const ast_node *b);
 int eval_default(struct eval *e, const ast_node *d);

@@ -50,6 +50,7 @@ static void copy_interior(scene_material *d, const scene_material *s)
 	d->fade_distance = s->fade_distance;
 	d->fade_power = s->fade_power;
 	memcpy(d->fade_color, s->fade_color, sizeof d->fade_color);
+	d->media = s->media;
 }
 
 void eval_apply_value(const value *v, scene_material *m)
@@ -175,7 +176,7 @@ static int entry_color(struct eval *e, const ast_node *at, value *v, int map_kw,
 		eval_widen(v, 5, c);
 		return 0;
 	}
-	val_kind want = map_kw == KW_PIGMENT_MAP ? V_PIGMENT : V_TEXTURE;
+	val_kind want = map_kw == KW_PIGMENT_MAP || map_kw == KW_DENSITY_MAP ? V_PIGMENT : V_TEXTURE;
 	if (v->kind != want && !(want == V_PIGMENT && eval_is_numeric(v->kind))) {
 		eval_error(e, at->loc, "expected %s in a %s entry, found %s", eval_kind_name(want),
 		           ast_keyword_name(map_kw), eval_kind_name(v->kind));
@@ -197,7 +198,8 @@ static int entry_color(struct eval *e, const ast_node *at, value *v, int map_kw,
 	return 0;
 }
 
-/* [Value PIGMENT_BODY] of a pigment_map, [Value TEXTURE_BODY] of a texture_map:
+/* [Value PIGMENT_BODY] of a pigment_map (and of a density's density_map, whose
+ * entries are densities), [Value TEXTURE_BODY] of a texture_map:
  * the items after the value are those of a pigment { } or texture { }. */
 static int body_entry(struct eval *e, const ast_node *entry, int map_kw, struct map_build *mb)
 {
@@ -219,8 +221,9 @@ static int body_entry(struct eval *e, const ast_node *entry, int map_kw, struct 
 	}
 	if (!first)
 		mb->unordered = true;
-	ast_node body = { .kind = AST_BLOCK, .kw = map_kw == KW_PIGMENT_MAP ? KW_PIGMENT : KW_TEXTURE,
-	                  .loc = entry->kids[first]->loc, .kids = entry->kids + first, .n_kids = entry->n_kids - first };
+	int body_kw = map_kw == KW_PIGMENT_MAP || map_kw == KW_DENSITY_MAP ? KW_PIGMENT : KW_TEXTURE;
+	ast_node body = { .kind = AST_BLOCK, .kw = body_kw, .loc = entry->kids[first]->loc, .kids = entry->kids + first,
+	                  .n_kids = entry->n_kids - first };
 	value v;
 	if (eval_material_value(e, &body, &v))
 		return -1;
@@ -324,7 +327,7 @@ static int map_block(struct eval *e, const ast_node *b, value *out)
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
 		value v;
-		if (item->kind == AST_ENTRY && (b->kw == KW_PIGMENT_MAP || b->kw == KW_TEXTURE_MAP))
+		if (item->kind == AST_ENTRY && (b->kw == KW_PIGMENT_MAP || b->kw == KW_TEXTURE_MAP || b->kw == KW_DENSITY_MAP))
 			rc = body_entry(e, item, b->kw, &mb);
 		else if (item->kind == AST_ENTRY)
 			rc = map_entry(e, item, b->kw, &mb);
@@ -646,7 +649,7 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	if (AST_IS_EXPRESSION(item->kind))
 		return pigment_value(e, item, p, m);
 	if (item->kind == AST_BLOCK && (item->kw == KW_COLOR_MAP || item->kw == KW_COLOUR_MAP ||
-	                                item->kw == KW_PIGMENT_MAP)) {
+	                                item->kw == KW_PIGMENT_MAP || item->kw == KW_DENSITY_MAP)) {
 		if (!p->at)
 			eval_warning(e, item->loc, "a %s without a pattern is ignored", ast_keyword_name(item->kw));
 		if (p->kind == PATTERN_AVERAGE && item->kw != KW_PIGMENT_MAP) {
@@ -904,7 +907,7 @@ static int finish_block(struct eval *e, const ast_node *b, scene_material *m)
 /* ---- interior ---- */
 
 /* interior { [INTERIOR_IDENTIFIER] [ior F] [dispersion F] [fade_distance F]
- *            [fade_power F] [fade_color COLOR] [caustics F] } */
+ *            [fade_power F] [fade_color COLOR] [caustics F] [media { }...] } */
 static int interior_item(struct eval *e, struct cursor *c, const ast_node *item, scene_material *m, bool first)
 {
 	int rc = eval_skip_pov_word(e, c, item);
@@ -917,6 +920,8 @@ static int interior_item(struct eval *e, struct cursor *c, const ast_node *item,
 		copy_interior(m, &v.mat);
 		return 0;
 	}
+	if (item->kind == AST_BLOCK && item->kw == KW_MEDIA)
+		return eval_media_interior(e, item, m);
 	double f;
 	switch (item->kind == AST_ARG ? item->kw : -1) {
 	case KW_IOR: return float_arg(e, item->kids[0], &m->ior);
@@ -940,6 +945,55 @@ static int interior_item(struct eval *e, struct cursor *c, const ast_node *item,
 static int interior_block(struct eval *e, const ast_node *b, scene_material *m)
 {
 	return material_items(e, b, m, interior_item);
+}
+
+/* density { [DENSITY_IDENTIFIER] [PATTERN] [COLOR_MAP] [MODIFIERS...] }: read as
+ * a pigment is (POV-Ray's density_map is its colour map), white by default; a
+ * media's densities multiply. */
+static bool density_file(const ast_node *b)
+{
+	for (int i = 0; i < b->n_kids; i++) {
+		const ast_node *k = b->kids[i];
+		if ((k->kind == AST_IDENT || k->kind == AST_BLOCK) && k->str && strcmp(k->str, "density_file") == 0)
+			return true;
+	}
+	return false;
+}
+
+/* density { ... } as a value (#declare D = density { }): a white pigment. */
+int eval_density_value(struct eval *e, const ast_node *b, value *out)
+{
+	*out = (value){ .kind = V_PIGMENT, .mat = scene_default_material() };
+	for (int k = 0; k < 3; k++)
+		out->mat.pigment[k] = 1;
+	return pigment_block(e, b, &out->mat, NULL);
+}
+
+int eval_media_density(struct eval *e, const ast_node *b, scene_media *md)
+{
+	scene_material d = scene_default_material();
+	for (int k = 0; k < 3; k++)
+		d.pigment[k] = 1;
+	if (density_file(b)) {   /* a df3 voxel file */
+		eval_warn_once(e, b->loc, "density_file", "'density_file' is not supported yet; the density is 1");
+		return 0;
+	}
+	if (pigment_block(e, b, &d, NULL))
+		return -1;
+	if (md->n_density == SCENE_MEDIA_DENSITIES) {
+		eval_error(e, b->loc, "a media holds at most %d densities", SCENE_MEDIA_DENSITIES);
+		return -1;
+	}
+	for (int k = 0; k < 3; k++)
+		if (d.pattern < 0 && !(d.pigment[k] >= 0)) {   /* negative extinction makes light out of nothing */
+			eval_error(e, b->loc, "a density must not be negative (%g)", d.pigment[k]);
+			return -1;
+		}
+	md->density[md->n_density] = d.pattern;
+	for (int k = 0; k < 3; k++)
+		md->density_rgb[md->n_density][k] = d.pigment[k];
+	md->n_density++;
+	return 0;
 }
 
 /* ---- texture and material ---- */

@@ -26,7 +26,7 @@ const char *eval_kind_name(val_kind k)
 	static const char *const names[] = { /* ORDER val_kind */
 		"nothing", "a float", "a vector", "a colour", "a string", "an object", "a pigment",
 		"a finish", "a texture", "a normal", "an interior", "a material", "a map",
-		"a transform", "a camera", "an array", "a macro", "a function", "a spline", "a fog",
+		"a transform", "a camera", "an array", "a macro", "a function", "a spline", "a fog", "a media",
 		"something else",
 	};
 	return names[k];

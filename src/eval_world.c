@@ -20,20 +20,20 @@ const char *eval_pov_word(const char *name)
 		"parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
 		"sphere_sweep", "text",
 	};
-	static const char *const statements[] = { "rainbow", "media" };
+	static const char *const statements[] = { "rainbow" };
 	static const char *const patterns[] = {
 		"aoi", "average", "density_file", "image_pattern", "julia", "magnet", "mandel", "pavement",
 		"pigment_pattern", "slope", "tiling",
 	};
 	static const char *const others[] = {
 		"albedo", "always_sample", "area_illumination", "brightness", "bump_map", "charset",
-		"confidence", "control0", "control1", "count", "density", "density_map", "error_bound",
+		"control0", "control1", "count", "error_bound",
 		"exterior", "function", "gray_threshold", "hf_gray_16", "image_map", "interior_texture", "irid",
 		"irid_wavelength", "low_error_factor", "material_map", "max_intersections",
-		"media_interaction", "metric", "minimum_reuse", "mm_per_unit", "nearest_count", "no_radiosity",
+		"metric", "minimum_reuse", "mm_per_unit", "nearest_count", "no_radiosity",
 		"noise_generator", "number_of_waves", "pattern", "photons", "pretrace_end", "pretrace_start",
 		"projected_through", "quick_color", "quick_colour", "radiosity", "recursion_limit", "slope_map",
-		"solid", "spline", "subsurface", "tiles", "variance", "warp",
+		"solid", "spline", "subsurface", "tiles", "warp",
 	};
 	for (size_t i = 0; i < sizeof objects / sizeof *objects; i++)
 		if (strcmp(objects[i], name) == 0)
@@ -540,15 +540,18 @@ static int light_flag(struct eval *e, const ast_node *item, scene_light *l)
 	}
 }
 
-/* media_attenuation [Bool] */
-static int media_attenuation(struct eval *e, struct cursor *c, scene_light *l)
+/* media_attenuation [Bool], media_interaction [Bool] */
+static int media_attenuation(struct eval *e, struct cursor *c, const ast_node *item, scene_light *l)
 {
 	int err = 0;
 	double on = 1;
 	const ast_node *arg = eval_next_optional(c, &err);
 	if (err || (arg && eval_expect_float(e, arg, &on)))
 		return -1;
-	l->media_attenuation = eval_truth(on);
+	if (item->kw == KW_MEDIA_INTERACTION)
+		l->no_media_interaction = !eval_truth(on);
+	else
+		l->media_attenuation = eval_truth(on);
 	return 0;
 }
 
@@ -564,8 +567,8 @@ static int light_item(struct eval *e, struct cursor *c, const ast_node *item, st
 		return rc;
 	if (item->kind == AST_FLAG && (rc = light_flag(e, item, &l->light)) <= 0)
 		return rc;
-	if (item->kind == AST_FLAG && item->kw == KW_MEDIA_ATTENUATION)
-		return media_attenuation(e, c, &l->light);
+	if (item->kind == AST_FLAG && (item->kw == KW_MEDIA_ATTENUATION || item->kw == KW_MEDIA_INTERACTION))
+		return media_attenuation(e, c, item, &l->light);
 	if (item->kind == AST_BLOCK && item->kw == KW_LOOKS_LIKE)
 		return eval_looks_like(e, item, l->light.position, l);
 	if ((rc = eval_skip_pov_word(e, c, item)) <= 0)
@@ -580,7 +583,8 @@ static int light_item(struct eval *e, struct cursor *c, const ast_node *item, st
 
 /* light_source { <Location>, COLOR [spotlight] [parallel] [point_at <P>] [radius F]
  *   [falloff F] [tightness F] [area_light <A1>, <A2>, N1, N2] [adaptive N] [jitter]
- *   [circular] [orient] [shadowless] [media_attenuation [Bool]] [fade_distance F] [fade_power F]
+ *   [circular] [orient] [shadowless] [media_attenuation [Bool]] [media_interaction [Bool]]
+ *   [fade_distance F] [fade_power F]
  *   [looks_like { OBJECT }] [TRANSFORMATIONS...] } */
 int eval_light(struct eval *e, const ast_node *b, value *out)
 {
@@ -923,6 +927,10 @@ int eval_block_value(struct eval *e, const ast_node *b, value *out)
 		return sky_sphere(e, b, out);
 	case KW_FOG:
 		return eval_fog_value(e, b, out);
+	case KW_MEDIA:
+		return eval_media_value(e, b, out);
+	case KW_DENSITY:
+		return eval_density_value(e, b, out);
 	case KW_UNKNOWN:
 		if (strcmp(b->str, "layers") == 0)
 			return eval_material_value(e, b, out);
@@ -959,6 +967,7 @@ static int statement_block(struct eval *e, const ast_node *b)
 	case KW_BACKGROUND: return background(e, b);
 	case KW_GLOBAL_SETTINGS: return global_settings(e, b);
 	case KW_FOG: return eval_fog_statement(e, b);
+	case KW_MEDIA: return eval_media_statement(e, b);
 	case KW_SKY_SPHERE:
 		if (sky_sphere(e, b, &v))
 			return -1;

@@ -20,7 +20,7 @@ _Static_assert(sizeof(bvh_wnode) == 64, "bvh_wnode is 64 bytes");
 _Static_assert(offsetof(bvh_wnode, qlo_x) == 16 && offsetof(bvh_wnode, child) == 40, "bvh_wnode layout");
 _Static_assert(sizeof(dev_prim) == 64, "dev_prim is 64 bytes");
 _Static_assert(offsetof(dev_prim, type) == 48, "dev_prim ints at 48");
-_Static_assert(sizeof(dev_material) == 160 && offsetof(dev_material, pattern) == 144, "dev_material layout");
+_Static_assert(sizeof(dev_material) == 176 && offsetof(dev_material, pattern) == 144, "dev_material layout");
 _Static_assert(sizeof(dev_light) == 128, "dev_light is 128 bytes");
 _Static_assert(offsetof(dev_light, cos_falloff) == 80, "dev_light scalars at 80");
 _Static_assert(sizeof(dev_warp) == 64, "dev_warp is 64 bytes");
@@ -30,6 +30,7 @@ _Static_assert(sizeof(dev_image) == 16, "dev_image is 16 bytes");
 _Static_assert(sizeof(dev_emitter) == 16, "dev_emitter is 16 bytes");
 _Static_assert(sizeof(dev_params) == 192, "dev_params is 192 bytes");
 _Static_assert(sizeof(dev_fog) == 80 && offsetof(dev_fog, distance) == 48, "dev_fog layout");
+_Static_assert(sizeof(dev_media) == 128 && offsetof(dev_media, method) == 80, "dev_media layout");
 _Static_assert((int)OBJECT_NO_SHADOW == (int)OBJ_NO_SHADOW && (int)OBJECT_NO_IMAGE == (int)OBJ_NO_IMAGE &&
                (int)OBJECT_NO_REFLECTION == (int)OBJ_NO_REFLECTION && (int)OBJECT_HOLLOW == (int)OBJ_HOLLOW &&
                (int)OBJECT_DOUBLE_ILLUMINATE == (int)OBJ_DOUBLE_ILLUMINATE,
@@ -659,6 +660,7 @@ static dev_light lower_light(const scene_light *l)
 		.shadowless = l->shadowless,
 		.grid = { l->area ? l->size1 : 0, l->area ? l->size2 : 0, l->adaptive, l->orient },
 		.media_attenuation = l->media_attenuation,
+		.no_media_interaction = l->no_media_interaction,
 	};
 }
 
@@ -965,6 +967,8 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 		out->params.sky = i == 0 ? m : out->params.sky;
 		out->params.sky_layers = i + 1;
 	}
+	xform world = scene_xform_identity();
+	int n_atmosphere, atmosphere = lower_media(&lw.textures, s, s->atmosphere, &world, &n_atmosphere);
 	lower_textures_append(&lw.textures, &lw.mats, &lw.n_mats);
 	out->materials = lw.mats;
 	out->n_materials = lw.n_mats;
@@ -976,14 +980,18 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	int shadows_pass = lw.textures.see_through;
 	for (int i = 0; i < s->n_objects; i++)
 		shadows_pass |= (s->objects[i].flags & OBJ_NO_SHADOW) != 0;
-	out->params.scene_flags = (shadows_pass ? SCENE_SHADOWS_PASS : 0) | (s->sky_legacy ? SCENE_SKY_LEGACY : 0);
+	out->params.scene_flags = (shadows_pass ? SCENE_SHADOWS_PASS : 0) | (s->sky_legacy ? SCENE_SKY_LEGACY : 0) |
+	                          (lw.textures.n_media ? SCENE_MEDIA : 0);
 	out->normals = lw.normals;
 	out->n_normals = lw.n_normals;
 	if (lower_camera(s, &out->params) || lower_fogs(s, out) ||
 	    lower_camera_mesh(s, lw.opt->width, lw.opt->height, out))
 		rc = -1;
 	out->params.n_fogs = out->n_fogs;
-	out->params.camera_solids = out->n_fogs ? lower_camera_solids(s) : 0;
+	out->params.atmosphere = atmosphere;
+	out->params.n_atmosphere = n_atmosphere;
+	out->params.camera_solids = out->n_fogs || out->textures.n_media ? lower_camera_solids(s) : 0;
+	lower_media_warn_open(s);
 	if (rc == 0 && join(&lw, s, out))
 		rc = -1;
 	if (rc == 0)

@@ -53,6 +53,9 @@ typedef struct {
 	int see_through;          /* some colour has filter or transmit */
 	dev_material *subs;       /* the textures of texture_maps and the lower layers, until appended */
 	int n_subs, cap_subs;
+	dev_media *media;         /* the interiors' and the atmosphere's media (lower_media.c) */
+	int n_media, cap_media;
+	int *media_at;            /* a scene media chain's first dev_media, by its head, or -1 */
 } lower_textures;
 
 typedef struct {
@@ -110,6 +113,16 @@ const char *lower_kernel_options(const lower_result *lr);
 char *lower_function_source(const scene *s);
 /* 1 when function f's program keeps scene.h's promises; else 0, why in why. */
 int lower_function_valid(const scene *s, int f, char *why, size_t n);
+
+/* The media chain whose head is scene.media[head - 1] (0: none) as dev_media
+ * records in lt, once however many materials hold it; their densities are
+ * placed by to_world. Returns the first, and the count in *n. */
+int lower_media(lower_textures *lt, const scene *s, int head, const xform *to_world, int *n);
+/* Warns about media in objects that have no inside (a triangle, a mesh, a disc). */
+void lower_media_warn_open(const scene *s);
+/* A density { }'s material (its pigment: the density) in lt->subs, placed by to_world. */
+int lower_texture_density(lower_textures *lt, const scene *s, int pattern, const float rgb[3],
+                          const xform *to_world);
 
 /* A POV-Ray texture and interior as the kernels read them (ambient multiplied
  * by ambient_light); its pattern pigments go into lt. local: a mesh's own

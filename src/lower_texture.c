@@ -231,6 +231,7 @@ static dev_material lower_plain(lower_textures *lt, const scene *s, const struct
 	};
 	if (p[3] != 0 || p[4] != 0)
 		lt->see_through = 1;
+	d.media = lower_media(lt, s, in->media, to_world, &d.n_media);
 	if (m->pattern >= 0 && m->pattern < s->n_pigments)
 		d.pattern = flatten(lt, s, m->pattern, to_world, 0, NULL);
 	/* the kernels do not perturb the normals of a mesh's own textures yet */
@@ -243,6 +244,19 @@ static int add_sub(lower_textures *lt)
 {
 	lt->subs = grow_to(lt->subs, &lt->cap_subs, lt->n_subs + 1, sizeof *lt->subs);
 	return lt->n_subs++;
+}
+
+int lower_texture_density(lower_textures *lt, const scene *s, int pattern, const float rgb[3], const xform *to_world)
+{
+	scene_material m = scene_default_material();
+	for (int k = 0; k < 3; k++)
+		m.pigment[k] = rgb[k];
+	m.pattern = pattern;
+	struct surface sf = { &m, 0 };
+	dev_material d = lower_plain(lt, s, &sf, &m, to_world);
+	int at = add_sub(lt);
+	lt->subs[at] = d;
+	return at;
 }
 
 /* A texture's material placed by to_world (its own transformations in it) at
@@ -323,6 +337,10 @@ void lower_textures_append(lower_textures *lt, dev_material **mats, int *n_mats)
 	for (int i = 0; i < lt->n_maps; i++)
 		if (lt->maps[i].material >= 0)
 			lt->maps[i].material += base;
+	for (int i = 0; i < lt->n_media; i++)
+		for (int k = 0; k < MEDIA_DENSITIES; k++)
+			if (lt->media[i].density[k] >= 0)
+				lt->media[i].density[k] += base;
 	free(lt->subs);
 	lt->subs = NULL;
 	lt->n_subs = lt->cap_subs = 0;
@@ -336,5 +354,7 @@ void lower_textures_free(lower_textures *lt)
 	free(lt->maps);
 	free(lt->images);
 	free(lt->texels);
+	free(lt->media);
+	free(lt->media_at);
 	memset(lt, 0, sizeof *lt);
 }

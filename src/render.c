@@ -25,6 +25,7 @@
 #define HOST_texels(LR) (LR)->textures.texels, (LR)->textures.n_texels * sizeof(float4)
 #define HOST_fogs(LR) (LR)->fogs, (LR)->n_fogs * sizeof(dev_fog)
 #define HOST_camera_rays(LR) (LR)->camera_rays, (size_t)(LR)->n_camera_rays * sizeof(float4)
+#define HOST_media(LR) (LR)->textures.media, (LR)->textures.n_media * sizeof(dev_media)
 
 /* The kernels' buffers in argument order: the scene's, from shared.h's list,
  * then the parameters and the film's. */

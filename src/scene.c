@@ -131,6 +131,21 @@ void scene_add_fog(scene *s, const scene_fog *f)
 	s->fogs[s->n_fogs++] = *f;
 }
 
+int scene_add_media(scene *s, const scene_media *m)
+{
+	if (s->n_media == s->cap_media)
+		s->media = grow(s->media, &s->cap_media, sizeof *m);
+	s->media[s->n_media] = *m;
+	return s->n_media++;
+}
+
+scene_media scene_default_media(void)
+{
+	return (scene_media){ .type = SCENE_SCATTER_ISOTROPIC, .extinction = 1, .method = 3, .intervals = 1,
+	                      .min_samples = 10, .max_samples = 10, .confidence = 0.9, .variance = 1.0 / 128,
+	                      .ratio = 0.9, .aa_threshold = 0.1, .aa_level = 3, .xf = scene_xform_identity(), .prev = -1 };
+}
+
 scene_fog scene_default_fog(void)
 {
 	return (scene_fog){ .type = SCENE_FOG_CONSTANT, .up = { 0, 1, 0 }, .octaves = 6, .omega = 0.5, .lambda = 2,
@@ -247,6 +262,7 @@ void scene_free(scene *s)
 	free(s->objects);
 	free(s->lights);
 	free(s->fogs);
+	free(s->media);
 	for (int i = 0; i < s->n_pigments; i++)
 		free(s->pigments[i].map);
 	free(s->pigments);

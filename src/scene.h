@@ -130,6 +130,7 @@ typedef struct {
 	float dispersion;        /* 1 */
 	float fade_distance, fade_power; /* 0, 0: no absorption */
 	float fade_color[3];     /* 0 */
+	int media;               /* the interior's last media (scene.media) plus one; 0: none */
 } scene_material;
 
 /* The shapes of the scene language, one row each: X(NAME, name) makes
@@ -315,6 +316,7 @@ typedef struct {
 	bool jitter, circular, orient;
 	bool shadowless;
 	bool media_attenuation;      /* fogs dim its light on the way (POV-Ray's, default off) */
+	bool no_media_interaction;   /* media_interaction off: media do not scatter its light */
 	float fade_distance, fade_power; /* 0, 0: no falloff, as in POV-Ray */
 	int looks_like;              /* first object index of its looks_like shape, or -1 */
 	src_loc loc;
@@ -337,6 +339,32 @@ typedef struct {
 	double turb_depth;       /* 0.5 */
 	src_loc loc;
 } scene_fog;
+
+/* A media { } (eval_media.c), POV-Ray 3.7's Parse_Media defaults
+ * (scene_default_media). An interior's media are a chain through prev, the
+ * last written first, never changed once made: materials copied by value
+ * share them, and the chain's head names the interior's media. */
+#define SCENE_MEDIA_DENSITIES 4
+enum { SCENE_SCATTER_ISOTROPIC = 1, SCENE_SCATTER_MIE_HAZY, SCENE_SCATTER_MIE_MURKY, SCENE_SCATTER_RAYLEIGH,
+       SCENE_SCATTER_HG };
+typedef struct {
+	double absorption[3], emission[3], scattering[3];   /* 0 */
+	int type;                /* SCENE_SCATTER_, 1 */
+	double eccentricity;     /* 0: Henyey-Greenstein's g */
+	double extinction;       /* 1: scattering's share of the extinction */
+	int method;              /* 3 */
+	int intervals;           /* 1 */
+	int min_samples, max_samples;  /* 10, 10 */
+	double confidence, variance, ratio, jitter, aa_threshold;  /* 0.9, 1/128, 0.9, 0, 0.1 */
+	int aa_level;            /* 3 */
+	/* density { }s, multiplied: each a pattern (scene.pigments) or -1, a constant colour */
+	int density[SCENE_MEDIA_DENSITIES];
+	float density_rgb[SCENE_MEDIA_DENSITIES][3];
+	int n_density;
+	xform xf;                /* the media's transformations: they move its densities */
+	int prev;                /* the media written before it in the same interior, or -1 */
+	src_loc loc;
+} scene_media;
 
 /* A CSG object (union inside CSG, merge, intersection, difference, inverse):
  * its leaves are consecutive scene objects, and its program (kernels/shared.h,
@@ -430,6 +458,9 @@ typedef struct {
 	                       * blend as POV-Ray 3.6 blends them */
 	scene_fog *fogs;      /* in the order written; they combine as POV-Ray combines them */
 	int n_fogs, cap_fogs;
+	scene_media *media;   /* every interior's media (scene_material.media) and the atmosphere's */
+	int n_media, cap_media;
+	int atmosphere;       /* the scene-level media's chain head plus one; 0: none */
 	/* global_settings */
 	int max_trace_level;  /* 0 when the scene does not say */
 	float assumed_gamma;  /* 0 when the scene does not say */
@@ -451,6 +482,10 @@ void scene_add_light(scene *s, const scene_light *l);
 void scene_add_fog(scene *s, const scene_fog *f);
 /* POV-Ray's default fog (Create_Fog): no distance, so no fog until one is given. */
 scene_fog scene_default_fog(void);
+/* Appends a media to the pool; returns its index. */
+int scene_add_media(scene *s, const scene_media *m);
+/* POV-Ray 3.7's media defaults (method 3, one interval, 10 samples). */
+scene_media scene_default_media(void);
 /* Takes ownership of p's map; returns its index. */
 int scene_add_pigment(scene *s, const scene_pigment *p);
 /* A texture into the pool scene.textures; returns its index. */
