@@ -193,6 +193,7 @@ enum {                       /* ORDER: the names in src/eval_pattern.c */
 	PATTERN_WOOD, PATTERN_WRINKLES,
 	PATTERN_IMAGE_MAP,   /* a colour, not a value: texture.cl's texture_image */
 	PATTERN_FUNCTION,    /* function { }: the scene's function params[0].x (function.cl) */
+	PATTERN_MANDEL, PATTERN_JULIA, PATTERN_MAGNET,   /* kernels/pattern_fractal.cl */
 	PATTERN_COUNT
 };
 /* POV-Ray's wave types, applied to a continuous pattern's value. */
@@ -259,6 +260,10 @@ typedef struct {
  *              2 bilinear, 4 normalized distance), w 1 for once;
  *              params[1].x filter all, y transmit all; no map
  *   function:  params[0].x the scene's function (scene.functions)
+ *   mandel, julia, magnet: params[0].x the iteration limit, y the exponent
+ *              (2-33; magnet: its type, 1 or 2, plus 2 in the julia form),
+ *              zw the julia constant; params[1].x the interior type (0),
+ *              y its factor (1), z the exterior type (1), w its factor (1)
  *   granite, leopard, ...: none */
 typedef struct {
 	float4 rows[3];

@@ -369,6 +369,11 @@ enum kw_class {
 #define AST_WORD_BLOB "blob"
 #define AST_WORD_COMPONENT "component"
 #define AST_WORD_STRENGTH "strength"
+/* the fractal patterns and their words (eval_fractal.c) */
+#define AST_WORD_MANDEL "mandel"
+#define AST_WORD_JULIA "julia"
+#define AST_WORD_MAGNET "magnet"
+#define AST_WORD_EXTERIOR "exterior"
 
 enum ast_keyword {
 	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */

@@ -246,6 +246,11 @@ int eval_pattern_modifier(struct eval *e, struct cursor *c, const ast_node *item
 int eval_pattern_transform(struct eval *e, scene_pigment *pg, const xform *t, src_loc loc);
 /* The argument of a pattern keyword: gradient's vector, spiral's arms. */
 int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *pg);
+/* mandel, julia and magnet (eval_fractal.c): their defaults, and their
+ * arguments and modifiers, as eval_pattern_modifier. */
+bool eval_pattern_is_fractal(int kind);
+void eval_fractal_defaults(scene_pigment *pg);
+int eval_fractal_modifier(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg);
 
 /* image_map { ... }: pg (an image_map pattern) gets its image, read into the
  * scene's images once per file and gamma, its options and a one-entry map of

@@ -602,6 +602,7 @@ static const char *const pattern_names[] = {
 	"cylindrical", "dents", "facets", "gradient", "granite", "hexagon", "leopard", "marble", "onion",
 	"planar", "quilted", "radial", "ripples", "spherical", "spiral1", "spiral2", "spotted", "square",
 	"triangular", "waves", "wood", "wrinkles", "image_map", "function",
+	"mandel", "julia", "magnet",
 };
 _Static_assert(sizeof pattern_names / sizeof *pattern_names == PATTERN_COUNT, "a name for each pattern");
 

@@ -160,7 +160,7 @@ static const char *test_kernel =
 	"	out[i] = (float4)(pattern_perturb(pt, warps, maps, points[i].xyz, (float3)(0.0f, 0.0f, -1.0f)), 0.0f);\n"
 	"}\n";
 
-static const char *const kernel_files[] = { "kernels/shared.h", "kernels/intersect.cl", "kernels/function.cl", "kernels/pattern_tables.cl", "kernels/pattern.cl",
+static const char *const kernel_files[] = { "kernels/shared.h", "kernels/intersect.cl", "kernels/function.cl", "kernels/pattern_tables.cl", "kernels/pattern_fractal.cl", "kernels/pattern.cl",
                                             "kernels/normal.cl" };
 
 static void fill_pattern(const struct ncase *c, dev_pattern *pt, dev_warp *warps, dev_map_entry *maps)
