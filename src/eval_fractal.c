@@ -189,3 +189,112 @@ int eval_fractal_modifier(struct eval *e, struct cursor *c, const ast_node *item
 		return colouring(e, c, item, NULL, false, pg);
 	return 1;
 }
+
+/* ---- julia_fractal { } ---- */
+
+/* The word an item is, when it is an undeclared identifier. */
+static const char *julia_word(struct eval *e, const ast_node *item)
+{
+	return item->kind == AST_IDENT && !eval_lookup(e, item->str) ? item->str : NULL;
+}
+
+/* A 4-D vector (a float is all four of its components). */
+static int vector4(struct eval *e, const ast_node *n, double out[4])
+{
+	value v;
+	if (eval_expr(e, n, &v))
+		return -1;
+	int rc = 0;
+	if (!eval_is_numeric(v.kind)) {
+		eval_error(e, n->loc, "expected a 4-D vector, found %s", eval_kind_name(v.kind));
+		rc = -1;
+	} else {
+		double w[5];
+		eval_widen(&v, 4, w);
+		memcpy(out, w, 4 * sizeof *out);
+	}
+	eval_value_free(&v);
+	return rc;
+}
+
+/* slice <Slice4D>, Dist: made unit length, as POV-Ray does. */
+static int slice(struct eval *e, struct cursor *c, const ast_node *at, scene_object *o)
+{
+	int err = 0;
+	double s[4], dist;
+	const ast_node *n = eval_next_expr(c, &err);
+	if (!n) {
+		if (!err)
+			eval_error(e, at->loc, "expected the slice's 4-D vector");
+		return -1;
+	}
+	if (vector4(e, n, s) || next_float(e, c, at->loc, "the slice's distance after its vector", &dist))
+		return -1;
+	double len2 = s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + s[3] * s[3];
+	if (fabs(len2) < 1e-10 || fabs(s[3]) < 1e-10) {   /* POV-Ray's EPSILON */
+		eval_error(e, at->loc, fabs(len2) < 1e-10 ? "slice vector is zero" : "slice t component is zero");
+		return -1;
+	}
+	double len = sqrt(len2);
+	for (int k = 0; k < 3; k++)
+		o->n[0][k] = s[k] / len;
+	o->n[1][0] = s[3] / len;
+	o->p[1][1] = dist;
+	return 0;
+}
+
+/* julia_fractal { <Julia4D> [quaternion | hypercomplex] [sqr | cube]
+ *                 [max_iteration N] [precision P] [slice <S4D>, Dist] ... },
+ * POV-Ray's defaults: quaternion sqr, max_iteration 20, precision 20, slice
+ * <0, 0, 0, 1>, 0. */
+int eval_julia_fractal_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o)
+{
+	int err = 0;
+	const ast_node *item = eval_next(c, &err);
+	double j[4];
+	if (!item || !AST_IS_EXPRESSION(item->kind) || julia_word(e, item)) {
+		if (!err)
+			eval_error(e, item ? item->loc : b->loc, "a julia_fractal needs its 4-D constant first");
+		return -1;
+	}
+	if (vector4(e, item, j))
+		return -1;
+	memcpy(o->p[0], j, 3 * sizeof *j);
+	o->p[1][0] = j[3];
+	o->n[1][0] = 1;   /* slice <0, 0, 0, 1>, 0 */
+	o->p[1][2] = 1.0 / 20;
+	o->param[0] = 20;
+	o->param[1] = JULIA_QUATERNION;
+	o->param[2] = JULIA_SQR;
+	while ((item = eval_next(c, &err)) != NULL) {
+		const char *w = julia_word(e, item);
+		double v;
+		if (w && strcmp(w, AST_WORD_QUATERNION) == 0) {
+			o->param[1] = JULIA_QUATERNION;
+		} else if (w && strcmp(w, AST_WORD_HYPERCOMPLEX) == 0) {
+			o->param[1] = JULIA_HYPERCOMPLEX;
+		} else if (w && strcmp(w, AST_WORD_SQR) == 0) {
+			o->param[2] = JULIA_SQR;
+		} else if (w && strcmp(w, AST_WORD_CUBE) == 0) {
+			o->param[2] = JULIA_CUBE;
+		} else if (w && strcmp(w, AST_WORD_MAX_ITERATION) == 0) {
+			if (next_float(e, c, item->loc, "a number after max_iteration", &v))
+				return -1;
+			o->param[0] = fmin(fmax(floor(v), 1), 1e6);   /* POV-Ray: at least 1 */
+		} else if (w && strcmp(w, AST_WORD_PRECISION) == 0) {
+			if (next_float(e, c, item->loc, "a number after precision", &v))
+				return -1;
+			o->p[1][2] = 1 / fmax(v, 1);
+		} else if (w && strcmp(w, AST_WORD_SLICE) == 0) {
+			if (slice(e, c, item, o))
+				return -1;
+		} else if (w && (strcmp(w, "reciprocal") == 0 || strcmp(w, "pwr") == 0 || strcmp(w, "ln") == 0)) {
+			eval_error(e, item->loc, "julia_fractal's '%s' is not supported yet (sqr and cube are)", w);
+			return -1;
+		} else {
+			eval_unget(c, item);   /* the object modifiers */
+			break;
+		}
+	}
+	return err ? -1 : 0;
+}

@@ -251,6 +251,8 @@ int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *p
 bool eval_pattern_is_fractal(int kind);
 void eval_fractal_defaults(scene_pigment *pg);
 int eval_fractal_modifier(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg);
+/* julia_fractal { }'s words before its object modifiers (eval_fractal.c). */
+int eval_julia_fractal_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 
 /* image_map { ... }: pg (an image_map pattern) gets its image, read into the
  * scene's images once per file and gamma, its options and a one-entry map of

@@ -16,7 +16,7 @@ const char *eval_pov_word(const char *name)
 {
 	static const char *const objects[] = {
 		"cubic",
-		"julia_fractal", "lathe", "light_group", "ovus",
+		"lathe", "light_group", "ovus",
 		"parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
 		"sphere_sweep", "text",
 	};
