@@ -793,6 +793,11 @@ float pattern_at(global const dev_pattern *pt, global const dev_warp *warps, flo
 		if (v > 1.0f)
 			v = fmod(v, 1.0f);
 		break;
+	case PATTERN_MANDEL:
+	case PATTERN_JULIA:
+	case PATTERN_MAGNET:
+		v = pattern_fractal(kind, p, pt->params[0], pt->params[1], pt->frequency);
+		break;
 	default:
 		return 0.0f;
 	}

@@ -72,7 +72,8 @@ typedef struct {
 	X(SUPERELLIPSOID, superellipsoid) \
 	X(ISOSURFACE, isosurface) \
 	X(POLY, poly) \
-	X(BLOB, blob)
+	X(BLOB, blob) \
+	X(JULIA_FRACTAL, julia_fractal)
 #define PRIM_ENUM_ROW(NAME, name) PRIM_##NAME,
 enum {
 	PRIM_SHAPES(PRIM_ENUM_ROW)
@@ -80,6 +81,10 @@ enum {
 	PRIM_CSG,        /* a CSG object: kernels/csg.cl classifies its leaves' hits */
 	PRIM_DATA,       /* numbers of the record before it, never hit by itself */
 };
+
+/* A julia_fractal's algebra and function (src/shape_julia_fractal.c). */
+enum { JULIA_QUATERNION = 0, JULIA_HYPERCOMPLEX = 1 };
+enum { JULIA_SQR = 0, JULIA_CUBE = 1 };
 
 /* A prism's flags (polygon, prism and text: src/prism.h): no caps, one flat
  * face (a polygon: no sides, no inside), conic_sweep. */
@@ -112,6 +117,10 @@ enum { PRISM_OPEN = 1, PRISM_FLAT = 2, PRISM_CONIC = 4 };
  *   components, a.y its threshold; each component then two records: a.xyz one
  *   end (the centre) and a.w the radius, a.xyz the other end and a.w the
  *   strength (kernels/shape_blob.cl).
+ * Julia fractal: the map to its own space; four records: a the constant c,
+ *   the slice (unit length), then slice distance, 1/precision, exit value and
+ *   bounding radius, then max_iteration, algebra and function as floats
+ *   (JULIA_; kernels/shape_julia_fractal.cl).
  * Poly (poly, cubic, quartic, polynomial): the map to its own space; its first
  *   record's a.x is its order, and the records after it hold its coefficients
  *   in POV-Ray's order, two in each a, each as a float and the float of what
@@ -200,6 +209,7 @@ enum {                       /* ORDER: the names in src/eval_pattern.c */
 	PATTERN_FUNCTION,    /* function { }: the scene's function params[0].x (function.cl) */
 	PATTERN_AVERAGE,     /* no value: every map entry, weighted by its value (texture.cl) */
 	PATTERN_SLOPE,       /* of the shading normal, and of the altitude (pattern.cl) */
+	PATTERN_MANDEL, PATTERN_JULIA, PATTERN_MAGNET,   /* kernels/pattern_fractal.cl */
 	PATTERN_COUNT
 };
 /* POV-Ray's wave types, applied to a continuous pattern's value. */
@@ -270,6 +280,10 @@ typedef struct {
  *   slope:     params[0].xyz the slope's unit direction, params[1].xyz the
  *              altitude's, each times its share of their summed lengths;
  *              params[0].w, params[1].w the slope's range, low and width
+ *   mandel, julia, magnet: params[0].x the iteration limit, y the exponent
+ *              (2-33; magnet: its type, 1 or 2, plus 2 in the julia form),
+ *              zw the julia constant; params[1].x the interior type (0),
+ *              y its factor (1), z the exterior type (1), w its factor (1)
  *   granite, leopard, ...: none */
 typedef struct {
 	float4 rows[3];

@@ -404,6 +404,19 @@ enum kw_class {
 #define AST_WORD_BLOB "blob"
 #define AST_WORD_COMPONENT "component"
 #define AST_WORD_STRENGTH "strength"
+/* the fractal patterns and their words (eval_fractal.c) */
+#define AST_WORD_MANDEL "mandel"
+#define AST_WORD_JULIA "julia"
+#define AST_WORD_MAGNET "magnet"
+#define AST_WORD_EXTERIOR "exterior"
+#define AST_WORD_JULIA_FRACTAL "julia_fractal"
+#define AST_WORD_QUATERNION "quaternion"
+#define AST_WORD_HYPERCOMPLEX "hypercomplex"
+#define AST_WORD_SQR "sqr"
+#define AST_WORD_CUBE "cube"
+#define AST_WORD_MAX_ITERATION "max_iteration"
+#define AST_WORD_PRECISION "precision"
+#define AST_WORD_SLICE "slice"
 
 enum ast_keyword {
 	KW_UNKNOWN = -2, /* NAME { ... } with a NAME that is no keyword: str holds it */

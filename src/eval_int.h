@@ -255,6 +255,13 @@ int eval_pattern_modifier(struct eval *e, struct cursor *c, const ast_node *item
 int eval_pattern_transform(struct eval *e, scene_pigment *pg, const xform *t, src_loc loc);
 /* The argument of a pattern keyword: gradient's vector, spiral's arms. */
 int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *pg);
+/* mandel, julia and magnet (eval_fractal.c): their defaults, and their
+ * arguments and modifiers, as eval_pattern_modifier. */
+bool eval_pattern_is_fractal(int kind);
+void eval_fractal_defaults(scene_pigment *pg);
+int eval_fractal_modifier(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg);
+/* julia_fractal { }'s words before its object modifiers (eval_fractal.c). */
+int eval_julia_fractal_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 
 /* The slope pattern's word at item (slope { ... }, slope V, or slope -V,
  * which the grammar makes one difference), or NULL. */

@@ -1198,6 +1198,8 @@ static int normal_item(struct eval *e, struct cursor *c, const ast_node *item, s
 		eval_uv_mapping_warning(e, item);
 		return 0;
 	}
+	if (eval_pattern_is_fractal(pg->kind) && pg->params[0][0] == 0)   /* mandel 50 [Amount]: its arguments first */
+		return eval_fractal_modifier(e, c, item, pg);
 	if (AST_IS_EXPRESSION(item->kind) && !w && !*amount) {   /* bumps 0.5 */
 		*amount = true;
 		return eval_expect_float(e, item, &pg->bump_size);

@@ -52,6 +52,7 @@ void eval_pattern_defaults(scene_pigment *pg, int kind, src_loc loc)
 	case PATTERN_CRACKLE: p[0] = -1; p[1] = 1; p[2] = 0; p[3] = 2; break;
 	case PATTERN_GRADIENT: p[0] = 1; break;
 	case PATTERN_SPIRAL1: case PATTERN_SPIRAL2: p[0] = 1; pg->wave = WAVE_TRIANGLE; break;
+	case PATTERN_MANDEL: case PATTERN_JULIA: case PATTERN_MAGNET: eval_fractal_defaults(pg); break;
 	default: break;
 	}
 }
@@ -79,6 +80,10 @@ static const struct default_entry map_six[] = {   /* cubic, triangular */
 	{ 2, { 1, 0, 1 } },
 };
 static const struct default_entry map_hexagon[] = { { 0, { 0, 0, 1 } }, { 1, { 0, 1, 0 } }, { 2, { 1, 0, 0 } } };
+static const struct default_entry map_mandel[] = {
+	{ 0.001f, { 0, 0, 0 } }, { 0.001f, { 0, 1, 1 } }, { 0.012f, { 1, 1, 0 } }, { 0.015f, { 1, 0, 1 } },
+	{ 0.1f, { 0, 1, 1 } },
+};
 static const struct default_entry map_marble[] = {
 	{ 0, { 0.9f, 0.8f, 0.8f } }, { 0.9f, { 0.9f, 0.08f, 0.08f } }, { 0.9f, { 0, 0, 0 } },
 };
@@ -103,6 +108,12 @@ void eval_pattern_default_map(scene_pigment *pg)
 	case PATTERN_SQUARE: m = map_six, n = 4; break;   /* POV-Ray's square uses its first four */
 	case PATTERN_HEXAGON: MAP(map_hexagon); break;
 	case PATTERN_MARBLE: MAP(map_marble); break;
+	case PATTERN_MANDEL:   /* POV-Ray gives exponent 2 alone its own map */
+		if (pg->params[0][1] == 2)
+			MAP(map_mandel);
+		else
+			MAP(map_grey);
+		break;
 	case PATTERN_RADIAL: MAP(map_radial); break;
 	case PATTERN_WOOD: MAP(map_wood); break;
 	default: MAP(map_grey); break;
@@ -298,6 +309,9 @@ static int set_wave(scene_pigment *pg, int wave)
 int eval_pattern_modifier(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg)
 {
 	double *p0 = pg->params[0], *p1 = pg->params[1];
+	int rc = eval_pattern_is_fractal(pg->kind) ? eval_fractal_modifier(e, c, item, pg) : 1;
+	if (rc <= 0)
+		return rc;
 	if (item->kind == AST_ARG) {
 		switch (item->kw) {
 		case KW_TURBULENCE: case KW_OCTAVES: case KW_OMEGA: case KW_LAMBDA: {

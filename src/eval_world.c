@@ -16,13 +16,13 @@ const char *eval_pov_word(const char *name)
 {
 	static const char *const objects[] = {
 		"cubic",
-		"julia_fractal", "lathe", "light_group", "ovus",
+		"lathe", "light_group", "ovus",
 		"parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
 		"sphere_sweep", "text",
 	};
 	static const char *const statements[] = { "rainbow" };
 	static const char *const patterns[] = {
-		"aoi", "average", "density_file", "image_pattern", "julia", "magnet", "mandel", "pavement",
+		"aoi", "average", "density_file", "image_pattern", "pavement",
 		"pigment_pattern", "slope", "tiling",
 	};
 	static const char *const others[] = {

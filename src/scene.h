@@ -176,7 +176,8 @@ typedef struct {
 	X(POLYNOMIAL, polynomial) \
 	X(BLOB, blob) \
 	X(HEIGHT_FIELD, height_field) \
-	X(BICUBIC_PATCH, bicubic_patch)
+	X(BICUBIC_PATCH, bicubic_patch) \
+	X(JULIA_FRACTAL, julia_fractal)
 #define SCENE_SHAPE_ENUM_ROW(NAME, name) SHAPE_##NAME,
 typedef enum { SCENE_SHAPES(SCENE_SHAPE_ENUM_ROW) SHAPE_KINDS } scene_shape;
 

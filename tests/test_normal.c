@@ -61,6 +61,11 @@ static const struct ncase cases[] = {
 	{ .name = "dents_gen3", .pov = "dents 1.5 noise_generator 3 scale 0.5", .kind = PATTERN_DENTS, .gen = 3, .amount = 1.5f,
 	  .scale = { 0.5f, 0.5f, 0.5f } },
 	{ .name = "ripples", .pov = "ripples 0.5", .kind = PATTERN_RIPPLES, .p0 = { 10 } },
+	/* fractals, tilting the normal by their slope */
+	{ .name = "mandel", .pov = "mandel 30 0.6 scale 2", .kind = PATTERN_MANDEL, .amount = 0.6f,
+	  .p0 = { 30, 2, 0, 0 }, .p1 = { 0, 1, 1, 1 }, .scale = { 2, 2, 2 } },
+	{ .name = "julia_exterior", .pov = "julia <0.353, 0.288>, 20 0.8 exterior 6, 0.3 scale 2", .kind = PATTERN_JULIA,
+	  .amount = 0.8f, .p0 = { 20, 2, 0.353f, 0.288f }, .p1 = { 0, 1, 6, 0.3f }, .scale = { 2, 2, 2 } },
 	{ .name = "ripples_frequency", .pov = "ripples 0.6 frequency 3 phase 0.2", .kind = PATTERN_RIPPLES, .freq = 3, .phase = 0.2f,
 	  .amount = 0.6f, .p0 = { 10 } },
 	{ .name = "waves", .pov = "waves 0.5", .kind = PATTERN_WAVES, .p0 = { 10 } },
@@ -160,7 +165,7 @@ static const char *test_kernel =
 	"	out[i] = (float4)(pattern_perturb(pt, warps, maps, points[i].xyz, (float3)(0.0f, 0.0f, -1.0f)), 0.0f);\n"
 	"}\n";
 
-static const char *const kernel_files[] = { "kernels/shared.h", "kernels/intersect.cl", "kernels/function.cl", "kernels/pattern_tables.cl", "kernels/pattern.cl",
+static const char *const kernel_files[] = { "kernels/shared.h", "kernels/intersect.cl", "kernels/function.cl", "kernels/pattern_tables.cl", "kernels/pattern_fractal.cl", "kernels/pattern.cl",
                                             "kernels/normal.cl" };
 
 static void fill_pattern(const struct ncase *c, dev_pattern *pt, dev_warp *warps, dev_map_entry *maps)
