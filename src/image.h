@@ -20,6 +20,10 @@ typedef struct {
 	int bits;            /* 16: 16 bits a channel in PNG and PPM; 0 or 8: 8 */
 } image_meta;
 
+/* 0 when the temporary file tmp, just written and closed, is on the disk
+ * and reads back whole as a width x height image; else -1 and why (a full
+ * disk that a writer did not notice). */
+int image_written_whole(const char *tmp, int width, int height, char *why, size_t n);
 int image_write(const char *path, const float *rgb, int width, int height, const image_meta *meta,
                 char *err, size_t errlen);
 

@@ -70,6 +70,13 @@ static std::string written_whole(const std::string &tmp, int width, int height)
 	return why;
 }
 
+extern "C" int image_written_whole(const char *tmp, int width, int height, char *why, size_t n)
+{
+	std::string w = written_whole(tmp, width, height);
+	snprintf(why, n, "%s", w.c_str());
+	return w.empty() ? 0 : -1;
+}
+
 /* Writes pixels (channels floats a pixel) to a temporary file beside path, then
  * renames it: the file appears whole or not at all. srgb: encode the values for
  * an 8-bit format; they are display values already when not. */

@@ -15,6 +15,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "image.h"
 #include "split.h"
 
 using namespace OIIO;
@@ -97,6 +98,11 @@ extern "C" int split_write(const char *path, const float *rgb, const int64_t *su
 	          out->write_image(TypeDesc::FLOAT, px.data());
 	std::string msg = out->geterror();
 	ok = out->close() && ok;
+	char why[512] = "";
+	if (ok && image_written_whole(tmp.c_str(), info->width, info->height, why, sizeof why) != 0) {
+		ok = false;
+		msg = why;
+	}
 	if (!ok) {
 		Filesystem::remove(tmp);
 		return fail(err, errlen, "cannot write '" + p + "': " + (msg.empty() ? out->geterror() : msg));

@@ -4,7 +4,9 @@
  * eclat runs those libraries in a child process (src/loader.c): the test shows
  * a crash or a hang there is an error at the scene's line, not eclat's end.
  * ECLAT_FAULT=enospc: a disk that is full under the folder ECLAT_FAULT_PATH
- * (tests/faults.tap): write() and fwrite() to a file there fail with ENOSPC,
+ * (tests/faults.tap): write(), writev() and fwrite() to a file there fail
+ * with ENOSPC (libstdc++'s streams, which OpenEXR's multi-part files use,
+ * write with writev),
  * as they would when a render's output folder fills up (a tmpfs would need
  * root). */
 #define _GNU_SOURCE
@@ -14,6 +16,7 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/uio.h>
 #include <unistd.h>
 
 static void misbehave(void)
@@ -81,4 +84,16 @@ size_t fwrite(const void *p, size_t size, size_t n, FILE *stream)
 	}
 	fwrite_fn next = (fwrite_fn)dlsym(RTLD_NEXT, "fwrite");
 	return next(p, size, n, stream);
+}
+
+typedef ssize_t (*writev_fn)(int, const struct iovec *, int);
+
+ssize_t writev(int fd, const struct iovec *iov, int n)
+{
+	if (full(fd)) {
+		errno = ENOSPC;
+		return -1;
+	}
+	writev_fn next = (writev_fn)dlsym(RTLD_NEXT, "writev");
+	return next(fd, iov, n);
 }
