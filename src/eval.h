@@ -49,6 +49,8 @@ typedef struct {
 	long max_loop_iterations;
 	/* Seconds assimp may take on one mesh file (--mesh-time-limit); 0: no limit. */
 	unsigned mesh_time_limit;
+	/* Mesh files read by earlier frames of an animation (mesh_io.h), or NULL. */
+	struct mesh_io_cache *mesh_cache;
 	/* File I/O security (eval_access.c): the files a scene may make eclat read
 	 * and write. The scene's own folder and the include folders always count;
 	 * io_current_folder adds the current one (the command line's), which the

@@ -26,7 +26,22 @@ typedef struct {
 	int median_depth;   /* the median builder's maximum depth */
 	int layout;         /* LOWER_LAYOUT_BINARY or LOWER_LAYOUT_WIDE */
 	int skip_unsupported;  /* --skip-unsupported: what lowering cannot do is left out with a warning */
+	struct lower_cache *cache;  /* meshes' BVHs kept between calls (an animation's frames), or NULL */
 } lower_options;
+
+/* The BVHs of meshes, kept from one lower_scene to the next (lower_cache.c):
+ * a mesh whose triangles are those of a mesh of the previous call gets a copy
+ * of its tree instead of a build. */
+typedef struct lower_cache lower_cache;
+lower_cache *lower_cache_new(void);   /* NULL when out of memory */
+void lower_cache_free(lower_cache *c);
+int lower_cache_hits(const lower_cache *c);   /* trees copied, not built, so far */
+/* ---- between lower.c and lower_cache.c: 1 and a copy in *t when kept; keep
+ * stores a copy of the triangles p (before the build) and of their tree;
+ * sweep (at the end of lower_scene) drops what that lowering did not use. */
+int lower_cache_find(lower_cache *c, const lower_options *o, const dev_prim *p, int n, bvh_tree *t);
+void lower_cache_keep(lower_cache *c, const lower_options *o, const dev_prim *p, int n, const bvh_tree *t);
+void lower_cache_sweep(lower_cache *c);
 
 /* What --stats prints about one BVH. */
 typedef struct {

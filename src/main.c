@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "cli_pov.h"
@@ -19,6 +20,7 @@
 #include "mesh_io.h"
 #include "parse.h"
 #include "render.h"
+#include "render_keep.h"
 
 #define DEFAULT_WIDTH 640
 #define DEFAULT_HEIGHT 480
@@ -551,19 +553,18 @@ static int set_threads(const struct options *o)
 	return 0;
 }
 
-/* What POV-Ray's switches asked for that eclat does not do, said once the
- * image's name is known. */
-static void warn_pov(const cli_frame *f, const char *output)
-{
-	if (f->frames > 1)
-		diag_warning(SRC_NOWHERE, "eclat renders one frame of an animation for now: frame %ld (clock %g) of "
-		             "the %ld asked for, to '%s'", f->frame, f->clock, f->frames, output);
-}
+/* An animation's frame, for the progress line and the closing lines. */
+struct frame_info {
+	long frame, index, frames;
+	double clock, seconds;   /* seconds: spent on the frames before */
+};
 
-static int render_scene(const struct options *o, const scene *s, const char *output, const int *part)
+static int render_scene(const struct options *o, const scene *s, const char *output, const int *part,
+                        render_keep *keep, const struct frame_info *fi)
 {
 	lower_result lr;
-	lower_options lo = { o->bvh, o->median_depth, o->bvh_layout, o->skip_unsupported };
+	lower_options lo = { o->bvh, o->median_depth, o->bvh_layout, o->skip_unsupported,
+	                     fi->frames > 1 ? render_keep_cache(keep) : NULL };
 	int failed = lower_scene(s, &lo, &lr);
 	if (!failed && o->stats)
 		print_bvh_stats(s, &lr);
@@ -585,20 +586,23 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		.aov = needs_aov_buffer(o),
 		.time_limit = o->time_limit,
 		.checkpoint = o->checkpoint, .on_checkpoint = write_film, .ctx = &out, .stop = &stop_signal,
+		.frame = fi->frame, .frame_index = fi->index, .frames = fi->frames, .anim_seconds = fi->seconds,
 	};
-	device_ctx dev;
 	cl_program prog = NULL;
 	film f = { 0 };
 	render_stats st;
 	int rc = 1;
 	catch_signals();
 	int ran = -1;   /* 1: failed after some passes, whose samples f holds */
-	if (set_threads(o) == 0 && device_open(&dev, o->device) == 0 &&
-	    (prog = device_build(&dev, o->kernel_dir, lower_kernel_options(&lr), lr.functions)) != NULL)
-		ran = render_run(&dev, prog, &lr, &rs, &f, &st);
+	if ((keep->opened || set_threads(o) == 0) &&
+	    (prog = render_keep_program(keep, o->device, o->kernel_dir, &lr)) != NULL)
+		ran = render_run(&keep->dev, prog, &lr, &rs, &f, &st);
 	if (ran >= 0) {
+		if (!o->quiet && ran == 0 && fi->frames > 1)
+			fprintf(stderr, "eclat: frame %ld (%ld of %ld), clock %g: '%s'\n", fi->frame, fi->index + 1,
+			        fi->frames, fi->clock, output);
 		if (!o->quiet && ran == 0)
-			summary(&rs, &st, &dev);
+			summary(&rs, &st, &keep->dev);
 		if (o->stats)
 			print_ray_stats(&st);
 		int wrote = write_film(&f, &out) == 0 && write_aovs(o, &f) == 0;
@@ -609,9 +613,6 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 			        st.samples, output);
 	}
 	film_free(&f);
-	if (prog)
-		clReleaseProgram(prog);
-	device_close(&dev);
 	lower_free(&lr);
 	return rc;
 }
@@ -656,6 +657,67 @@ static int export_mesh2(const struct options *o)
 	return rc;
 }
 
+static void set_clock(eval_options *e, const cli_frame *f)
+{
+	e->clock = f->clock;
+	e->clock_delta = f->clock_delta;
+	e->clock_on = f->clock_on;
+	e->frame_number = f->frame;
+	e->initial_frame = f->initial_frame;
+	e->final_frame = f->final_frame;
+	e->initial_clock = f->initial_clock;
+	e->final_clock = f->final_clock;
+}
+
+static double seconds_since(const struct timespec *t0)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return (double)(t.tv_sec - t0->tv_sec) + (t.tv_nsec - t0->tv_nsec) * 1e-9;
+}
+
+/* The frames asked for, one after another, each evaluated anew at its clock,
+ * as POV-Ray parses its scene anew for each; the device, the kernels and the
+ * meshes' BVHs stay from frame to frame. --check looks at the first frame. */
+static int render_frames(const struct options *o, const ast_node *tree, eval_options *eopt, cli_frame *frame,
+                         const int *part)
+{
+	render_keep keep = { 0 };
+	struct timespec t0;
+	clock_gettime(CLOCK_MONOTONIC, &t0);
+	long frames = o->check ? 1 : frame->frames;
+	eopt->mesh_cache = frames > 1 ? mesh_io_cache_new() : NULL;
+	int rc = 0;
+	for (long k = 0; k < frames && rc == 0 && !stop_signal; k++) {
+		cli_frame_goto(frame, frame->first + k);
+		char *output = cli_pov_output(&o->pov, frame, o->scene, o->output);
+		rc = !output || (!o->check && check_output(o->scene, output));
+		set_clock(eopt, frame);
+		struct frame_info fi = { frame->frame, k, frames, frame->clock, seconds_since(&t0) };
+		scene s;
+		scene_init(&s);
+		if (rc == 0 && eval_scene(tree, &s, eopt) == 0 && diag_error_count() == 0) {
+			if (o->dump_scene)
+				scene_dump(&s, stdout);
+			rc = render_scene(o, &s, output, part, &keep, &fi);
+		} else {
+			rc = 1;
+		}
+		scene_free(&s);
+		free(output);
+		mesh_io_cache_sweep(eopt->mesh_cache);
+	}
+	int files = mesh_io_cache_hits(eopt->mesh_cache), bvhs = lower_cache_hits(keep.bvhs);
+	if (frames > 1 && !o->quiet && rc == 0)
+		fprintf(stderr, "eclat: %ld frames in %.2f s (the kernels built %d time%s; %d mesh file%s and %d mesh "
+		        "BVH%s reused)\n", frames, seconds_since(&t0), keep.builds, keep.builds == 1 ? "" : "s", files,
+		        files == 1 ? "" : "s", bvhs, bvhs == 1 ? "" : "s");
+	mesh_io_cache_free(eopt->mesh_cache);
+	eopt->mesh_cache = NULL;
+	render_keep_free(&keep);
+	return rc;
+}
+
 int main(int argc, char **argv)
 {
 	struct options o;
@@ -665,7 +727,9 @@ int main(int argc, char **argv)
 	if (o.export_mesh2)
 		return export_mesh2(&o);
 
-	char *output = cli_pov_output(&o.pov, o.scene, o.output);
+	cli_frame frame;
+	cli_pov_frame(&o.pov, &frame);
+	char *output = cli_pov_output(&o.pov, &frame, o.scene, o.output);
 	if (!output)
 		return 1;
 	int rc = 1;
@@ -673,10 +737,9 @@ int main(int argc, char **argv)
 	for (int i = 0; i < o.n_aovs && !bad_output && !o.check && !o.dump_ast; i++)
 		bad_output = check_output(o.scene, o.aov_file[i]);
 	int part[4], has_part = cli_pov_region(&o.pov, o.width, o.height, part);
-	if (bad_output || has_part < 0) {
-		free(output);
+	free(output);
+	if (bad_output || has_part < 0)
 		return 1;
-	}
 	eval_options eopt = eval_options_default();
 	eopt.include_dirs = o.include_dirs;
 	eopt.n_include_dirs = o.n_include_dirs;
@@ -693,36 +756,18 @@ int main(int argc, char **argv)
 	eopt.n_io_read_dirs = o.n_io_read_dirs;
 	eopt.io_write_dirs = o.io_write_dirs;
 	eopt.n_io_write_dirs = o.n_io_write_dirs;
-	cli_frame frame;
-	cli_pov_frame(&o.pov, &frame);
-	eopt.clock = frame.clock;
-	eopt.clock_delta = frame.clock_delta;
-	eopt.clock_on = frame.clock_on;
-	eopt.frame_number = frame.frame;
-	eopt.initial_frame = frame.initial_frame;
-	eopt.final_frame = frame.final_frame;
-	eopt.initial_clock = frame.initial_clock;
-	eopt.final_clock = frame.final_clock;
-	if (!o.dump_ast && !o.check)
-		warn_pov(&frame, output);
 	eopt.image_width = o.width;
 	eopt.image_height = o.height;
 	ast_node *tree = parse_file(o.scene, SRC_NOWHERE);
-	scene s;
-	scene_init(&s);
 	if (!tree)
 		rc = 1;
 	else if (o.dump_ast) {
 		ast_dump(tree, stdout);
 		rc = 0;
-	} else if (eval_scene(tree, &s, &eopt) == 0 && diag_error_count() == 0) {
-		if (o.dump_scene)
-			scene_dump(&s, stdout);
-		rc = render_scene(&o, &s, output, has_part ? part : NULL);
+	} else {
+		rc = render_frames(&o, tree, &eopt, &frame, has_part ? part : NULL);
 	}
-	scene_free(&s);
 	ast_free(tree);
 	diag_free_all();
-	free(output);
 	return rc;
 }
