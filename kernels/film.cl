@@ -29,6 +29,13 @@ inline void film_add_aov(global float4 *aov, int pixel, const first_hit *f, int 
 		a[2].y = (float)f->object;
 }
 
+/* The background's share of a sample (POV-Ray's transmittance, 1 - alpha),
+ * summed where the aov buffer has room: a[2].z. */
+inline void film_add_transm(global float4 *aov, int pixel, float transm)
+{
+	aov[AOV_FLOAT4S * pixel + 2].z += clamp(transm, 0.0f, 1.0f);
+}
+
 /* The work item's ray and test counters into the pass's. */
 inline void film_add_counts(global uint *counters, const uint *counts)
 {

@@ -347,10 +347,7 @@ static void apply(cli_args *a, enum kind k, const struct setting *s, src_loc key
 	case K_TO_FILE: if (!s->on) diag_warning(s->loc, "%s: eclat always writes the image", s->name); break;
 	case K_TYPE: file_type(p, s); break;
 	case K_BITS: p->bits = (int)whole(s, 1, 16); break;
-	case K_ALPHA:
-		if (s->on)
-			diag_warning(s->loc, "%s: eclat does not write an alpha channel yet; the image is opaque", s->name);
-		break;
+	case K_ALPHA: p->alpha = s->on; break;
 	case K_AA:
 		if (s->value)
 			number(s);

@@ -20,6 +20,7 @@ typedef struct {
 	const char *after_display;   /* the argument after a bare -D, for a hint when it was meant as -D NAME */
 	char file_type;              /* +F's letter in upper case ('N': PNG...); 0: not given */
 	int bits;                    /* +FN16: 16; 0: the format's own */
+	int alpha;                   /* +UA, Output_Alpha: the image gets an alpha channel */
 	int antialias;               /* +A: 1, -A: 0, not given: -1 */
 	int anim;                    /* Initial_Frame or Final_Frame was given */
 	int clock_given, cyclic, subset_start_given, subset_end_given;

@@ -18,6 +18,9 @@ typedef struct {
 	const char *scene;   /* the scene file's name */
 	long samples;        /* per pixel */
 	int bits;            /* 16: 16 bits a channel in PNG and PPM; 0 or 8: 8 */
+	const float *alpha;  /* NULL, or one a pixel: the image gets an alpha channel, the colours
+	                      * being associated with it (black where alpha is 0); 8- and 16-bit
+	                      * formats store them divided by alpha, as PNG wants them */
 } image_meta;
 
 int image_write(const char *path, const float *rgb, int width, int height, const image_meta *meta,
@@ -59,6 +62,8 @@ int image_read(const char *path, long max_texels, image_data *out, char *err, si
 int image_png_indices(const char *path, long max_texels, unsigned char **out, int *width, int *height);
 /* 1 when the extension of path names a format OpenImageIO can write. */
 int image_format_known(const char *path);
+/* 1 when that format can hold an alpha channel. */
+int image_format_alpha(const char *path);
 
 #ifdef __cplusplus
 }

@@ -303,6 +303,14 @@ int lower_invert(const xform *t, xform *inv)
 	return 0;
 }
 
+void lower_background_alpha(const scene *s, dev_params *p)
+{
+	const float *bg = s->background, *ft = s->background_ft;
+	float through = ft[0] * (0.297f * bg[0] + 0.589f * bg[1] + 0.114f * bg[2]) + ft[1];
+	p->background.w = fminf(1.0f, fabsf(through));
+	p->classic.x = ft[0] + ft[1];
+}
+
 static double ms_since(const struct timespec *t0)
 {
 	struct timespec t1;

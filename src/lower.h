@@ -111,6 +111,13 @@ int lower_fogs(const scene *s, lower_result *out);
 /* How many solid (non-hollow) objects hold the camera's location. */
 int lower_camera_solids(const scene *s);
 
+/* For an image with an alpha channel (+UA): how the background is seen then,
+ * as POV-Ray sees it: by every ray but reflected ones, its colour times its
+ * opacity (classic.x: its filter + transmit) and, in background.w, how much
+ * of it is transparent (the kernels' alpha is 1 minus that where rays leave
+ * the scene). */
+void lower_background_alpha(const scene *s, dev_params *p);
+
 /* The OpenCL build options for lr's kernels (the node layout is a -D, and
  * SCENE_FUNCTIONS says that lr->functions follows the kernels' files). */
 const char *lower_kernel_options(const lower_result *lr);

@@ -360,7 +360,7 @@ static int same_file(const char *a, const char *b)
 
 /* Everything the user could get wrong about the output is checked before the
  * render, so no minutes of work are lost to a typo in a file name. */
-static int check_output(const char *scene, const char *output)
+static int check_output(const char *scene, const char *output, int alpha)
 {
 	if (strcmp(scene, output) == 0 || same_file(scene, output)) {
 		fprintf(stderr, "eclat: refusing to write the image over the scene file '%s'\n", scene);
@@ -373,6 +373,11 @@ static int check_output(const char *scene, const char *output)
 	free(dir);
 	if (!writable) {
 		fprintf(stderr, "eclat: cannot write '%s': %s\n", output, strerror(errno));
+		return -1;
+	}
+	if (alpha && image_format_known(output) && !image_format_alpha(output)) {
+		fprintf(stderr, "eclat: cannot write '%s' with an alpha channel (+UA): the format has none "
+		        "(use .png, .exr, .tif, .tga or .webp)\n", output);
 		return -1;
 	}
 	if (!image_format_known(output)) {
@@ -404,6 +409,7 @@ struct output {
 	const char *path, *scene;
 	int bits;          /* POV-Ray's +FN16: 16; 0: the format's own */
 	const int *part;   /* POV-Ray's +SC +SR +EC +ER in pixels (CLI_REGION_), or NULL */
+	int alpha;         /* POV-Ray's +UA: an alpha channel (transparent outside the part) */
 };
 
 /* POV-Ray's image of a part is the whole image, black outside the part. */
@@ -423,18 +429,37 @@ static const float *black_outside(const film *f, const int *part)
 	return rgb;
 }
 
+/* +UA: the film's alpha, 0 outside the part. */
+static float *alpha_of(const film *f, const int *part)
+{
+	float *a = malloc((size_t)f->width * f->height * sizeof *a);
+	if (!a || film_alpha(f, a)) {
+		free(a);
+		return NULL;
+	}
+	for (int y = 0; part && y < f->height; y++)
+		for (int x = 0; x < f->width; x++)
+			if (x < part[CLI_REGION_LEFT] || x > part[CLI_REGION_RIGHT] || y < part[CLI_REGION_TOP] ||
+			    y > part[CLI_REGION_BOTTOM])
+				a[(size_t)y * f->width + x] = 0.0f;
+	return a;
+}
+
 static int write_film(const film *f, void *ctx)
 {
 	const struct output *out = ctx;
-	image_meta meta = { out->scene, f->samples, out->bits };
+	float *alpha = out->alpha ? alpha_of(f, out->part) : NULL;
+	image_meta meta = { out->scene, f->samples, out->bits, alpha };
 	char err[512];
 	const float *rgb = out->part ? black_outside(f, out->part) : f->rgb;
-	int rc = rgb ? image_write(out->path, rgb, f->width, f->height, &meta, err, sizeof err) : -1;
+	int have = rgb && (alpha || !out->alpha);
+	int rc = have ? image_write(out->path, rgb, f->width, f->height, &meta, err, sizeof err) : -1;
 	if (rgb != f->rgb)
 		free((float *)rgb);
+	free(alpha);
 	if (rc == 0)
 		return 0;
-	fprintf(stderr, "eclat: %s\n", rgb ? err : "out of memory");
+	fprintf(stderr, "eclat: %s\n", have ? err : "out of memory");
 	return -1;
 }
 
@@ -444,9 +469,9 @@ static int write_aovs(const struct options *o, const film *f)
 	float *rgb = malloc((size_t)f->width * f->height * 3 * sizeof *rgb);
 	int rc = rgb ? 0 : -1;
 	for (int i = 0; rc == 0 && i < o->n_aovs; i++) {
-		struct output out = { o->aov_file[i], o->scene, 0, NULL };
+		struct output out = { o->aov_file[i], o->scene, 0, NULL, 0 };
 		if (strcmp(o->aov_name[i], "heat") == 0) {
-			image_meta meta = { o->scene, f->samples, 0 };
+			image_meta meta = { o->scene, f->samples, 0, NULL };
 			char err[512];
 			double mean;
 			rc = image_write_heat(out.path, f->heat, f->width, f->height, &meta, &mean, err, sizeof err);
@@ -574,7 +599,9 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		return rc;
 	}
 	warn_if_dark(o, s, &lr);   /* only when there is an image to warn about */
-	struct output out = { output, o->scene, o->pov.bits, part };
+	if (o->pov.alpha)
+		lower_background_alpha(s, &lr.params);
+	struct output out = { output, o->scene, o->pov.bits, part, o->pov.alpha };
 	/* deterministic: one sample is the image; POV-Ray's +A asks for the 3x3 grid
 	 * of kernels/integrator_whitted.cl */
 	int whitted = o->integrator == INTEGRATOR_WHITTED, whitted_samples = o->pov.antialias == 1 ? 9 : 1;
@@ -583,7 +610,7 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		.max_depth = o->max_depth >= 0 ? o->max_depth
 		           : s->max_trace_level > 0 ? s->max_trace_level : DEFAULT_MAX_DEPTH,
 		.integrator = o->integrator, .adc_bailout = s->adc_bailout, .gamma = s->film_gamma, .quiet = o->quiet,
-		.aov = needs_aov_buffer(o),
+		.aov = needs_aov_buffer(o) || o->pov.alpha,   /* the alpha channel's sums are there */
 		.time_limit = o->time_limit,
 		.checkpoint = o->checkpoint, .on_checkpoint = write_film, .ctx = &out, .stop = &stop_signal,
 		.frame = fi->frame, .frame_index = fi->index, .frames = fi->frames, .anim_seconds = fi->seconds,
@@ -691,7 +718,7 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 	for (long k = 0; k < frames && rc == 0 && !stop_signal; k++) {
 		cli_frame_goto(frame, frame->first + k);
 		char *output = cli_pov_output(&o->pov, frame, o->scene, o->output);
-		rc = !output || (!o->check && check_output(o->scene, output));
+		rc = !output || (!o->check && check_output(o->scene, output, o->pov.alpha));
 		set_clock(eopt, frame);
 		struct frame_info fi = { frame->frame, k, frames, frame->clock, seconds_since(&t0) };
 		scene s;
@@ -733,9 +760,9 @@ int main(int argc, char **argv)
 	if (!output)
 		return 1;
 	int rc = 1;
-	int bad_output = !o.dump_ast && !o.check && check_output(o.scene, output);
+	int bad_output = !o.dump_ast && !o.check && check_output(o.scene, output, o.pov.alpha);
 	for (int i = 0; i < o.n_aovs && !bad_output && !o.check && !o.dump_ast; i++)
-		bad_output = check_output(o.scene, o.aov_file[i]);
+		bad_output = check_output(o.scene, o.aov_file[i], 0);
 	int part[4], has_part = cli_pov_region(&o.pov, o.width, o.height, part);
 	free(output);
 	if (bad_output || has_part < 0)
