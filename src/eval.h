@@ -51,6 +51,11 @@ typedef struct {
 	unsigned mesh_time_limit;
 	/* Mesh files read by earlier frames of an animation (mesh_io.h), or NULL. */
 	struct mesh_io_cache *mesh_cache;
+	/* Called with the name of every file the scene reads (#include, mesh
+	 * files, images, fonts, #fopen to read) once eval_access lets it
+	 * (--depfile), or NULL. */
+	void (*on_read)(void *ctx, const char *path);
+	void *on_read_ctx;
 	/* File I/O security (eval_access.c): the files a scene may make eclat read
 	 * and write. The scene's own folder and the include folders always count;
 	 * io_current_folder adds the current one (the command line's), which the

@@ -215,14 +215,21 @@ bool eval_access_allowed(struct eval *e, const char *path, bool write)
 	return ok;
 }
 
+static int allowed(struct eval *e, const char *path, bool write)
+{
+	if (!write && e->opt->on_read)
+		e->opt->on_read(e->opt->on_read_ctx, path);
+	return 0;
+}
+
 int eval_access(struct eval *e, const char *path, bool write, src_loc loc, const char *what)
 {
 	if (e->opt->io_security == EVAL_IO_NONE)
-		return 0;
+		return allowed(e, path, write);
 	char *r = resolve(path);
 	if (permitted(e, r, write)) {
 		free(r);
-		return 0;
+		return allowed(e, path, write);
 	}
 	const char *verb = write ? "write" : "read";
 	if (!r && errno == ENOENT) {

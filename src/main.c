@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "cli_pov.h"
+#include "depfile.h"
 #include "device.h"
 #include "eval.h"
 #include "film.h"
@@ -34,7 +35,7 @@
 #define MAX_LIST 64   /* -I and -D options each */
 
 struct options {
-	const char *scene, *output, *kernel_dir, *export_mesh2;
+	const char *scene, *output, *kernel_dir, *export_mesh2, *depfile;
 	int width, height, samples, seed, max_depth, device, quiet, integrator;
 	int list_devices, check, dump_ast, dump_scene;
 	double time_limit, checkpoint;
@@ -56,7 +57,7 @@ struct options {
 enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_DIR,
        OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_BVH_LAYOUT, OPT_STATS, OPT_SKIP_UNSUPPORTED, OPT_EXPORT_MESH2,
        OPT_MAX_INCLUDE_DEPTH, OPT_MAX_MACRO_DEPTH, OPT_MAX_LOOP_ITERATIONS, OPT_MESH_TIME_LIMIT,
-       OPT_IO_SECURITY, OPT_IO_ALLOW, OPT_IO_ALLOW_WRITE, OPT_THREADS };
+       OPT_IO_SECURITY, OPT_IO_ALLOW, OPT_IO_ALLOW_WRITE, OPT_THREADS, OPT_DEPFILE };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -84,6 +85,7 @@ static const struct option long_options[] = {
 	{ "io-allow", required_argument, NULL, OPT_IO_ALLOW },
 	{ "io-allow-write", required_argument, NULL, OPT_IO_ALLOW_WRITE },
 	{ "threads", required_argument, NULL, OPT_THREADS },
+	{ "depfile", required_argument, NULL, OPT_DEPFILE },
 	{ "device", required_argument, NULL, OPT_DEVICE },
 	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
 	{ "kernel-dir", required_argument, NULL, OPT_KERNEL_DIR },
@@ -143,6 +145,8 @@ static void usage(FILE *out)
 		"                        writes restricted; none: anything (see SECURITY in eclat(1))\n"
 		"      --io-allow DIR    let the scene read files in DIR and below (repeatable)\n"
 		"      --io-allow-write DIR  let it read and write files in DIR and below (repeatable)\n"
+		"      --depfile FILE    write a make rule: the images depend on the scene and every\n"
+		"                        file it read (includes, meshes, images, fonts, #fopen)\n"
 		"      --check           check the scene for errors and warnings, render nothing\n"
 		"      --dump-ast        print the syntax tree and exit\n"
 		"      --dump-scene      print the evaluated scene in world space and exit\n"
@@ -299,6 +303,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case OPT_MAX_DEPTH: o->max_depth = int_arg("--max-depth", optarg, 0, 256); break;
 		case OPT_DEVICE: o->device = int_arg("--device", optarg, 0, 63); break;
 		case OPT_THREADS: o->threads = int_arg("--threads", optarg, 1, 512); break;
+		case OPT_DEPFILE: o->depfile = optarg; break;
 		case OPT_INTEGRATOR: o->integrator = integrator_arg(optarg); break;
 		case OPT_TIME_LIMIT: o->time_limit = seconds_arg("--time-limit", optarg); break;
 		case OPT_CHECKPOINT: o->checkpoint = seconds_arg("--checkpoint", optarg); break;
@@ -714,11 +719,19 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 	clock_gettime(CLOCK_MONOTONIC, &t0);
 	long frames = o->check ? 1 : frame->frames;
 	eopt->mesh_cache = frames > 1 ? mesh_io_cache_new() : NULL;
-	int rc = 0;
+	depfile *deps = o->depfile ? depfile_new() : NULL;
+	int rc = o->depfile && (!deps || depfile_add(deps, DEPFILE_INPUT, o->scene));
+	if (deps) {
+		eopt->on_read = depfile_on_read;
+		eopt->on_read_ctx = deps;
+		for (int i = 0; i < o->n_aovs; i++)
+			rc = rc || depfile_add(deps, DEPFILE_TARGET, o->aov_file[i]);
+	}
 	for (long k = 0; k < frames && rc == 0 && !stop_signal; k++) {
 		cli_frame_goto(frame, frame->first + k);
 		char *output = cli_pov_output(&o->pov, frame, o->scene, o->output);
-		rc = !output || (!o->check && check_output(o->scene, output, o->pov.alpha));
+		rc = !output || (!o->check && check_output(o->scene, output, o->pov.alpha)) ||
+		     (deps && depfile_add(deps, DEPFILE_TARGET, output));
 		set_clock(eopt, frame);
 		struct frame_info fi = { frame->frame, k, frames, frame->clock, seconds_since(&t0) };
 		scene s;
@@ -739,6 +752,9 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 		fprintf(stderr, "eclat: %ld frames in %.2f s (the kernels built %d time%s; %d mesh file%s and %d mesh "
 		        "BVH%s reused)\n", frames, seconds_since(&t0), keep.builds, keep.builds == 1 ? "" : "s", files,
 		        files == 1 ? "" : "s", bvhs, bvhs == 1 ? "" : "s");
+	if (deps && rc == 0)
+		rc = depfile_write(deps, o->depfile) ? 1 : 0;
+	depfile_free(deps);
 	mesh_io_cache_free(eopt->mesh_cache);
 	eopt->mesh_cache = NULL;
 	render_keep_free(&keep);
