@@ -10,7 +10,7 @@ extern "C" {
 
 /* Writes linear RGB (3 floats a pixel, top row first) in the format the file's
  * extension names. PNG, JPEG and other 8-bit formats get the sRGB transfer and are
- * clamped; EXR, HDR, TIFF and PFM stay linear floats, unclamped. The file appears
+ * clamped; EXR, HDR and TIFF stay linear floats, unclamped. The file appears
  * whole or not at all: the image is written to a temporary file beside it and
  * renamed. Returns 0, or -1 with a message in err. */
 /* What the file records about the render (EXR keeps it as metadata). */

@@ -22,6 +22,7 @@
 #include "parse.h"
 #include "render.h"
 #include "render_keep.h"
+#include "suggest.h"
 
 #define DEFAULT_WIDTH 640
 #define DEFAULT_HEIGHT 480
@@ -105,7 +106,8 @@ static void usage(FILE *out)
 		"Render a POV-Ray-style scene with a path tracer on an OpenCL device.\n"
 		"\n"
 		"  -o, --output FILE     image to write; the extension picks the format (.png, .exr,\n"
-		"                        .hdr, .tif, .jpg); default: SCENE's name with .png\n"
+		"                        .hdr, .tif, .jpg, .tga, .bmp, .webp, .ppm); default: SCENE's\n"
+		"                        name with .png\n"
 		"  -W, --width N         image width in pixels (default %d)\n"
 		"  -H, --height N        image height in pixels (default %d)\n"
 		"  -s, --samples N       samples per pixel (default %d)\n"
@@ -283,6 +285,21 @@ static int integrator_arg(const char *s)
 	exit(1);
 }
 
+/* After getopt_long's "unrecognized option '--widht'": the option meant. */
+static void hint_option(const char *arg)
+{
+	if (strncmp(arg, "--", 2) != 0)
+		return;
+	char word[64];
+	snprintf(word, sizeof word, "%.*s", (int)strcspn(arg + 2, "="), arg + 2);
+	const char *near = NULL;
+	int dist = 0;
+	for (const struct option *l = long_options; l->name; l++)
+		suggest_consider(word, l->name, &near, &dist);
+	if (near)
+		fprintf(stderr, "eclat: did you mean '--%s'?\n", near);
+}
+
 static void parse_options(int argc, char **argv, struct options *o)
 {
 	*o = (struct options){ .width = DEFAULT_WIDTH, .height = DEFAULT_HEIGHT,
@@ -339,6 +356,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case 'h': usage(stdout); exit(0);
 		case 'V': printf("eclat %s\n", PACKAGE_VERSION); exit(0);
 		default:
+			hint_option(argv[optind - 1]);
 			fprintf(stderr, "Try 'eclat --help' for more information.\n");
 			exit(1);
 		}
@@ -386,8 +404,8 @@ static int check_output(const char *scene, const char *output, int alpha)
 		return -1;
 	}
 	if (!image_format_known(output)) {
-		fprintf(stderr, "eclat: cannot write '%s': unknown image format (use .png, .exr, .hdr, .tif or .jpg)\n",
-		        output);
+		fprintf(stderr, "eclat: cannot write '%s': unknown image format (use .png, .exr, .hdr, .tif, .jpg, .tga, "
+		        ".bmp, .webp or .ppm)\n", output);
 		return -1;
 	}
 	return 0;
@@ -643,6 +661,10 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		if (ran && wrote)
 			fprintf(stderr, "eclat: the render failed after %ld samples per pixel; '%s' holds those\n",
 			        st.samples, output);
+		else if (wrote && st.samples < rs.samples)   /* said even with -q: the image is not what was asked */
+			fprintf(stderr, "eclat: stopped early by %s: '%s' holds %ld of the %d samples per pixel asked for\n",
+			        stop_signal == SIGINT ? "Ctrl-C (SIGINT)" : stop_signal ? "SIGTERM"
+			        : "--time-limit", output, st.samples, rs.samples);
 	}
 	film_free(&f);
 	lower_free(&lr);
