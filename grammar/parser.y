@@ -171,9 +171,9 @@ function:
 /* ---- directives ---- */
 
 directive:
-	decl_kw lvalue '=' value              { $$ = ast_declare(L(@1), $1, $2, $4); }
+	decl_kw lvalue '=' value              { $$ = ast_declare(L(@1), $1, $2, $4); $$->num = yychar == ';'; }
 	| decl_kw T_DEPRECATED deprecation T_STRING lvalue '=' value
-	                                      { $$ = ast_declare(L(@1), $1, $5, $7); free($4); }
+	                                      { $$ = ast_declare(L(@1), $1, $5, $7); free($4); $$->num = yychar == ';'; }
 	| D_INCLUDE cexpr %prec LOW           { $$ = ast_op(AST_INCLUDE, L(@1), 0, $2, NULL); }
 	| D_MACRO T_IDENT '(' params ')' T_MACRO_BODY
 	                                      { $$ = ast_named(AST_MACRO, L(@1), $2, $4, $6); }

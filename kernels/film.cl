@@ -42,6 +42,13 @@ inline long4 film_fixed(float3 l, uint tests)
 	return (long4)(convert_long3_rte(c), (long)tests);
 }
 
+/* The background's share of a sample (POV-Ray's transmittance, 1 - alpha),
+ * summed where the aov buffer has room: a[2].z. */
+inline void film_add_transm(global float4 *aov, int pixel, float transm)
+{
+	aov[AOV_FLOAT4S * pixel + 2].z += clamp(transm, 0.0f, 1.0f);
+}
+
 /* The work item's ray and test counters into the pass's. */
 inline void film_add_counts(global uint *counters, const uint *counts)
 {

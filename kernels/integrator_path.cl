@@ -26,7 +26,7 @@ inline int path_skip(int depth, bool reflected)
 	return depth == 0 ? OBJECT_NO_IMAGE : reflected ? OBJECT_NO_REFLECTION : 0;
 }
 
-inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, first_hit *first)
+inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, first_hit *first, float *transm)
 {
 	global const dev_params *p = sc->p;
 	float3 o, d;
@@ -83,7 +83,9 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 			continue;
 		}
 		if (hit.prim < 0) {
-			radiance += beta * texture_sky(sc, d);
+			radiance += beta * texture_sky(sc, d, depth == 0);
+			if (depth == 0)   /* the camera ray that meets nothing shows the background */
+				*transm = texture_sky_transm(sc, d);
 			break;
 		}
 		shading_point sp = texture_point(sc, hit, o, d);
@@ -167,9 +169,12 @@ kernel void render_pass(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, g
 		uint key = rng_key((uint)pixel, (uint)(p->sample_base + s), (uint)p->seed);
 		uint tests = path_tests(counts);
 		first_hit first = { (float3)(0.0f), (float3)(0.0f), 0.0f, -1 };
-		float3 l = film_finite(path_radiance(&sc, px, py, key, &first));
-		if (p->aov)
+		float transm = 0.0f;
+		float3 l = film_finite(path_radiance(&sc, px, py, key, &first, &transm));
+		if (p->aov) {
 			film_add_aov(aov, pixel, &first, p->sample_base + s);
+			film_add_transm(aov, pixel, transm);
+		}
 		/* sample by sample, so the sums do not depend on how samples group into passes */
 		acc += film_fixed(l, path_tests(counts) - tests);
 	}

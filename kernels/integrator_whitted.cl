@@ -37,6 +37,8 @@ typedef struct {
 	int kind;          /* WRAY_ */
 	int solids;        /* the solid (non-hollow) objects it is in: no fog while there is one */
 	media_stack media; /* the interiors with media it is in */
+	float alpha;       /* the parent's transmittance gets alpha * this ray's (POV-Ray's
+	                    * resultTransm): the transmitted ray's, 0 for the others */
 } whitted_ray;
 
 typedef struct {
@@ -44,6 +46,7 @@ typedef struct {
 	float3 colour;     /* the ray's colour so far */
 	float fog_t;       /* how far the ray goes through fog (INFINITY: it leaves the scene), or -1 */
 	float media_t;     /* how far it goes through its interiors' media, or -1 */
+	float transm;      /* how much of the background shows through, for the alpha channel */
 	whitted_ray child[WHITTED_CHILDREN];
 	int n_child, next;
 } whitted_frame;
@@ -304,7 +307,7 @@ inline float3 whitted_reflectivity(global const dev_material *f, float3 pigment,
 inline whitted_ray whitted_child(float3 o, float3 d, float3 mult, float exponent, float weight, int level, int kind,
                                  int solids, media_stack media)
 {
-	whitted_ray r = { o, d, mult, exponent, weight, level, kind, solids, media };
+	whitted_ray r = { o, d, mult, exponent, weight, level, kind, solids, media, 0.0f };
 	return r;
 }
 
@@ -320,6 +323,7 @@ inline void whitted_add_child(whitted_frame *fr, whitted_ray r)
 		    c->level == r.level && c->solids == r.solids && c->media.n == r.media.n &&
 		    (r.media.n == 0 || c->media.first[r.media.n - 1] == r.media.first[r.media.n - 1])) {
 			c->mult += r.mult;
+			c->alpha += r.alpha;
 			c->weight = fmax(c->weight, r.weight);
 			return;
 		}
@@ -395,9 +399,12 @@ inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_poi
 		float3 att = entering ? (float3)(1.0f) : visibility_fade(sp.m, t_hit);
 		float ratio = entering ? 1.0f / ior : ior;
 		float3 below = sp.x - sp.eps * ng;
+		float alpha = w * whitted_grey(att) * trans;   /* the background seen through */
 		if (fabs(ratio - 1.0f) < POV_EPSILON) {
-			whitted_add_child(fr, whitted_child(below, ray.d, w * att * filcol, 1.0f, tweight, level,
-			                                    image | WRAY_CONTINUED | (ray.kind & WRAY_REFLECTED), through, inside));
+			whitted_ray c = whitted_child(below, ray.d, w * att * filcol, 1.0f, tweight, level,
+			                              image | WRAY_CONTINUED | (ray.kind & WRAY_REFLECTED), through, inside);
+			c.alpha = alpha;
+			whitted_add_child(fr, c);
 		} else {
 			float t = 1.0f + ratio * ratio * (cos_i * cos_i - 1.0f);
 			if (t < 0.0f) {   /* total internal reflection, unfiltered */
@@ -407,8 +414,10 @@ inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_poi
 				                                    WRAY_REFLECTED, ray.solids, ray.media));
 			} else {
 				float3 dir = ratio * ray.d + (ratio * cos_i - sqrt(t)) * top_n;
-				whitted_add_child(fr, whitted_child(below, normalize(dir), w * att * filcol, 1.0f, tweight, level,
-				                                    image | (ray.kind & WRAY_REFLECTED), through, inside));
+				whitted_ray c = whitted_child(below, normalize(dir), w * att * filcol, 1.0f, tweight, level,
+				                              image | (ray.kind & WRAY_REFLECTED), through, inside);
+				c.alpha = alpha;
+				whitted_add_child(fr, c);
 			}
 		}
 	}
@@ -429,6 +438,7 @@ inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_
 	fr.colour = (float3)(0.0f);
 	fr.fog_t = -1.0f;
 	fr.media_t = -1.0f;
+	fr.transm = 0.0f;
 	fr.n_child = fr.next = 0;
 	global const dev_params *p = sc->p;
 	if (ray.level >= p->max_depth || ray.weight < p->classic.w)
@@ -441,7 +451,9 @@ inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_
 	if (ray.solids == 0 && ray.media.n > 0 && hit.prim >= 0)
 		fr.media_t = hit.t;
 	if (hit.prim < 0) {
-		fr.colour = texture_sky(sc, ray.d);
+		bool alpha_ray = !(ray.kind & WRAY_REFLECTED);
+		fr.colour = texture_sky(sc, ray.d, alpha_ray);
+		fr.transm = alpha_ray ? texture_sky_transm(sc, ray.d) : 0.0f;
 		return fr;
 	}
 	int level = ray.level + (ray.kind & WRAY_CONTINUED ? 0 : 1);
@@ -454,7 +466,7 @@ inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_
 
 /* The colour of a camera ray: POV-Ray's recursion, as a walk over a stack of
  * frames; a finished frame adds its colour to its parent's. */
-inline float3 whitted_radiance(const scene_data *sc, whitted_ray camera, first_hit *first)
+inline float3 whitted_radiance(const scene_data *sc, whitted_ray camera, first_hit *first, float *transm)
 {
 	global const dev_params *p = sc->p;
 	whitted_frame stack[WHITTED_FRAMES];
@@ -483,10 +495,14 @@ inline float3 whitted_radiance(const scene_data *sc, whitted_ray camera, first_h
 			fog_effect fe = fog_segment(sc, r.o, r.d, top->fog_t, false);
 			c = fe.add + fe.att * c;
 		}
-		if (--sp == 0)
+		float tr = top->transm;
+		if (--sp == 0) {
 			result = c;
-		else
+			*transm = tr;
+		} else {
 			stack[sp - 1].colour += r.mult * whitted_pow3(c, r.exponent);
+			stack[sp - 1].transm += r.alpha * tr;
+		}
 	}
 	return result;
 }
@@ -516,6 +532,7 @@ kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p
 		 * rays, is the path tracer's. Where the camera makes no ray, POV-Ray's
 		 * pixel is black. */
 		float3 o, d, l = (float3)(0.0f);
+		float transm = 0.0f;
 		first_hit first = { (float3)(0.0f), (float3)(0.0f), 0.0f, -1 };
 		uint tests = counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA];
 		float2 at = whitted_subpixel(p->sample_base + s);
@@ -524,11 +541,13 @@ kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p
 			whitted_ray camera = whitted_child(o, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE, p->camera_solids,
 			                                   around);
 			counts[COUNT_RAYS + RAY_CAMERA]++;
-			l = film_finite(whitted_radiance(&sc, camera, &first));
+			l = film_finite(whitted_radiance(&sc, camera, &first, &transm));
 		}
 		acc += film_fixed(l, counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA] - tests);
-		if (p->aov)
+		if (p->aov) {
 			film_add_aov(aov, pixel, &first, p->sample_base + s);
+			film_add_transm(aov, pixel, transm);
+		}
 	}
 	film[pixel] = acc;
 	film_add_counts(counters, counts);

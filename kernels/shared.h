@@ -421,13 +421,15 @@ enum {
  * vertical angle, both in radians. */
 typedef struct {
 	float4 cam_location, cam_direction, cam_right, cam_up;
-	float4 background;  /* rgb: what rays that leave the scene see */
+	float4 background;  /* rgb: what rays that leave the scene see; w: under +UA, how much
+	                     * of it is transparent, 0 without */
 	float4 lens;        /* x: aperture (0: pinhole), y: POV-Ray's focal distance,
 	                     * z: the camera's type, CAMERA_ */
 	int width, height, max_depth, seed;
 	int n_lights, sample_base, samples_per_pass, n_prims;
 	int n_planes, n_emitters, integrator, aov;   /* aov: 1 when the aov buffer is there */
-	float4 classic;     /* the Whitted integrator's: w: adc_bailout */
+	float4 classic;     /* the Whitted integrator's: w: adc_bailout; x (both integrators'):
+	                     * under +UA, the background's filter + transmit, 0 without */
 	int scene_flags;    /* SCENE_ */
 	int sky;            /* the sky_sphere's first material, or -1: the background alone */
 	int sky_layers;     /* its pigments are materials sky .. sky + sky_layers - 1 */

@@ -481,7 +481,7 @@ inline pigment_colour texture_choose(const scene_data *sc, shading_point *sp, fl
  * point of the unit sphere the ray points to, the last written on top, each
  * showing what is below through its filter and transmit, and the background
  * below them all (POV-Ray 3.7's sky, with its emission in the layers'). */
-inline float3 texture_sky(const scene_data *sc, float3 d)
+inline float3 texture_sky(const scene_data *sc, float3 d, bool alpha_ray)
 {
 	global const dev_params *p = sc->p;
 	float3 col = (float3)(0.0f), through = (float3)(1.0f);
@@ -507,9 +507,33 @@ inline float3 texture_sky(const scene_data *sc, float3 d)
 		transmits *= c.transmit;
 		trans = fabs(filters) + fabs(transmits);
 	}
+	/* under +UA, rays that show the background as transparent (all but
+	 * reflected ones, as in POV-Ray) see its colour times its opacity */
+	float opacity = alpha_ray ? 1.0f - p->classic.x : 1.0f;
 	if (legacy && p->sky >= 0)
-		return col + p->background.xyz * (colours * filters + transmits);
-	return col + p->background.xyz * through;
+		return col + p->background.xyz * opacity * (colours * filters + transmits);
+	return col + p->background.xyz * opacity * through;
+}
+
+/* How much of the image's background shows through the sky in direction d,
+ * for the alpha channel: POV-Ray's transmittance of the sky's layers times
+ * the background's own (dev_params.background.w, 0 without an alpha channel). */
+inline float texture_sky_transm(const scene_data *sc, float3 d)
+{
+	global const dev_params *p = sc->p;
+	if (p->background.w <= 0.0f)
+		return 0.0f;
+	float3 through = (float3)(1.0f);
+	shading_point sp;
+	sp.x = sp.object_x = d;
+	sp.ng = sp.ns = -d;
+	sp.d = d;
+	for (int i = p->sky + p->sky_layers - 1; p->sky >= 0 && i >= p->sky; i--) {
+		sp.m = &sc->materials[i];
+		pigment_colour c = texture_pigment(sc, &sp);
+		through *= c.filter * c.rgb + c.transmit;
+	}
+	return fmin(1.0f, fabs(0.297f * through.x + 0.589f * through.y + 0.114f * through.z)) * p->background.w;
 }
 
 inline void texture_first_hit(first_hit *first, const shading_point *sp, float3 albedo)

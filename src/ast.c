@@ -160,7 +160,8 @@ ast_node *ast_named(ast_kind kind, src_loc loc, char *name, ast_node *a, ast_nod
 }
 
 /* target is an AST_IDENT, or AST_INDEX nodes around one: #declare A[1][2] = V
- * becomes (#declare A V 1 2). */
+ * becomes (#declare A V 1 2). The parser sets num to 1 when a ';' follows V
+ * (the token after an expression, which it has read to end the expression). */
 ast_node *ast_declare(src_loc loc, int op, ast_node *target, ast_node *value)
 {
 	ast_node *n = ast_new(AST_DECLARE, loc);

@@ -347,10 +347,7 @@ static void apply(cli_args *a, enum kind k, const struct setting *s, src_loc key
 	case K_TO_FILE: if (!s->on) diag_warning(s->loc, "%s: eclat always writes the image", s->name); break;
 	case K_TYPE: file_type(p, s); break;
 	case K_BITS: p->bits = (int)whole(s, 1, 16); break;
-	case K_ALPHA:
-		if (s->on)
-			diag_warning(s->loc, "%s: eclat does not write an alpha channel yet; the image is opaque", s->name);
-		break;
+	case K_ALPHA: p->alpha = s->on; break;
 	case K_AA:
 		if (s->value)
 			number(s);
@@ -609,9 +606,11 @@ int cli_pov_args(int argc, char **argv, const struct option *longopts, const cha
 	return a.n;
 }
 
+/* POV-Ray's reading of +SF and +EF (its animationprocessing.cpp): a fraction
+ * counts frames from 0, not from the first frame, then is clamped. */
 static long subset_frame(double v, long first, long last)
 {
-	return v >= 0 ? (long)v : first + lround((-1 - v) * (double)(last - first));
+	return v >= 0 ? (long)v : (long)((double)(last - first + 1) * (-1 - v));
 }
 
 void cli_pov_frame(const cli_pov *p, cli_frame *f)
@@ -619,27 +618,36 @@ void cli_pov_frame(const cli_pov *p, cli_frame *f)
 	*f = (cli_frame){ .clock = p->clock, .clock_on = p->clock_given, .frames = 1 };
 	if (!p->anim)
 		return;
-	long first = p->initial_frame, last = p->final_frame;
-	/* a cyclic animation's last frame is one short of the clock's end */
-	long span = last - first + (p->cyclic ? 1 : 0);
-	long from = first, to = last;
+	long first = p->initial_frame < 0 ? 0 : p->initial_frame;
+	/* a cyclic animation has one frame more, which it does not render: the
+	 * clock's end is the first frame again */
+	long last = (p->final_frame < first ? first : p->final_frame) + (p->cyclic ? 1 : 0);
+	long from = first, to = last - (p->cyclic ? 1 : 0);
 	if (p->subset_start_given)
 		from = subset_frame(p->subset_start, first, last);
 	if (p->subset_end_given)
 		to = subset_frame(p->subset_end, first, last);
-	from = from < first ? first : from > last ? last : from;
+	from = from < first ? first : from;
 	to = to > last ? last : to < from ? from : to;
-	f->frame = from;
+	f->first = from;
 	f->frames = to - from + 1;
 	f->initial_frame = first;
-	f->final_frame = last + (p->cyclic ? 1 : 0);
+	f->final_frame = last;
 	f->initial_clock = p->initial_clock;
 	f->final_clock = p->final_clock;
 	f->clock_on = 1;
-	f->clock_delta = span ? (p->final_clock - p->initial_clock) / (double)span : 0;
-	f->clock = p->initial_clock + f->clock_delta * (double)(from - first);
+	f->clock_delta = last > first ? (p->final_clock - p->initial_clock) / (double)(last - first) : 0;
 	char digits[32];
 	f->digits = snprintf(digits, sizeof digits, "%ld", last);
+	cli_frame_goto(f, from);
+}
+
+void cli_frame_goto(cli_frame *f, long frame)
+{
+	if (!f->digits)   /* no frame range: the one frame, at +K's clock */
+		return;
+	f->frame = frame;
+	f->clock = f->initial_clock + f->clock_delta * (double)(frame - f->initial_frame);
 }
 
 static const char *type_extension(char t)
@@ -655,10 +663,8 @@ static const char *type_extension(char t)
 	}
 }
 
-char *cli_pov_output(const cli_pov *p, const char *scene, const char *output)
+char *cli_pov_output(const cli_pov *p, const cli_frame *f, const char *scene, const char *output)
 {
-	cli_frame f;
-	cli_pov_frame(p, &f);
 	int from_scene = !output || !*output || output[strlen(output) - 1] == '/';   /* +Ofolder/ */
 	const char *path = from_scene ? scene : output, *name = strrchr(path, '/');
 	name = name ? name + 1 : path;
@@ -670,8 +676,8 @@ char *cli_pov_output(const cli_pov *p, const char *scene, const char *output)
 	/* the scene's extension gives way to the image's; an output's own is kept */
 	const char *ext = from_scene || !dot ? type_extension(p->file_type) : dot;
 	char frame[32] = "";
-	if (f.digits)
-		snprintf(frame, sizeof frame, "%0*ld", f.digits, f.frame);
+	if (f->digits)
+		snprintf(frame, sizeof frame, "%0*ld", f->digits, f->frame);
 	char *out = NULL;
 	if (asprintf(&out, "%.*s%.*s%s%s", (int)dir_len, from_scene ? (output ? output : "") : path, (int)stem, name,
 	             frame, ext) < 0)

@@ -20,6 +20,7 @@ typedef struct {
 	const char *after_display;   /* the argument after a bare -D, for a hint when it was meant as -D NAME */
 	char file_type;              /* +F's letter in upper case ('N': PNG...); 0: not given */
 	int bits;                    /* +FN16: 16; 0: the format's own */
+	int alpha;                   /* +UA, Output_Alpha: the image gets an alpha channel */
 	int antialias;               /* +A: 1, -A: 0, not given: -1 */
 	int anim;                    /* Initial_Frame or Final_Frame was given */
 	int clock_given, cyclic, subset_start_given, subset_end_given;
@@ -30,13 +31,15 @@ typedef struct {
 	int region_given;            /* a bit for each */
 } cli_pov;
 
-/* The animation values of the one frame eclat renders (the first one asked
- * for), by POV-Ray 3.7's formulas; digits: the width of the frame number in
- * the output's name (that of final_frame), 0 without a frame range. */
+/* The animation's values at one frame, by POV-Ray 3.7's formulas (its
+ * animationprocessing.cpp); digits: the width of the frame number in the
+ * output's name (that of final_frame), 0 without a frame range. The frames
+ * asked for are first .. first + frames - 1 (+SF, +EF). */
 typedef struct {
 	double clock, clock_delta, initial_clock, final_clock;
 	int clock_on, digits;
-	long frame, initial_frame, final_frame, frames;   /* frames: how many were asked for */
+	long frame, initial_frame, final_frame;
+	long first, frames;
 } cli_frame;
 
 /* Rewrites argv (kept: argv[0]) into eclat's options in *out, NULL-terminated,
@@ -47,7 +50,10 @@ typedef struct {
 int cli_pov_args(int argc, char **argv, const struct option *longopts, const char *shortopts,
                  cli_pov *pov, char ***out);
 
+/* The animation asked for, at its first frame. */
 void cli_pov_frame(const cli_pov *pov, cli_frame *f);
+/* f at another frame: frame_number and clock. */
+void cli_frame_goto(cli_frame *f, long frame);
 
 /* The part of the image POV-Ray's +SC +SR +EC +ER (Start_Column...) ask for,
  * in pixels from 0, inclusive, in rect (ORDER CLI_REGION_). Returns 1 when a
@@ -57,10 +63,10 @@ enum { CLI_REGION_LEFT, CLI_REGION_TOP, CLI_REGION_RIGHT, CLI_REGION_BOTTOM };
 int cli_pov_region(const cli_pov *pov, int width, int height, int rect[4]);
 
 /* The image's name: output, or the scene's stem in the current folder as POV-Ray
- * names it; the frame number (with a frame range) goes before the extension,
+ * names it; f's frame number (with a frame range) goes before the extension,
  * and a name without an extension gets that of +F's type (.png by default).
  * Returns a new string, NULL when out of memory. */
-char *cli_pov_output(const cli_pov *pov, const char *scene, const char *output);
+char *cli_pov_output(const cli_pov *pov, const cli_frame *f, const char *scene, const char *output);
 
 /* ---- between cli_pov.c and cli_ini.c */
 typedef struct cli_args cli_args;

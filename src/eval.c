@@ -883,6 +883,23 @@ static int include_value(struct eval *e, const ast_node *inc, value *out)
 static int array_target(struct eval *e, const ast_node *d, value v);
 
 /* #declare NAME [Index...] = VALUE, #local ... */
+/* POV-Ray 3.5 and later want a ';' after a #declare of a float, a vector or
+ * a colour (its Parse_Semi_Colon). A macro's call may bring its own ';'
+ * (eclat does not expand macros into tokens), so it is let through. */
+static void check_semicolon(struct eval *e, const ast_node *d, const value *v)
+{
+	const ast_node *rhs = d->kids[0];
+	if (d->num != 0 || e->version < 3.5 || (v->kind != V_FLOAT && v->kind != V_VECTOR && v->kind != V_COLOR))
+		return;
+	if (rhs->kind == AST_CALL) {
+		const value *callee = eval_lookup(e, rhs->str);
+		if (callee && callee->kind == V_MACRO)
+			return;
+	}
+	eval_error(e, d->loc, "a #%s of a float, vector or colour needs a ';' after its value under #version 3.5 "
+	           "and later, as in POV-Ray (add it, or say #version 3.1)", d->op == 'l' ? "local" : "declare");
+}
+
 static void run_declare(struct eval *e, const ast_node *d)
 {
 	const ast_node *rhs = d->kids[0];
@@ -894,6 +911,8 @@ static void run_declare(struct eval *e, const ast_node *d)
 	int rc = AST_IS_EXPRESSION(rhs->kind) ? eval_expr(e, rhs, &v) :
 	         rhs->kind == AST_INCLUDE ? include_value(e, rhs, &v) : eval_block_value(e, rhs, &v);
 	e->deferring -= defer;
+	if (rc == 0)   /* an error, but X is declared all the same: no "undeclared X" after it */
+		check_semicolon(e, d, &v);
 	if (rc == 0 && d->n_kids > 1)
 		array_target(e, d, v);
 	else if (rc == 0)

@@ -53,6 +53,8 @@ typedef struct {
 	/* Bytes the scene's images, meshes and height fields may take
 	 * (--memory-limit); 0: what the host has available (eval_memory.c). */
 	double memory_limit;
+	/* Mesh files read by earlier frames of an animation (mesh_io.h), or NULL. */
+	struct mesh_io_cache *mesh_cache;
 	/* File I/O security (eval_access.c): the files a scene may make eclat read
 	 * and write. The scene's own folder and the include folders always count;
 	 * io_current_folder adds the current one (the command line's), which the

@@ -1032,7 +1032,8 @@ static int mesh_file(struct eval *e, struct cursor *c, const ast_node *item, str
 	free(name);
 	scene_mesh m;
 	int rc = eval_access(e, path, false, arg->loc, "a mesh");
-	if (rc == 0 && (rc = mesh_io_load(path, e->opt->mesh_time_limit, &m, err, sizeof err)) != 0)
+	if (rc == 0 && (rc = mesh_io_load_cached(e->opt->mesh_cache, path, e->opt->mesh_time_limit, &m, err,
+	                                             sizeof err)) != 0)
 		eval_error(e, arg->loc, "cannot load the mesh '%s': %s", path, err);
 	free(path);
 	if (rc)

@@ -633,6 +633,9 @@ static int background(struct eval *e, const ast_node *b)
 		return -1;
 	for (int i = 0; i < 3; i++)
 		e->s->background[i] = (float)col[i];
+	int old = e->version < 3.7;   /* POV-Ray's parser: transparent for older scenes */
+	e->s->background_ft[0] = old ? 0.0f : (float)col[3];
+	e->s->background_ft[1] = old ? 1.0f : (float)col[4];
 	return 0;
 }
 

@@ -103,3 +103,14 @@ int film_aov(const film *f, const char *name, float *rgb)
 		aov_pixel(name, f->aov + i * AOV_FLOAT4S * 4, rgb + 3 * i);
 	return 0;
 }
+
+int film_alpha(const film *f, float *alpha)
+{
+	if (!f->aov)
+		return -1;
+	size_t n = (size_t)f->width * f->height;
+	float inv = f->samples > 0 ? 1.0f / (float)f->samples : 0.0f;
+	for (size_t i = 0; i < n; i++)   /* a[2].z of the pixel's sums (kernels/film.cl) */
+		alpha[i] = 1.0f - f->aov[(size_t)AOV_FLOAT4S * 4 * i + 10] * inv;
+	return 0;
+}

@@ -26,6 +26,11 @@ int film_init(film *f, int width, int height, int with_aov);
 void film_resolve(film *f, const int64_t *sums, long samples, float gamma);
 void film_free(film *f);
 
+/* The alpha channel (width * height): 1 minus the share of the samples that
+ * saw the background through (POV-Ray's transmittance), which the kernels
+ * sum into film.aov. Returns -1 when film.aov is missing. */
+int film_alpha(const film *f, float *alpha);
+
 /* 1 when name is an AOV: albedo, normal, depth, id or heat. */
 int film_aov_known(const char *name);
 /* Fills rgb (width * height * 3) with the AOV: albedo (of the first surface,

@@ -10,7 +10,7 @@ extern "C" {
 
 /* Writes linear RGB (3 floats a pixel, top row first) in the format the file's
  * extension names. PNG, JPEG and other 8-bit formats get the sRGB transfer and are
- * clamped; EXR, HDR, TIFF and PFM stay linear floats, unclamped. The file appears
+ * clamped; EXR, HDR and TIFF stay linear floats, unclamped. The file appears
  * whole or not at all: the image is written to a temporary file beside it and
  * renamed. Returns 0, or -1 with a message in err. */
 /* What the file records about the render (EXR keeps it as metadata). */
@@ -18,6 +18,9 @@ typedef struct {
 	const char *scene;   /* the scene file's name */
 	long samples;        /* per pixel */
 	int bits;            /* 16: 16 bits a channel in PNG and PPM; 0 or 8: 8 */
+	const float *alpha;  /* NULL, or one a pixel: the image gets an alpha channel, the colours
+	                      * being associated with it (black where alpha is 0); 8- and 16-bit
+	                      * formats store them divided by alpha, as PNG wants them */
 } image_meta;
 
 /* 0 when the temporary file tmp, just written and closed, is on the disk
@@ -76,6 +79,8 @@ int image_png_indices(const char *path, const image_limits *lim, unsigned char *
 int image_png_indices_here(const char *path, long max_texels, unsigned char **out, int *width, int *height);
 /* 1 when the extension of path names a format OpenImageIO can write. */
 int image_format_known(const char *path);
+/* 1 when that format can hold an alpha channel. */
+int image_format_alpha(const char *path);
 
 #ifdef __cplusplus
 }

@@ -77,6 +77,28 @@ extern "C" int image_written_whole(const char *tmp, int width, int height, char 
 	return w.empty() ? 0 : -1;
 }
 
+extern "C" int image_format_alpha(const char *path)
+{
+	auto out = ImageOutput::create(path);
+	return out && out->supports("alpha") ? 1 : 0;
+}
+
+/* RGB and alpha as the file wants them: linear formats keep the colours
+ * associated with alpha (OpenEXR's rule); the others get them divided by it,
+ * as PNG stores them, before their transfer. */
+static std::vector<float> with_alpha(const float *rgb, const float *alpha, size_t n, bool linear)
+{
+	std::vector<float> px(n * 4);
+	for (size_t i = 0; i < n; i++) {
+		float a = alpha[i] < 0.0f ? 0.0f : alpha[i] > 1.0f ? 1.0f : alpha[i];
+		float k = linear || a <= 0.0f ? 1.0f : 1.0f / a;
+		for (int c = 0; c < 3; c++)
+			px[4 * i + c] = rgb[3 * i + c] * k;
+		px[4 * i + 3] = a;
+	}
+	return px;
+}
+
 /* Writes pixels (channels floats a pixel) to a temporary file beside path, then
  * renames it: the file appears whole or not at all. srgb: encode the values for
  * an 8-bit format; they are display values already when not. */
@@ -87,8 +109,14 @@ static int write_atomic(const std::string &p, const float *rgb, int width, int h
 	if (!out)
 		return fail(err, errlen, "cannot write '" + p + "': no image format for this extension");
 	bool linear = is_linear_format(p);
+	bool alpha = meta && meta->alpha && channels == 3;
 	TypeDesc fixed = meta && meta->bits > 8 ? TypeDesc::UINT16 : TypeDesc::UINT8;   // formats without 16 bits get 8
-	ImageSpec spec(width, height, channels, linear ? TypeDesc::FLOAT : fixed);
+	ImageSpec spec(width, height, alpha ? 4 : channels, linear ? TypeDesc::FLOAT : fixed);
+	if (alpha) {
+		spec.alpha_channel = 3;
+		if (!linear)   // with_alpha divided them, before the transfer as it must be
+			spec.attribute("oiio:UnassociatedAlpha", 1);
+	}
 	spec.attribute("oiio:ColorSpace", linear ? "Linear" : "sRGB");
 	if (!linear && fixed == TypeDesc::UINT16)   // PNM's writer reads the depth from here
 		spec.attribute("oiio:BitsPerSample", 16);
@@ -98,10 +126,13 @@ static int write_atomic(const std::string &p, const float *rgb, int width, int h
 	if (meta)
 		spec.attribute("eclat:samples", (int)meta->samples);
 
-	std::vector<float> pixels(rgb, rgb + (size_t)width * height * channels);
+	size_t n = (size_t)width * height;
+	std::vector<float> pixels = alpha ? with_alpha(rgb, meta->alpha, n, linear)
+	                                  : std::vector<float>(rgb, rgb + n * channels);
 	if (!linear && srgb)
-		for (float &c : pixels)
-			c = srgb_encode(c);
+		for (size_t i = 0; i < pixels.size(); i++)
+			if (!alpha || i % 4 != 3)
+				pixels[i] = srgb_encode(pixels[i]);
 
 	// The temporary file sits beside the target, so the rename cannot cross file systems.
 	std::string dir = Filesystem::parent_path(p);

@@ -311,6 +311,14 @@ int lower_invert(const xform *t, xform *inv)
 	return 0;
 }
 
+void lower_background_alpha(const scene *s, dev_params *p)
+{
+	const float *bg = s->background, *ft = s->background_ft;
+	float through = ft[0] * (0.297f * bg[0] + 0.589f * bg[1] + 0.114f * bg[2]) + ft[1];
+	p->background.w = fminf(1.0f, fabsf(through));
+	p->classic.x = ft[0] + ft[1];
+}
+
 static double ms_since(const struct timespec *t0)
 {
 	struct timespec t1;
@@ -354,7 +362,11 @@ static int build_tree(struct lowering *lw, struct prim_list *list, bvh_tree *t, 
 	struct timespec t0;
 	clock_gettime(CLOCK_MONOTONIC, &t0);
 	int rc;
-	if (lw->opt->builder == LOWER_BVH_MEDIAN) {
+	lower_cache *cache = list != &lw->top ? lw->opt->cache : NULL;   /* a mesh's */
+	if (cache && lower_cache_find(cache, lw->opt, list->p, list->n, t)) {
+		rc = 0;
+		cache = NULL;
+	} else if (lw->opt->builder == LOWER_BVH_MEDIAN) {
 		bvh_box *boxes = malloc((list->n ? list->n : 1) * sizeof *boxes);
 		if (!boxes)
 			return -1;
@@ -369,6 +381,8 @@ static int build_tree(struct lowering *lw, struct prim_list *list, bvh_tree *t, 
 	list->box = NULL;
 	if (rc)
 		return -1;
+	if (cache)   /* before the permutation, which uses up prim_index */
+		lower_cache_keep(cache, lw->opt, list->p, list->n, t);
 	/* A copy in leaf order, or with no memory for one, the slower permutation
 	 * in place. The copy (64 bytes a primitive) hardly raises the peak: the
 	 * builder has just given back its records and the unused part of its
@@ -938,7 +952,7 @@ const char *lower_kernel_options(const lower_result *lr)
 int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 {
 	memset(out, 0, sizeof *out);
-	static const lower_options defaults = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_DEFAULT, 0, 0, 0 };
+	static const lower_options defaults = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_DEFAULT, 0, 0, 0, NULL };
 	struct lowering lw = { .opt = opt ? opt : &defaults, .s = s };
 	lw.target = &lw.top;
 	lw.meshes = calloc(s->n_meshes + 1, sizeof *lw.meshes);
@@ -1011,6 +1025,8 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 		bvh_free(&lw.meshes[m].bvh);
 	}
 	free(lw.meshes);
+	if (lw.opt->cache)
+		lower_cache_sweep(lw.opt->cache);
 	free(lw.top.p);
 	free(lw.top.box);
 	free(lw.planes.p);

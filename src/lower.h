@@ -27,7 +27,22 @@ typedef struct {
 	int layout;         /* LOWER_LAYOUT_BINARY or LOWER_LAYOUT_WIDE */
 	int skip_unsupported;  /* --skip-unsupported: what lowering cannot do is left out with a warning */
 	int width, height;  /* the image's, for a mesh_camera's rays */
+	struct lower_cache *cache;  /* meshes' BVHs kept between calls (an animation's frames), or NULL */
 } lower_options;
+
+/* The BVHs of meshes, kept from one lower_scene to the next (lower_cache.c):
+ * a mesh whose triangles are those of a mesh of the previous call gets a copy
+ * of its tree instead of a build. */
+typedef struct lower_cache lower_cache;
+lower_cache *lower_cache_new(void);   /* NULL when out of memory */
+void lower_cache_free(lower_cache *c);
+int lower_cache_hits(const lower_cache *c);   /* trees copied, not built, so far */
+/* ---- between lower.c and lower_cache.c: 1 and a copy in *t when kept; keep
+ * stores a copy of the triangles p (before the build) and of their tree;
+ * sweep (at the end of lower_scene) drops what that lowering did not use. */
+int lower_cache_find(lower_cache *c, const lower_options *o, const dev_prim *p, int n, bvh_tree *t);
+void lower_cache_keep(lower_cache *c, const lower_options *o, const dev_prim *p, int n, const bvh_tree *t);
+void lower_cache_sweep(lower_cache *c);
 
 /* What --stats prints about one BVH. */
 typedef struct {
@@ -104,6 +119,13 @@ int lower_fogs(const scene *s, lower_result *out);
 int lower_camera_mesh(const scene *s, int width, int height, lower_result *out);
 /* How many solid (non-hollow) objects hold the camera's location. */
 int lower_camera_solids(const scene *s);
+
+/* For an image with an alpha channel (+UA): how the background is seen then,
+ * as POV-Ray sees it: by every ray but reflected ones, its colour times its
+ * opacity (classic.x: its filter + transmit) and, in background.w, how much
+ * of it is transparent (the kernels' alpha is 1 minus that where rays leave
+ * the scene). */
+void lower_background_alpha(const scene *s, dev_params *p);
 
 /* The OpenCL build options for lr's kernels (the node layout is a -D, and
  * SCENE_FUNCTIONS says that lr->functions follows the kernels' files). */

@@ -8,9 +8,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "cli_pov.h"
+#include "depfile.h"
 #include "device.h"
 #include "eval.h"
 #include "film.h"
@@ -22,6 +24,8 @@
 #include "parse.h"
 #include "render.h"
 #include "split_plan.h"
+#include "render_keep.h"
+#include "suggest.h"
 
 #define DEFAULT_WIDTH 640
 #define DEFAULT_HEIGHT 480
@@ -35,7 +39,7 @@
 #define MAX_LIST 64   /* -I and -D options each */
 
 struct options {
-	const char *scene, *output, *kernel_dir, *export_mesh2;
+	const char *scene, *output, *kernel_dir, *export_mesh2, *depfile;
 	int width, height, samples, seed, max_depth, device, quiet, integrator;
 	int list_devices, check, dump_ast, dump_scene;
 	double time_limit, checkpoint;
@@ -63,7 +67,7 @@ enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_D
        OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_BVH_LAYOUT, OPT_STATS, OPT_SKIP_UNSUPPORTED, OPT_EXPORT_MESH2,
        OPT_MAX_INCLUDE_DEPTH, OPT_MAX_MACRO_DEPTH, OPT_MAX_LOOP_ITERATIONS, OPT_MESH_TIME_LIMIT,
        OPT_IO_SECURITY, OPT_IO_ALLOW, OPT_IO_ALLOW_WRITE, OPT_THREADS, OPT_SAMPLE_RANGE, OPT_RESUME,
-       OPT_CONTINUE, OPT_MEMORY_LIMIT };
+       OPT_CONTINUE, OPT_MEMORY_LIMIT, OPT_DEPFILE };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -96,6 +100,7 @@ static const struct option long_options[] = {
 	{ "io-allow", required_argument, NULL, OPT_IO_ALLOW },
 	{ "io-allow-write", required_argument, NULL, OPT_IO_ALLOW_WRITE },
 	{ "threads", required_argument, NULL, OPT_THREADS },
+	{ "depfile", required_argument, NULL, OPT_DEPFILE },
 	{ "device", required_argument, NULL, OPT_DEVICE },
 	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
 	{ "kernel-dir", required_argument, NULL, OPT_KERNEL_DIR },
@@ -115,7 +120,8 @@ static void usage(FILE *out)
 		"Render a POV-Ray-style scene with a path tracer on an OpenCL device.\n"
 		"\n"
 		"  -o, --output FILE     image to write; the extension picks the format (.png, .exr,\n"
-		"                        .hdr, .tif, .jpg); default: SCENE's name with .png\n"
+		"                        .hdr, .tif, .jpg, .tga, .bmp, .webp, .ppm); default: SCENE's\n"
+		"                        name with .png\n"
 		"  -W, --width N         image width in pixels (default %d)\n"
 		"  -H, --height N        image height in pixels (default %d)\n"
 		"  -s, --samples N       samples per pixel (default %d)\n"
@@ -163,6 +169,8 @@ static void usage(FILE *out)
 		"                        writes restricted; none: anything (see SECURITY in eclat(1))\n"
 		"      --io-allow DIR    let the scene read files in DIR and below (repeatable)\n"
 		"      --io-allow-write DIR  let it read and write files in DIR and below (repeatable)\n"
+		"      --depfile FILE    write a make rule: the images depend on the scene and every\n"
+		"                        file it read (includes, meshes, images, fonts, #fopen)\n"
 		"      --check           check the scene for errors and warnings, render nothing\n"
 		"      --dump-ast        print the syntax tree and exit\n"
 		"      --dump-scene      print the evaluated scene in world space and exit\n"
@@ -337,6 +345,21 @@ static int integrator_arg(const char *s)
 	exit(1);
 }
 
+/* After getopt_long's "unrecognized option '--widht'": the option meant. */
+static void hint_option(const char *arg)
+{
+	if (strncmp(arg, "--", 2) != 0)
+		return;
+	char word[64];
+	snprintf(word, sizeof word, "%.*s", (int)strcspn(arg + 2, "="), arg + 2);
+	const char *near = NULL;
+	int dist = 0;
+	for (const struct option *l = long_options; l->name; l++)
+		suggest_consider(word, l->name, &near, &dist);
+	if (near)
+		fprintf(stderr, "eclat: did you mean '--%s'?\n", near);
+}
+
 static void parse_options(int argc, char **argv, struct options *o)
 {
 	*o = (struct options){ .width = DEFAULT_WIDTH, .height = DEFAULT_HEIGHT,
@@ -357,6 +380,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case OPT_MAX_DEPTH: o->max_depth = int_arg("--max-depth", optarg, 0, 256); break;
 		case OPT_DEVICE: device_arg(o, optarg); break;
 		case OPT_THREADS: o->threads = int_arg("--threads", optarg, 1, 512); break;
+		case OPT_DEPFILE: o->depfile = optarg; break;
 		case OPT_INTEGRATOR: o->integrator = integrator_arg(optarg); break;
 		case OPT_TIME_LIMIT: o->time_limit = seconds_arg("--time-limit", optarg); break;
 		case OPT_CHECKPOINT: o->checkpoint = seconds_arg("--checkpoint", optarg); break;
@@ -401,6 +425,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case 'h': usage(stdout); exit(0);
 		case 'V': printf("eclat %s\n", PACKAGE_VERSION); exit(0);
 		default:
+			hint_option(argv[optind - 1]);
 			fprintf(stderr, "Try 'eclat --help' for more information.\n");
 			exit(1);
 		}
@@ -427,7 +452,7 @@ static int same_file(const char *a, const char *b)
 
 /* Everything the user could get wrong about the output is checked before the
  * render, so no minutes of work are lost to a typo in a file name. */
-static int check_output(const char *scene, const char *output)
+static int check_output(const char *scene, const char *output, int alpha)
 {
 	if (strcmp(scene, output) == 0 || same_file(scene, output)) {
 		fprintf(stderr, "eclat: refusing to write the image over the scene file '%s'\n", scene);
@@ -442,9 +467,14 @@ static int check_output(const char *scene, const char *output)
 		fprintf(stderr, "eclat: cannot write '%s': %s\n", output, strerror(errno));
 		return -1;
 	}
+	if (alpha && image_format_known(output) && !image_format_alpha(output)) {
+		fprintf(stderr, "eclat: cannot write '%s' with an alpha channel (+UA): the format has none "
+		        "(use .png, .exr, .tif, .tga or .webp)\n", output);
+		return -1;
+	}
 	if (!image_format_known(output)) {
-		fprintf(stderr, "eclat: cannot write '%s': unknown image format (use .png, .exr, .hdr, .tif or .jpg)\n",
-		        output);
+		fprintf(stderr, "eclat: cannot write '%s': unknown image format (use .png, .exr, .hdr, .tif, .jpg, .tga, "
+		        ".bmp, .webp or .ppm)\n", output);
 		return -1;
 	}
 	return 0;
@@ -471,7 +501,9 @@ struct output {
 	const char *path, *scene;
 	int bits;          /* POV-Ray's +FN16: 16; 0: the format's own */
 	const int *part;   /* POV-Ray's +SC +SR +EC +ER in pixels (CLI_REGION_), or NULL */
-	split_info *info;  /* what an EXR records beside the film's sums, or NULL (another format, an AOV) */
+	split_info *info;  /* what an EXR records beside the film's sums, or NULL (another format, an AOV);
+	                    * an EXR with alpha (+UA) holds no sums, and cannot be merged or resumed */
+	int alpha;         /* POV-Ray's +UA: an alpha channel (transparent outside the part) */
 };
 
 /* POV-Ray's image of a part is the whole image, black outside the part. */
@@ -491,20 +523,39 @@ static const float *black_outside(const film *f, const int *part)
 	return rgb;
 }
 
+/* +UA: the film's alpha, 0 outside the part. */
+static float *alpha_of(const film *f, const int *part)
+{
+	float *a = malloc((size_t)f->width * f->height * sizeof *a);
+	if (!a || film_alpha(f, a)) {
+		free(a);
+		return NULL;
+	}
+	for (int y = 0; part && y < f->height; y++)
+		for (int x = 0; x < f->width; x++)
+			if (x < part[CLI_REGION_LEFT] || x > part[CLI_REGION_RIGHT] || y < part[CLI_REGION_TOP] ||
+			    y > part[CLI_REGION_BOTTOM])
+				a[(size_t)y * f->width + x] = 0.0f;
+	return a;
+}
+
 static int write_film(const film *f, void *ctx)
 {
 	const struct output *out = ctx;
-	image_meta meta = { out->scene, f->samples, out->bits };
+	float *alpha = out->alpha ? alpha_of(f, out->part) : NULL;
+	image_meta meta = { out->scene, f->samples, out->bits, alpha };
 	char err[512];
 	const float *rgb = out->part ? black_outside(f, out->part) : f->rgb;
-	int rc = !rgb ? -1
-	       : out->info && f->sums ? split_write_film(f, rgb, out->info, out->path, err, sizeof err)
+	int have = rgb && (alpha || !out->alpha);
+	int rc = !have ? -1
+	       : out->info && f->sums && !out->alpha ? split_write_film(f, rgb, out->info, out->path, err, sizeof err)
 	       : image_write(out->path, rgb, f->width, f->height, &meta, err, sizeof err);
 	if (rgb != f->rgb)
 		free((float *)rgb);
+	free(alpha);
 	if (rc == 0)
 		return 0;
-	fprintf(stderr, "eclat: %s\n", rgb ? err : "out of memory");
+	fprintf(stderr, "eclat: %s\n", have ? err : "out of memory");
 	char kept[600];
 	if (film_rescue(f, out->path, &meta, kept, sizeof kept) == 0)
 		fprintf(stderr, "eclat: the %ld samples per pixel are kept in '%s'\n", f->samples, kept);
@@ -517,9 +568,9 @@ static int write_aovs(const struct options *o, const film *f)
 	float *rgb = malloc((size_t)f->width * f->height * 3 * sizeof *rgb);
 	int rc = rgb ? 0 : -1;
 	for (int i = 0; rc == 0 && i < o->n_aovs; i++) {
-		struct output out = { o->aov_file[i], o->scene, 0, NULL, NULL };
+		struct output out = { o->aov_file[i], o->scene, 0, NULL, NULL, 0 };
 		if (strcmp(o->aov_name[i], "heat") == 0) {
-			image_meta meta = { o->scene, f->samples, 0 };
+			image_meta meta = { o->scene, f->samples, 0, NULL };
 			char err[512];
 			double mean;
 			rc = image_write_heat(out.path, f->heat, f->width, f->height, &meta, &mean, err, sizeof err);
@@ -626,23 +677,18 @@ static int set_threads(const struct options *o)
 	return 0;
 }
 
-/* What POV-Ray's switches asked for that eclat does not do, said once the
- * image's name is known. */
-static void warn_pov(const cli_frame *f, const char *output)
-{
-	if (f->frames > 1)
-		diag_warning(SRC_NOWHERE, "eclat renders one frame of an animation for now: frame %ld (clock %g) of "
-		             "the %ld asked for, to '%s'", f->frame, f->clock, f->frames, output);
-}
+/* An animation's frame, for the progress line and the closing lines. */
+struct frame_info {
+	long frame, index, frames;
+	double clock, seconds;   /* seconds: spent on the frames before */
+};
 
 /* The options that change pixels, as split_key records them: a part, or a
  * file to resume, made with others is refused. The number of samples is not
  * one of them: a render resumes to more, and merge checks its parts' own. */
-static char *pixel_options(const struct options *o, const render_settings *rs)
+static char *pixel_options(const struct options *o, const render_settings *rs, const struct frame_info *fi)
 {
 	static const char *const integrators[] = { "path", "naive", "whitted" };   /* ORDER INTEGRATOR_ */
-	cli_frame fr;
-	cli_pov_frame(&o->pov, &fr);
 	char *text = NULL;
 	size_t len = 0;
 	FILE *f = open_memstream(&text, &len);
@@ -651,7 +697,7 @@ static char *pixel_options(const struct options *o, const render_settings *rs)
 	fprintf(f, "width=%d\nheight=%d\nintegrator=%s\nseed=%d\nmax-depth=%d\nbvh=%d:%d:%d\n"
 	        "skip-unsupported=%d\nclock=%.17g\nframe=%ld\n", rs->width, rs->height,
 	        integrators[rs->integrator % 3], rs->seed, rs->max_depth, o->bvh, o->median_depth,
-	        o->bvh_layout, o->skip_unsupported, fr.clock, fr.frame);
+	        o->bvh_layout, o->skip_unsupported, fi->clock, fi->frame);
 	for (int i = 0; i < o->n_declares; i++)
 		fprintf(f, "declare=%s\n", o->declares[i]);
 	return fclose(f) == 0 ? text : (free(text), NULL);
@@ -659,9 +705,10 @@ static char *pixel_options(const struct options *o, const render_settings *rs)
 
 /* What --sample-range, a region and --resume ask of the render (split_plan.c). */
 static int plan_split(const struct options *o, const scene *s, const char *output, const int *part,
-                      const split_inputs *in, render_settings *rs, split_info *info, int64_t **resumed)
+                      const split_inputs *in, const struct frame_info *fi, render_settings *rs, split_info *info,
+                      int64_t **resumed)
 {
-	char *opts = pixel_options(o, rs);
+	char *opts = pixel_options(o, rs, fi);
 	split_request rq = { o->scene, output, o->resume, o->resume_output, o->range_first, o->range_count, part,
 	                     o->n_aovs, opts, s->film_gamma, in };
 	int rc = opts ? split_plan(&rq, rs, info, resumed) : -1;
@@ -670,10 +717,11 @@ static int plan_split(const struct options *o, const scene *s, const char *outpu
 }
 
 static int render_scene(const struct options *o, const scene *s, const char *output, const int *part,
-                        const split_inputs *in)
+                        const split_inputs *in, render_keep *keep, const struct frame_info *fi)
 {
 	lower_result lr;
-	lower_options lo = { o->bvh, o->median_depth, o->bvh_layout, o->skip_unsupported, o->width, o->height };
+	lower_options lo = { o->bvh, o->median_depth, o->bvh_layout, o->skip_unsupported, o->width, o->height,
+	                     fi->frames > 1 ? render_keep_cache(keep) : NULL };
 	int failed = lower_scene(s, &lo, &lr);
 	if (!failed && o->stats)
 		print_bvh_stats(s, &lr);
@@ -683,8 +731,10 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		return rc;
 	}
 	warn_if_dark(o, s, &lr);   /* only when there is an image to warn about */
+	if (o->pov.alpha)
+		lower_background_alpha(s, &lr.params);
 	split_info info = { 0 };
-	struct output out = { output, o->scene, o->pov.bits, part, split_is_exr(output) ? &info : NULL };
+	struct output out = { output, o->scene, o->pov.bits, part, split_is_exr(output) ? &info : NULL, o->pov.alpha };
 	/* deterministic: one sample is the image; POV-Ray's +A asks for the 3x3 grid
 	 * of kernels/integrator_whitted.cl */
 	int whitted = o->integrator == INTEGRATOR_WHITTED, whitted_samples = o->pov.antialias == 1 ? 9 : 1;
@@ -693,11 +743,12 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		.max_depth = o->max_depth >= 0 ? o->max_depth
 		           : s->max_trace_level > 0 ? s->max_trace_level : DEFAULT_MAX_DEPTH,
 		.integrator = o->integrator, .adc_bailout = s->adc_bailout, .gamma = s->film_gamma, .quiet = o->quiet,
-		.aov = needs_aov_buffer(o),
+		.aov = needs_aov_buffer(o) || o->pov.alpha,   /* the alpha channel's sums are there */
 		.time_limit = o->time_limit,
 		.checkpoint = o->checkpoint, .on_checkpoint = write_film, .ctx = &out, .stop = &stop_signal,
+		.frame = fi->frame, .frame_index = fi->index, .frames = fi->frames, .anim_seconds = fi->seconds,
 	};
-	device_ctx dev = { 0 };
+	device_ctx multi = { 0 };   /* several devices: only its name, for the summary */
 	cl_program prog = NULL;
 	film f = { 0 };
 	render_stats st;
@@ -706,16 +757,19 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	catch_signals();
 	int ran = -1;   /* 1: failed after some passes, whose samples f holds */
 	int several = o->n_devices < 0 || o->n_devices > 1;
-	int planned = plan_split(o, s, output, part, in, &rs, &info, &resumed) == 0 && set_threads(o) == 0;
+	int planned = plan_split(o, s, output, part, in, fi, &rs, &info, &resumed) == 0 &&
+	              (keep->opened || set_threads(o) == 0);
 	if (planned && several)
 		ran = render_multi(o->devices, o->n_devices < 0 ? 0 : o->n_devices, o->kernel_dir, &lr, &rs, &f, &st,
-		                   dev.name, sizeof dev.name);
-	else if (planned && !several && device_open(&dev, o->device) == 0 &&
-	    (prog = device_build(&dev, o->kernel_dir, lower_kernel_options(&lr), lr.functions)) != NULL)
-		ran = render_run(&dev, prog, &lr, &rs, &f, &st);
+		                   multi.name, sizeof multi.name);
+	else if (planned && (prog = render_keep_program(keep, o->device, o->kernel_dir, &lr)) != NULL)
+		ran = render_run(&keep->dev, prog, &lr, &rs, &f, &st);
 	if (ran >= 0) {
+		if (!o->quiet && ran == 0 && fi->frames > 1)
+			fprintf(stderr, "eclat: frame %ld (%ld of %ld), clock %g: '%s'\n", fi->frame, fi->index + 1,
+			        fi->frames, fi->clock, output);
 		if (!o->quiet && ran == 0)
-			summary(&rs, &st, &dev);
+			summary(&rs, &st, several ? &multi : &keep->dev);
 		if (o->stats)
 			print_ray_stats(&st);
 		int wrote = write_film(&f, &out) == 0 && write_aovs(o, &f) == 0;
@@ -724,13 +778,14 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		if (ran && wrote)
 			fprintf(stderr, "eclat: the render failed after %ld samples per pixel; '%s' holds those\n",
 			        st.samples, output);
+		else if (wrote && st.samples < rs.samples)   /* said even with -q: the image is not what was asked */
+			fprintf(stderr, "eclat: stopped early by %s: '%s' holds %ld of the %d samples per pixel asked for\n",
+			        stop_signal == SIGINT ? "Ctrl-C (SIGINT)" : stop_signal ? "SIGTERM"
+			        : "--time-limit", output, st.samples, rs.samples);
 	}
 	film_free(&f);
 	free(resumed);
 	split_key_free(&info.key);
-	if (prog)
-		clReleaseProgram(prog);
-	device_close(&dev);
 	lower_free(&lr);
 	return rc;
 }
@@ -775,6 +830,96 @@ static int export_mesh2(const struct options *o)
 	return rc;
 }
 
+static void set_clock(eval_options *e, const cli_frame *f)
+{
+	e->clock = f->clock;
+	e->clock_delta = f->clock_delta;
+	e->clock_on = f->clock_on;
+	e->frame_number = f->frame;
+	e->initial_frame = f->initial_frame;
+	e->final_frame = f->final_frame;
+	e->initial_clock = f->initial_clock;
+	e->final_clock = f->final_clock;
+}
+
+static double seconds_since(const struct timespec *t0)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return (double)(t.tv_sec - t0->tv_sec) + (t.tv_nsec - t0->tv_nsec) * 1e-9;
+}
+
+/* Where the files a frame reads are noted: its record of the scene (split.h)
+ * and the depfile. */
+struct reads {
+	split_inputs inputs;
+	depfile *deps;
+};
+
+static void note_read(const char *path, void *ctx)
+{
+	struct reads *r = ctx;
+	split_note_input(path, &r->inputs);
+	if (r->deps)
+		depfile_on_read(r->deps, path);
+}
+
+/* The frames asked for, one after another, each evaluated anew at its clock,
+ * as POV-Ray parses its scene anew for each; the device, the kernels and the
+ * meshes' BVHs stay from frame to frame. --check looks at the first frame. */
+static int render_frames(const struct options *o, const ast_node *tree, eval_options *eopt, cli_frame *frame,
+                         const int *part)
+{
+	render_keep keep = { 0 };
+	struct timespec t0;
+	clock_gettime(CLOCK_MONOTONIC, &t0);
+	long frames = o->check ? 1 : frame->frames;
+	eopt->mesh_cache = frames > 1 ? mesh_io_cache_new() : NULL;
+	depfile *deps = o->depfile ? depfile_new() : NULL;
+	int rc = o->depfile && (!deps || depfile_add(deps, DEPFILE_INPUT, o->scene));
+	struct reads reads = { { 0 }, deps };
+	eopt->on_read = note_read;
+	eopt->on_read_ctx = &reads;
+	for (int i = 0; deps && i < o->n_aovs; i++)
+		rc = rc || depfile_add(deps, DEPFILE_TARGET, o->aov_file[i]);
+	for (long k = 0; k < frames && rc == 0 && !stop_signal; k++) {
+		cli_frame_goto(frame, frame->first + k);
+		char *output = cli_pov_output(&o->pov, frame, o->scene, o->output);
+		rc = !output || (!o->check && check_output(o->scene, output, o->pov.alpha)) ||
+		     (deps && depfile_add(deps, DEPFILE_TARGET, output));
+		set_clock(eopt, frame);
+		struct frame_info fi = { frame->frame, k, frames, frame->clock, seconds_since(&t0) };
+		scene s;
+		scene_init(&s);
+		split_inputs_free(&reads.inputs);   /* each frame's record names the files it read */
+		reads.inputs = (split_inputs){ 0 };
+		if (rc == 0 && eval_scene(tree, &s, eopt) == 0 && diag_error_count() == 0) {
+			if (o->dump_scene)
+				scene_dump(&s, stdout);
+			rc = render_scene(o, &s, output, part, &reads.inputs, &keep, &fi);
+		} else {
+			rc = 1;
+		}
+		scene_free(&s);
+		free(output);
+		mesh_io_cache_sweep(eopt->mesh_cache);
+	}
+	int files = mesh_io_cache_hits(eopt->mesh_cache), bvhs = lower_cache_hits(keep.bvhs);
+	if (frames > 1 && !o->quiet && rc == 0)
+		fprintf(stderr, "eclat: %ld frames in %.2f s (the kernels built %d time%s; %d mesh file%s and %d mesh "
+		        "BVH%s reused)\n", frames, seconds_since(&t0), keep.builds, keep.builds == 1 ? "" : "s", files,
+		        files == 1 ? "" : "s", bvhs, bvhs == 1 ? "" : "s");
+	if (deps && rc == 0)
+		rc = depfile_write(deps, o->depfile) ? 1 : 0;
+	depfile_free(deps);
+	split_inputs_free(&reads.inputs);
+	eopt->on_read = NULL;
+	mesh_io_cache_free(eopt->mesh_cache);
+	eopt->mesh_cache = NULL;
+	render_keep_free(&keep);
+	return rc;
+}
+
 int main(int argc, char **argv)
 {
 	if (argc > 1 && strcmp(argv[1], "merge") == 0)
@@ -786,18 +931,19 @@ int main(int argc, char **argv)
 	if (o.export_mesh2)
 		return export_mesh2(&o);
 
-	char *output = cli_pov_output(&o.pov, o.scene, o.output);
+	cli_frame frame;
+	cli_pov_frame(&o.pov, &frame);
+	char *output = cli_pov_output(&o.pov, &frame, o.scene, o.output);
 	if (!output)
 		return 1;
 	int rc = 1;
-	int bad_output = !o.dump_ast && !o.check && check_output(o.scene, output);
+	int bad_output = !o.dump_ast && !o.check && check_output(o.scene, output, o.pov.alpha);
 	for (int i = 0; i < o.n_aovs && !bad_output && !o.check && !o.dump_ast; i++)
-		bad_output = check_output(o.scene, o.aov_file[i]);
+		bad_output = check_output(o.scene, o.aov_file[i], 0);
 	int part[4], has_part = cli_pov_region(&o.pov, o.width, o.height, part);
-	if (bad_output || has_part < 0) {
-		free(output);
+	free(output);
+	if (bad_output || has_part < 0)
 		return 1;
-	}
 	eval_options eopt = eval_options_default();
 	eopt.include_dirs = o.include_dirs;
 	eopt.n_include_dirs = o.n_include_dirs;
@@ -815,40 +961,18 @@ int main(int argc, char **argv)
 	eopt.n_io_read_dirs = o.n_io_read_dirs;
 	eopt.io_write_dirs = o.io_write_dirs;
 	eopt.n_io_write_dirs = o.n_io_write_dirs;
-	split_inputs inputs = { 0 };
-	eopt.on_read = split_note_input;
-	eopt.on_read_ctx = &inputs;
-	cli_frame frame;
-	cli_pov_frame(&o.pov, &frame);
-	eopt.clock = frame.clock;
-	eopt.clock_delta = frame.clock_delta;
-	eopt.clock_on = frame.clock_on;
-	eopt.frame_number = frame.frame;
-	eopt.initial_frame = frame.initial_frame;
-	eopt.final_frame = frame.final_frame;
-	eopt.initial_clock = frame.initial_clock;
-	eopt.final_clock = frame.final_clock;
-	if (!o.dump_ast && !o.check)
-		warn_pov(&frame, output);
 	eopt.image_width = o.width;
 	eopt.image_height = o.height;
 	ast_node *tree = parse_file(o.scene, SRC_NOWHERE);
-	scene s;
-	scene_init(&s);
 	if (!tree)
 		rc = 1;
 	else if (o.dump_ast) {
 		ast_dump(tree, stdout);
 		rc = 0;
-	} else if (eval_scene(tree, &s, &eopt) == 0 && diag_error_count() == 0) {
-		if (o.dump_scene)
-			scene_dump(&s, stdout);
-		rc = render_scene(&o, &s, output, has_part ? part : NULL, &inputs);
+	} else {
+		rc = render_frames(&o, tree, &eopt, &frame, has_part ? part : NULL);
 	}
-	split_inputs_free(&inputs);
-	scene_free(&s);
 	ast_free(tree);
 	diag_free_all();
-	free(output);
 	return rc;
 }

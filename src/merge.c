@@ -141,7 +141,7 @@ static int write_image(const char *out, const struct part *first, const int64_t 
 	whole.region[0] = whole.region[1] = 0;
 	whole.region[2] = f->width - 1;
 	whole.region[3] = f->height - 1;
-	image_meta meta = { f->scene, f->total, 0 };
+	image_meta meta = { f->scene, f->total, 0, NULL };
 	const char *dot = strrchr(out, '.');
 	int rc = dot && strcmp(dot, ".exr") == 0 ? split_write(out, film.rgb, sums, &whole, err, sizeof err)
 	                                          : image_write(out, film.rgb, f->width, f->height, &meta, err, sizeof err);

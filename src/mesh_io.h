@@ -19,6 +19,18 @@
  * arrays are the caller's (scene_add_mesh takes them). */
 int mesh_io_load(const char *path, unsigned time_limit, scene_mesh *m, char *err, size_t errlen);
 
+/* Mesh files kept between the frames of an animation (mesh_io_cache.c):
+ * mesh_io_load_cached is mesh_io_load, or a copy of what the same file (same
+ * path, inode, size and times) gave before; c NULL: mesh_io_load. sweep drops
+ * the files not asked for since the last sweep. */
+typedef struct mesh_io_cache mesh_io_cache;
+mesh_io_cache *mesh_io_cache_new(void);   /* NULL when out of memory */
+void mesh_io_cache_free(mesh_io_cache *c);
+int mesh_io_load_cached(mesh_io_cache *c, const char *path, unsigned time_limit, scene_mesh *m, char *err,
+                        size_t errlen);
+void mesh_io_cache_sweep(mesh_io_cache *c);
+int mesh_io_cache_hits(const mesh_io_cache *c);   /* files copied, not read, so far */
+
 /* Writes m as POV-Ray's "#declare NAME = mesh2 { ... }" (vertex_vectors, the
  * normal_vectors when it has them, face_indices), which povray and eclat both
  * read; source names the file it came from in a comment. Returns -1 on a write error. */

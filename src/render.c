@@ -129,18 +129,28 @@ double render_rays(const render_stats *st)
 	       st->counts[COUNT_RAYS + RAY_SHADOW];
 }
 
-/* One line, redrawn in place: samples, speed, time spent and left. */
+/* One line, redrawn in place: samples, speed, time spent and left (in an
+ * animation: the frame, and the time left for the frames still to come, at
+ * the pace of those done and of this one so far). */
 static void progress(const struct pass_loop *pl)
 {
+	const render_settings *rs = pl->rs;
 	const render_stats *st = pl->st;
-	double el = now() - pl->t0, frac = (double)st->samples / pl->rs->samples;
+	double run = now() - pl->t0, el = run, frac = (double)st->samples / rs->samples;
 	int width = 24, bar = (int)(frac * width);
-	char elapsed[48], left[48];
+	double left_s = frac > 0 ? el / frac - el : 0;
+	char elapsed[48], left[48], frame[64] = "";
+	if (rs->frames > 1) {
+		double done = rs->frame_index + frac;
+		left_s = done > 0 ? (rs->anim_seconds + el) / done * (rs->frames - done) : 0;
+		el += rs->anim_seconds;
+		snprintf(frame, sizeof frame, "frame %ld (%ld/%ld) ", rs->frame, rs->frame_index + 1, rs->frames);
+	}
 	format_time(el, elapsed, sizeof elapsed);
-	format_time(frac > 0 ? el / frac - el : 0, left, sizeof left);
-	fprintf(stderr, "\r%3d%% [%.*s%*s] %ld/%d samples  %.2f M paths/s  %.2f M rays/s  %s elapsed  %s left ",
-	        (int)(100 * frac), bar, "========================", width - bar, "", st->samples,
-	        pl->rs->samples, pl->npix * (double)st->samples / el * 1e-6, render_rays(st) / el * 1e-6, elapsed,
+	format_time(left_s, left, sizeof left);
+	fprintf(stderr, "\r%s%3d%% [%.*s%*s] %ld/%d samples  %.2f M paths/s  %.2f M rays/s  %s elapsed  %s left ",
+	        frame, (int)(100 * frac), bar, "========================", width - bar, "", st->samples,
+	        rs->samples, pl->npix * (double)st->samples / run * 1e-6, render_rays(st) / run * 1e-6, elapsed,
 	        left);
 }
 

@@ -39,6 +39,11 @@ typedef struct render_settings {
 	int (*on_checkpoint)(const film *f, void *ctx);
 	void *ctx;
 	volatile sig_atomic_t *stop;  /* set (by a signal handler): finish the pass and return */
+	/* In an animation (frames > 1) the progress line names the frame (the
+	 * frame_index-th of frames, from 0) and the time the whole animation has
+	 * left, reckoned from anim_seconds spent on the frames before this one. */
+	long frame, frame_index, frames;
+	double anim_seconds;
 } render_settings;
 
 typedef struct {

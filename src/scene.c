@@ -89,6 +89,7 @@ void scene_init(scene *s)
 	s->adc_bailout = 1.0f / 255.0f;
 	s->film_gamma = 1;
 	s->noise_generator = 2;
+	s->background_ft[1] = 1;
 
 	for (int i = 0; i < 3; i++)
 		s->ambient_light[i] = 1;

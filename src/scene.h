@@ -450,6 +450,10 @@ typedef struct {
 	scene_image *images;       /* the image_maps' images, params[0][0] of their pigments */
 	int n_images, cap_images;
 	float background[3];
+	/* The background's filter and transmit, which only an alpha channel (+UA)
+	 * sees: POV-Ray 3.7's default background is <0,0,0,0,1>, transparent;
+	 * a #version below 3.7 makes any background so. */
+	float background_ft[2];
 	float sky[3];         /* sky_sphere's colour (its top pigment's average); used when has_sky */
 	bool has_sky;
 	scene_material *sky_layers;  /* the sky_sphere's pigments as written (the last on top),

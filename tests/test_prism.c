@@ -170,7 +170,7 @@ static void test_shape(device_ctx *dev, cl_program prog, int which, int n_rays)
 		mid[k] = (lo[k] + hi[k]) / 2;
 		size = fmax(size, hi[k] - lo[k]);
 	}
-	lower_options opt = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_BINARY, 0, 0, 0 };
+	lower_options opt = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_BINARY, 0, 0, 0, NULL };
 	lower_result lr;
 	if (lower_scene(&s, &opt, &lr)) {
 		printf("FAIL: %s: lowering failed\n", names[which]);

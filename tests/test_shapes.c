@@ -874,7 +874,7 @@ static void test_shape(device_ctx *dev, cl_program prog, const struct maker *m, 
 		struct test_scene ts;
 		make_scene(&ts, m, kind, s % 4 == 3);
 		struct device_scene ds = { .dev = dev, .prog = prog };
-		lower_options lo = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_DEFAULT, 0, 0, 0 };
+		lower_options lo = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_DEFAULT, 0, 0, 0, NULL };
 		if (lower_scene(&ts.sc, &lo, &ds.lr)) {
 			printf("FAIL: %s: a scene does not lower\n", m->name);
 			failures++;

@@ -362,7 +362,7 @@ static void test_case(device_ctx *dev, cl_program prog, const struct shape_case 
 	scene_init(&sc);
 	scene_add_object(&sc, &c->o);
 	lower_result lr;
-	lower_options opt = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_DEFAULT, 0, 0, 0 };
+	lower_options opt = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_DEFAULT, 0, 0, 0, NULL };
 	if (lower_scene(&sc, &opt, &lr) || lr.n_prims != 1) {
 		printf("FAIL: %s: lowering made %d primitives\n", c->name, lr.n_prims);
 		failures++;

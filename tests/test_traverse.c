@@ -219,7 +219,7 @@ static int layout;
 
 static int open_scene(struct device_scene *ds, const scene *s)
 {
-	lower_options lo = { LOWER_BVH_SAH, 24, layout, 0, 0, 0 };
+	lower_options lo = { LOWER_BVH_SAH, 24, layout, 0, 0, 0, NULL };
 	if (lower_scene(s, &lo, &ds->lr)) {
 		fprintf(stderr, "lowering failed\n");
 		return -1;
