@@ -310,7 +310,8 @@ static void csg_inverse(struct objval *o)
 	csg_group(o, &p, o->loc);
 }
 
-/* no_shadow, no_image, no_reflection, hollow [Bool], double_illuminate [Bool] */
+/* no_shadow, no_image, no_reflection, hollow [Bool], double_illuminate [Bool],
+ * media_interaction [Bool] */
 static int flag_item(struct eval *e, struct cursor *c, const ast_node *item, struct objval *o)
 {
 	static const struct { int kw, flag; } flags[] = {
@@ -325,6 +326,13 @@ static int flag_item(struct eval *e, struct cursor *c, const ast_node *item, str
 	if (item->kw == KW_INVERSE) {
 		csg_inverse(o);
 		return 0;
+	}
+	if (item->kw == KW_MEDIA_INTERACTION) {   /* an object's: whether media see it; lights' are read */
+		eval_warn_once(e, item->loc, "object media_interaction",
+		               "an object's 'media_interaction' is not supported yet; ignored");
+		const ast_node *arg = eval_next_optional(c, &err);
+		double ignored;
+		return arg && eval_expect_float(e, arg, &ignored) ? -1 : err ? -1 : 0;
 	}
 	if (!flag)
 		return 1;

@@ -193,6 +193,10 @@ static int camera_float(struct eval *e, struct cursor *c, const ast_node *item, 
 		return camera_angle(e, c, item, ci);
 	case KW_APERTURE:
 		return eval_expect_float(e, item->kids[0], &ci->c.aperture);
+	case KW_CONFIDENCE: case KW_VARIANCE:   /* POV-Ray's adaptive focal blur; the path tracer blurs without them */
+		eval_warn_once(e, item->loc, ast_keyword_name(item->kw), "the camera's '%s' is not supported yet; ignored",
+		               ast_keyword_name(item->kw));
+		return eval_expect_float(e, item->kids[0], &f);
 	case KW_BLUR_SAMPLES:
 		if (eval_expect_float(e, item->kids[0], &f))
 			return -1;
