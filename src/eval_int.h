@@ -36,7 +36,7 @@ struct objcsg {
 
 struct objval {
 	scene_object *objs;
-	int n_objs;
+	int n_objs, cap_objs;    /* cap_objs: the room objs has (eval_objval_add grows it by halves) */
 	struct objcsg *csgs;     /* the CSG objects among objs; the others stand alone */
 	int n_csgs;
 	struct objval *bound;    /* bounded_by's objects, for clipped_by { bounded_by }, or NULL */

@@ -1537,7 +1537,7 @@ int eval_looks_like(struct eval *e, const ast_node *b, const double at[3], struc
 	l->looks = v.obj->objs;
 	l->n_looks = v.obj->n_objs;
 	v.obj->objs = NULL;
-	v.obj->n_objs = 0;
+	v.obj->n_objs = v.obj->cap_objs = 0;
 	eval_value_free(&v);
 	return 0;
 }

@@ -75,6 +75,7 @@ static struct objval *objval_copy(const struct objval *o)
 {
 	struct objval *c = dup_bytes(o, sizeof *o);
 	c->objs = dup_bytes(o->objs, o->n_objs * sizeof *o->objs);
+	c->cap_objs = o->n_objs;
 	c->csgs = dup_bytes(o->csgs, o->n_csgs * sizeof *o->csgs);
 	for (int i = 0; i < o->n_csgs; i++)
 		c->csgs[i].ops = dup_bytes(o->csgs[i].ops, o->csgs[i].n_ops * sizeof *o->csgs[i].ops);
@@ -124,9 +125,17 @@ struct objval *eval_objval_new(src_loc loc)
 	return o;
 }
 
+/* Grows objs geometrically: a union of thousands of objects must not copy its
+ * list once per object (a sanitizer's realloc always copies). */
 void eval_objval_add(struct objval *o, const scene_object *so)
 {
-	o->objs = eval_xrealloc(o->objs, (o->n_objs + 1) * sizeof *o->objs);
+	if (o->n_objs >= o->cap_objs) {
+		int cap = o->cap_objs > 0 ? 2 * o->cap_objs : 8;
+		if (cap < o->n_objs + 1)
+			cap = o->n_objs + 1;
+		o->objs = eval_xrealloc(o->objs, (size_t)cap * sizeof *o->objs);
+		o->cap_objs = cap;
+	}
 	o->objs[o->n_objs++] = *so;
 }
 
