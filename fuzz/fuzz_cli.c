@@ -103,7 +103,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		if (cli_pov_region(&pov, 320, 240, rect) == 1 &&
 		    (rect[0] < 0 || rect[1] < 0 || rect[2] >= 320 || rect[3] >= 240 || rect[0] > rect[2] || rect[1] > rect[3]))
 			abort();   /* a region inside the image, or an error */
-		char *name = cli_pov_output(&pov, "scene.pov", NULL);
+		char *name = cli_pov_output(&pov, &f, "scene.pov", NULL);
 		free(name);
 	}
 	armed = 0;
