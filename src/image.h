@@ -23,10 +23,15 @@ typedef struct {
 	                      * formats store them divided by alpha, as PNG wants them */
 } image_meta;
 
-/* 0 when the temporary file tmp, just written and closed, is on the disk
- * and reads back whole as a width x height image; else -1 and why (a full
- * disk that a writer did not notice). */
-int image_written_whole(const char *tmp, int width, int height, char *why, size_t n);
+/* The temporary file beside path that an image is written to before its
+ * rename (beside it, so the rename cannot cross file systems). */
+void image_temp_path(const char *path, char *out, size_t n);
+/* Ends the write of tmp into path: when the writer failed (write_error, its
+ * message) or the file is not on the disk whole (a full disk a writer did not
+ * notice: synced and read back as width x height), tmp is removed and -1
+ * returned with err; else tmp is renamed to path. */
+int image_finish(const char *tmp, const char *path, const char *write_error, int width, int height,
+                 char *err, size_t errlen);
 int image_write(const char *path, const float *rgb, int width, int height, const image_meta *meta,
                 char *err, size_t errlen);
 

@@ -70,11 +70,27 @@ static std::string written_whole(const std::string &tmp, int width, int height)
 	return why;
 }
 
-extern "C" int image_written_whole(const char *tmp, int width, int height, char *why, size_t n)
+extern "C" void image_temp_path(const char *path, char *out, size_t n)
 {
-	std::string w = written_whole(tmp, width, height);
-	snprintf(why, n, "%s", w.c_str());
-	return w.empty() ? 0 : -1;
+	std::string p(path), dir = Filesystem::parent_path(p);
+	snprintf(out, n, "%s.%s.eclat-%ld.tmp", dir.empty() ? "" : (dir + "/").c_str(), Filesystem::filename(p).c_str(),
+	         (long)getpid());
+}
+
+extern "C" int image_finish(const char *tmp, const char *path, const char *write_error, int width, int height,
+                            char *err, size_t errlen)
+{
+	std::string p(path), why = write_error ? write_error : written_whole(tmp, width, height);
+	if (write_error || !why.empty()) {
+		Filesystem::remove(tmp);
+		return fail(err, errlen, "cannot write '" + p + "': " + why);
+	}
+	if (std::rename(tmp, path) != 0) {
+		why = std::strerror(errno);
+		Filesystem::remove(tmp);
+		return fail(err, errlen, "cannot write '" + p + "': " + why);
+	}
+	return 0;
 }
 
 extern "C" int image_format_alpha(const char *path)
@@ -134,30 +150,16 @@ static int write_atomic(const std::string &p, const float *rgb, int width, int h
 			if (!alpha || i % 4 != 3)
 				pixels[i] = srgb_encode(pixels[i]);
 
-	// The temporary file sits beside the target, so the rename cannot cross file systems.
-	std::string dir = Filesystem::parent_path(p);
-	std::string tmp = (dir.empty() ? std::string() : dir + "/") + "." +
-	                  Filesystem::filename(p) + ".eclat-" + std::to_string(getpid()) + ".tmp";
-	if (!out->open(tmp, spec)) {
-		std::string why = out->geterror();
-		Filesystem::remove(tmp);   /* opening may have made it before failing to write its header */
-		return fail(err, errlen, "cannot write '" + p + "': " + why);
-	}
+	char tmp[4200];
+	image_temp_path(p.c_str(), tmp, sizeof tmp);
+	if (!out->open(tmp, spec))   /* opening may have made tmp before failing to write its header */
+		return image_finish(tmp, p.c_str(), out->geterror().c_str(), width, height, err, errlen);
 	bool ok = out->write_image(TypeDesc::FLOAT, pixels.data());
 	std::string msg = out->geterror();
 	ok = out->close() && ok;
-	if (ok)
-		msg = written_whole(tmp, width, height);
-	if (!ok || !msg.empty()) {
-		Filesystem::remove(tmp);
-		return fail(err, errlen, "cannot write '" + p + "': " + (msg.empty() ? out->geterror() : msg));
-	}
-	if (std::rename(tmp.c_str(), p.c_str()) != 0) {
-		std::string why = std::strerror(errno);
-		Filesystem::remove(tmp);
-		return fail(err, errlen, "cannot write '" + p + "': " + why);
-	}
-	return 0;
+	if (!ok && msg.empty())
+		msg = out->geterror();
+	return image_finish(tmp, p.c_str(), ok ? NULL : msg.c_str(), width, height, err, errlen);
 }
 
 extern "C" int image_write(const char *path, const float *rgb, int width, int height,

@@ -88,31 +88,18 @@ extern "C" int split_write(const char *path, const float *rgb, const int64_t *su
 	for (size_t i = 0; i < n; i++)
 		for (int c = 0; c < 4; c++)
 			to_chunks(sums[4 * i + c], &px[i * SUM_CHANNELS + 3 * c]);
-	std::string dir = Filesystem::parent_path(p);
-	std::string tmp = (dir.empty() ? std::string() : dir + "/") + "." + Filesystem::filename(p) + ".eclat-" +
-	                  std::to_string(getpid()) + ".tmp";
+	char tmp[4200];
+	image_temp_path(p.c_str(), tmp, sizeof tmp);
 	ImageSpec specs[2] = { spec, sums_spec };
-	if (!out->open(tmp, 2, specs))
-		return fail(err, errlen, "cannot write '" + p + "': " + out->geterror());
+	if (!out->open(tmp, 2, specs))   /* opening may have made tmp before failing to write its header */
+		return image_finish(tmp, p.c_str(), out->geterror().c_str(), info->width, info->height, err, errlen);
 	bool ok = out->write_image(TypeDesc::FLOAT, rgb) && out->open(tmp, sums_spec, ImageOutput::AppendSubimage) &&
 	          out->write_image(TypeDesc::FLOAT, px.data());
 	std::string msg = out->geterror();
 	ok = out->close() && ok;
-	char why[512] = "";
-	if (ok && image_written_whole(tmp.c_str(), info->width, info->height, why, sizeof why) != 0) {
-		ok = false;
-		msg = why;
-	}
-	if (!ok) {
-		Filesystem::remove(tmp);
-		return fail(err, errlen, "cannot write '" + p + "': " + (msg.empty() ? out->geterror() : msg));
-	}
-	if (std::rename(tmp.c_str(), p.c_str()) != 0) {
-		std::string why = std::strerror(errno);
-		Filesystem::remove(tmp);
-		return fail(err, errlen, "cannot write '" + p + "': " + why);
-	}
-	return 0;
+	if (!ok && msg.empty())
+		msg = out->geterror();
+	return image_finish(tmp, p.c_str(), ok ? NULL : msg.c_str(), info->width, info->height, err, errlen);
 }
 
 static char *dup_attr(const ImageSpec &spec, const char *name)
