@@ -26,14 +26,21 @@ static void sub(const double a[3], const double b[3], double o[3])
 		o[k] = a[k] - b[k];
 }
 
-static void get_face(const scene_mesh *m, int f, bool smooth, struct face *out)
+/* Face f's uv at its corners; POV-Ray's are 0 without uv_vectors. */
+static void face_uv(const scene_mesh *m, int f, double uv[3][2])
 {
 	for (int c = 0; c < 3; c++) {
-		memcpy(out->p[c], m->v[m->face[f][c]], sizeof out->p[c]);
-		out->uv[c][0] = out->uv[c][1] = 0;   /* POV-Ray's uv without uv_vectors */
+		uv[c][0] = uv[c][1] = 0;
 		if (m->face_uv)
-			memcpy(out->uv[c], m->uv[m->face_uv[f][c]], sizeof out->uv[c]);
+			memcpy(uv[c], m->uv[m->face_uv[f][c]], sizeof uv[c]);
 	}
+}
+
+static void get_face(const scene_mesh *m, int f, bool smooth, struct face *out)
+{
+	face_uv(m, f, out->uv);
+	for (int c = 0; c < 3; c++)
+		memcpy(out->p[c], m->v[m->face[f][c]], sizeof out->p[c]);
 	/* POV-Ray's face normal: (P3 - P1) x (P2 - P1), unit */
 	double a[3], b[3], n[3];
 	sub(out->p[2], out->p[0], a);
@@ -123,13 +130,13 @@ static int cell(double t)
 
 static void face_cells(const scene_mesh *m, int f, int box[4])
 {
-	struct face fc;
-	get_face(m, f, false, &fc);
-	double lo[2] = { fc.uv[0][0], fc.uv[0][1] }, hi[2] = { lo[0], lo[1] };
+	double uv[3][2];
+	face_uv(m, f, uv);
+	double lo[2] = { uv[0][0], uv[0][1] }, hi[2] = { lo[0], lo[1] };
 	for (int v = 1; v < 3; v++)
 		for (int k = 0; k < 2; k++) {
-			lo[k] = fmin(lo[k], fc.uv[v][k]);
-			hi[k] = fmax(hi[k], fc.uv[v][k]);
+			lo[k] = fmin(lo[k], uv[v][k]);
+			hi[k] = fmax(hi[k], uv[v][k]);
 		}
 	box[0] = cell(lo[0]), box[1] = cell(lo[1]), box[2] = cell(hi[0]), box[3] = cell(hi[1]);
 	if (!(hi[0] >= 0 && hi[1] >= 0 && lo[0] <= 1 && lo[1] <= 1))
@@ -176,15 +183,16 @@ static void uv_ray(const scene *s, const scene_camera *c, const xform *inv, cons
 	const scene_mesh *m = &s->meshes[cm->mesh];
 	int at = cell(v) * GRID + cell(u);
 	for (int i = g->start[at]; i < g->start[at + 1]; i++) {
-		struct face f;
-		get_face(m, g->face[i], c->mesh_smooth, &f);
-		const double (*t)[2] = f.uv;
+		double t[3][2];   /* the whole face only for the one that holds (u, v) */
+		face_uv(m, g->face[i], t);
 		double scale = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[2][0] - t[0][0]) * (t[1][1] - t[0][1]);
 		double w[3] = { ((t[1][0] - u) * (t[2][1] - v) - (t[2][0] - u) * (t[1][1] - v)) / scale,
 		                ((t[2][0] - u) * (t[0][1] - v) - (t[0][0] - u) * (t[2][1] - v)) / scale,
 		                ((t[0][0] - u) * (t[1][1] - v) - (t[1][0] - u) * (t[0][1] - v)) / scale };
 		if (w[0] < 0 || w[1] < 0 || w[2] < 0)
 			continue;
+		struct face f;
+		get_face(m, g->face[i], c->mesh_smooth, &f);
 		face_ray(c, cm, inv, &f, w, out);
 		return;
 	}
