@@ -10,9 +10,9 @@
  * a constant in a table of awkward values (or, after byte 0xff, 8 raw bytes).
  *
  *   make fuzz FUZZ_SECONDS=60
- *   FUZZ_VERBOSE=1 fuzz/fuzz_function crash-...   (replays one input) */
+ *   fuzz/fuzz_function crash-...   (replays one input with its messages; make fuzz drops
+ *   them with -close_fd_mask=2, and keeps libFuzzer's and the sanitizers' reports) */
 #include <CL/cl.h>
-#include <fcntl.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -65,28 +65,6 @@ static void build(const char *src)
 	clReleaseProgram(p);
 }
 
-/* The translator's refusals are errors on stderr: quiet while it runs, unless
- * asked (libFuzzer's own reports go to stderr too). */
-static int quiet_stderr(void)
-{
-	if (getenv("FUZZ_VERBOSE"))
-		return -1;
-	int saved = dup(2), null = open("/dev/null", O_WRONLY);
-	if (saved >= 0 && null >= 0)
-		dup2(null, 2);
-	if (null >= 0)
-		close(null);
-	return saved;
-}
-
-static void restore_stderr(int saved)
-{
-	if (saved >= 0) {
-		dup2(saved, 2);
-		close(saved);
-	}
-}
-
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
 	scene s;
@@ -115,9 +93,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 			fn.ops = malloc(sizeof *fn.ops);
 		scene_add_function(&s, &fn);
 	}
-	int saved = quiet_stderr();
 	char *src = lower_function_source(&s);
-	restore_stderr(saved);
 	int valid = s.n_functions > 0;
 	char why[128];
 	for (int f = 0; f < s.n_functions; f++)

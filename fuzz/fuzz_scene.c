@@ -4,7 +4,8 @@
  * file.
  *
  *   make fuzz FUZZ_SECONDS=60          (builds with clang, runs both targets)
- *   FUZZ_VERBOSE=1 fuzz/fuzz_scene crash-...   (replays one input with its messages)
+ *   fuzz/fuzz_scene crash-...   (replays one input with its messages; make fuzz drops
+ *   them with -close_fd_mask=2, and keeps libFuzzer's and the sanitizers' reports)
  *
  * The limits are lowered so that a loop or a recursion that never ends costs
  * milliseconds, not the fuzzer's -timeout: the evaluator must stop it itself.
@@ -84,26 +85,6 @@ static const char *scratch_folder(void)
 	return scratch;
 }
 
-static int quiet_stderr(void)
-{
-	if (getenv("FUZZ_VERBOSE"))
-		return -1;
-	int saved = dup(2), null = open("/dev/null", O_WRONLY);
-	if (saved >= 0 && null >= 0)
-		dup2(null, 2);
-	if (null >= 0)
-		close(null);
-	return saved;
-}
-
-static void restore_stderr(int saved)
-{
-	if (saved >= 0) {
-		dup2(saved, 2);
-		close(saved);
-	}
-}
-
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
 	char *text = malloc(size + 1);
@@ -113,7 +94,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	text[size] = '\0';
 	char name[sizeof scratch + 16];
 	snprintf(name, sizeof name, "%s/fuzz.scn", scratch_folder());
-	int saved = quiet_stderr();
 	ast_node *tree = parse_text(name, text, size);   /* diag owns text now */
 	if (tree) {
 		eval_options opt = eval_options_default();
@@ -133,7 +113,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		ast_free(tree);
 	}
 	diag_free_all();
-	restore_stderr(saved);
 	remove_scratch();
 	return 0;
 }

@@ -204,6 +204,9 @@ struct setting {
  * that a leak checker sees it reachable. */
 static char **kept;
 static size_t n_kept, cap_kept;
+/* The argument vector being built: kept only once complete, so an exit(1)
+ * halfway leaves it here. */
+static char **building;
 
 char *cli_pov_keep(char *s)
 {
@@ -222,6 +225,17 @@ char *cli_pov_keep(char *s)
 	return kept[n_kept++] = s;
 }
 
+void cli_pov_release(void)
+{
+	for (size_t i = 0; i < n_kept; i++)
+		free(kept[i]);
+	free(kept);
+	free(building);
+	kept = NULL;
+	building = NULL;
+	n_kept = cap_kept = 0;
+}
+
 static void push(cli_args *a, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 static void push(cli_args *a, const char *fmt, ...)
@@ -229,6 +243,7 @@ static void push(cli_args *a, const char *fmt, ...)
 	if (a->n + 2 > a->cap) {
 		a->cap = a->cap ? 2 * a->cap : 32;
 		a->v = realloc(a->v, (size_t)a->cap * sizeof *a->v);
+		building = a->v;
 	}
 	va_list ap;
 	va_start(ap, fmt);
@@ -602,6 +617,7 @@ int cli_pov_args(int argc, char **argv, const struct option *longopts, const cha
 		i += one_argument(&a, argv, i, argc, longopts, shortopts);
 	}
 	*out = a.v;
+	building = NULL;
 	cli_pov_keep((char *)a.v);
 	return a.n;
 }
@@ -610,7 +626,9 @@ int cli_pov_args(int argc, char **argv, const struct option *longopts, const cha
  * counts frames from 0, not from the first frame, then is clamped. */
 static long subset_frame(double v, long first, long last)
 {
-	return v >= 0 ? (long)v : (long)((double)(last - first + 1) * (-1 - v));
+	double f = v >= 0 ? v : (double)(last - first + 1) * (-1 - v);
+	/* clamped here as after, before a long could overflow */
+	return !(f >= (double)first) ? first : f > (double)last ? last : (long)f;
 }
 
 void cli_pov_frame(const cli_pov *p, cli_frame *f)

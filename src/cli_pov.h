@@ -79,6 +79,10 @@ void cli_pov_setting(cli_args *a, const char *key, const char *value, src_loc ke
 void cli_pov_plain(cli_args *a, const char *arg, src_loc loc);
 /* Keeps s until exit (NULL: out of memory, exit 1) and returns it. */
 char *cli_pov_keep(char *s);
+/* Frees what cli_pov_args kept, even after it ended with exit(1): for a caller
+ * that reads many command lines in one process (fuzz/fuzz_cli.c). Every string
+ * it returned is gone after. */
+void cli_pov_release(void);
 
 /* Reads the INI file spec ("file.ini" or "file.ini[Section]"), named at loc,
  * into a. INI files that name each other nest 16 deep at most. Exits 1 on an
