@@ -135,7 +135,7 @@ static bool read_info(const ImageSpec &spec, const ImageSpec &sums, split_info *
 	return true;
 }
 
-extern "C" int split_read(const char *path, split_info *info, int64_t **sums, char *err, size_t errlen)
+extern "C" int split_read_here(const char *path, split_info *info, int64_t **sums, char *err, size_t errlen)
 {
 	*info = split_info();
 	*sums = nullptr;
@@ -150,6 +150,10 @@ extern "C" int split_read(const char *path, split_info *info, int64_t **sums, ch
 	if (!exr || !in->seek_subimage(1, 0) || !read_info(spec, in->spec(), info, at)) {
 		split_info_free(info);
 		return fail(err, errlen, "not an EXR of eclat's with its sums (eclat writes them in every .exr it renders)");
+	}
+	if (split_size_check(spec.width, spec.height, err, errlen)) {
+		split_info_free(info);
+		return -1;
 	}
 	size_t n = (size_t)spec.width * spec.height;
 	std::vector<float> px(n * SUM_CHANNELS);

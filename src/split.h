@@ -57,8 +57,16 @@ int split_in_region(const split_info *info, int x, int y);
 int split_write(const char *path, const float *rgb, const int64_t *sums, const split_info *info, char *err,
                 size_t errlen);
 /* Reads what split_write wrote: info and the sums (malloc'ed). Returns 0, or -1
- * with the problem in err: not an image, not an EXR of eclat's, truncated. */
+ * with the problem in err: not an image, not an EXR of eclat's, truncated, too
+ * large for the memory left. OpenEXR reads the file in a child process
+ * (src/split_child.c): the parts of a split render come from other machines,
+ * and a hostile one must not end eclat. */
 int split_read(const char *path, split_info *info, int64_t **sums, char *err, size_t errlen);
+/* The same, in this process (src/image_split.cpp): what the child runs. */
+int split_read_here(const char *path, split_info *info, int64_t **sums, char *err, size_t errlen);
+/* 0 when a width x height image's sums fit in 65536 on a side and in the memory
+ * left; else -1 with the numbers in err. */
+int split_size_check(long width, long height, char *err, size_t errlen);
 
 #ifdef __cplusplus
 }
