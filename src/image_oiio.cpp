@@ -20,6 +20,14 @@
 
 using namespace OIIO;
 
+/* OpenEXR's worker threads do not exist in a forked child (loader.c reads
+ * images in one), so a child that reads an EXR after this process started
+ * OpenEXR's thread pool (by writing an EXR, or by asking whether .exr is a
+ * format it writes) waits for them until its time limit: an HDR sky and an
+ * EXR output hung for 120 s. OpenEXR runs single-threaded instead, from
+ * before anything else calls it. */
+static const bool exr_without_threads = OIIO::attribute("exr_threads", -1);
+
 static bool is_linear_format(const std::string &path)
 {
 	std::string ext = Strutil::lower(Filesystem::extension(path));
