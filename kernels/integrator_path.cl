@@ -3,7 +3,7 @@
  * converges progressively on the device and the host reads it when it wants.
  *
  * INTEGRATOR_PATH: next-event estimation at every vertex (all light_sources, one
- * emissive primitive chosen by power) and BSDF sampling, the two weighted by the
+ * emissive primitive chosen by power, the sky when it is an image: light_sky) and BSDF sampling, the two weighted by the
  * power heuristic where both can find the same light; Russian roulette after
  * three bounces. INTEGRATOR_NAIVE: the reference paper's algorithm, emitters found
  * only by the bounce rays (light_sources, which no ray can hit, are still sampled). */
@@ -18,6 +18,9 @@
 #define DIM_TEXTURE 7
 #define DIM_AREA 8
 #define DIM_MEDIA 40   /* 40: the walk's chain; 41-43 the phase; 44 on: the vertex's lights */
+/* The sky's (light_sky), eight a bounce in a range of their own, past any the
+ * lights' counts reach. */
+#define DIM_SKY 0x40000000u
 
 /* The objects a ray of this bounce may not see: POV-Ray's no_image for the
  * camera's, no_reflection after a reflection. */
@@ -36,6 +39,7 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 	float3 radiance = (float3)(0.0f), beta = (float3)(1.0f), sigma = (float3)(0.0f);
 	float last_pdf = 0.0f;   /* 0: the last bounce was a single direction, or the camera */
 	bool reflected = false;
+	bool sky_mis = false;   /* the last vertex sampled the sky too: a ray that leaves shares its weight */
 	int solids = p->camera_solids;   /* solid objects around the ray: no fog in them */
 	media_stack ms = media_around(sc, p->cam_location.xyz);   /* the interiors with media around the ray */
 	sc->counts[COUNT_RAYS + RAY_CAMERA]++;
@@ -71,6 +75,7 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 			beta *= f / pdf;
 			last_pdf = pdf;
 			reflected = false;
+			sky_mis = false;
 			o = x;
 			d = wi;
 			if (depth + 1 >= RR_DEPTH) {
@@ -83,7 +88,10 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 			continue;
 		}
 		if (hit.prim < 0) {
-			radiance += beta * texture_sky(sc, d, depth == 0);
+			float w = 1.0f;
+			if (sky_mis && last_pdf > 0.0f)
+				w = light_power_heuristic(last_pdf, sky_pdf(sc->sky_dist, sc->sky_cdf, d));
+			radiance += beta * w * texture_sky(sc, d, depth == 0);
 			if (depth == 0)   /* the camera ray that meets nothing shows the background */
 				*transm = texture_sky_transm(sc, d);
 			break;
@@ -112,6 +120,9 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 		radiance += beta * light_pov(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_AREA, solids, ms);
 		if (p->integrator == INTEGRATOR_PATH)
 			radiance += beta * light_emitters(sc, &m, &lobes, xa, ng, n, wo, key, dim + DIM_EMITTER, ms, solids);
+		sky_mis = p->integrator == INTEGRATOR_PATH && p->sky_sampled;
+		if (sky_mis)
+			radiance += beta * light_sky(sc, &m, &lobes, xa, ng, n, wo, key, DIM_SKY + 8u * (uint)depth, ms, solids);
 
 		float3 u = (float3)(rng_uniform(key, dim + DIM_LOBE), rng_uniform(key, dim + DIM_LOBE + 1),
 		                    rng_uniform(key, dim + DIM_LOBE + 2));

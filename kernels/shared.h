@@ -386,6 +386,23 @@ typedef struct {
 	int pad[2];
 } dev_light;
 
+/* The sky's importance sampling (src/lower_sky.c, kernels/sky_sample.cl),
+ * 112 bytes: a sky_sphere of one spherical image_map, whose texels' brightness
+ * times their solid angle is a piecewise-constant density over the image's
+ * directions. rows: the linear map from a world direction to the image's space
+ * (the pattern's rows without their translation, which must be 0); inv: its
+ * inverse. The sky_cdf buffer holds the rows' cdf (height + 1 floats, the
+ * top row first, as in the image), then each row's cdf over its texels
+ * (width + 1 floats each). det: |det rows|, for the Jacobian from the image's
+ * directions to the world's. */
+typedef struct {
+	float4 rows[3];
+	float4 inv[3];
+	int width, height;
+	float det;
+	int pad;
+} dev_sky;
+
 /* An emissive primitive, chosen for next-event estimation with probability
  * proportional to its power. 16 bytes. */
 typedef struct {
@@ -437,7 +454,7 @@ typedef struct {
 	int camera_solids;  /* the solid (non-hollow) objects around the camera: POV-Ray fogs no
 	                     * camera ray inside one */
 	int atmosphere, n_atmosphere;  /* the scene-level media's dev_media records */
-	int pad;
+	int sky_sampled;    /* 1: the path tracer samples the sky by sky_dist (kernels/sky_sample.cl) */
 } dev_params;
 /* SCENE_SHADOWS_PASS: some surface lets shadow rays through (no_shadow, filter,
  * transmit), so shadow rays look at what they meet instead of stopping at the first.
@@ -465,7 +482,9 @@ enum { SCENE_SHADOWS_PASS = 1, SCENE_SKY_LEGACY = 2, SCENE_MEDIA = 4 };
 	X(float4, texels) \
 	X(dev_fog, fogs) \
 	X(float4, camera_rays) \
-	X(dev_media, media)
+	X(dev_media, media) \
+	X(dev_sky, sky_dist) \
+	X(float, sky_cdf)
 
 /* The aov buffer, when asked for: three float4 a pixel, sums over its samples.
  * [0] rgb: albedo of the first surface; w: samples that hit a surface

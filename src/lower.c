@@ -31,6 +31,7 @@ _Static_assert(sizeof(dev_emitter) == 16, "dev_emitter is 16 bytes");
 _Static_assert(sizeof(dev_params) == 192, "dev_params is 192 bytes");
 _Static_assert(sizeof(dev_fog) == 80 && offsetof(dev_fog, distance) == 48, "dev_fog layout");
 _Static_assert(sizeof(dev_media) == 128 && offsetof(dev_media, method) == 80, "dev_media layout");
+_Static_assert(sizeof(dev_sky) == 112 && offsetof(dev_sky, width) == 96, "dev_sky layout");
 _Static_assert((int)OBJECT_NO_SHADOW == (int)OBJ_NO_SHADOW && (int)OBJECT_NO_IMAGE == (int)OBJ_NO_IMAGE &&
                (int)OBJECT_NO_REFLECTION == (int)OBJ_NO_REFLECTION && (int)OBJECT_HOLLOW == (int)OBJ_HOLLOW &&
                (int)OBJECT_DOUBLE_ILLUMINATE == (int)OBJ_DOUBLE_ILLUMINATE,
@@ -1017,6 +1018,8 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 		rc = widen_trees(out);
 	if (rc == 0)
 		lower_emitters(out);
+	if (rc == 0 && lower_sky(out) < 0)
+		rc = -1;
 	out->functions = lower_function_source(s);
 	if (s->n_functions > 0 && !out->functions)
 		rc = -1;   /* said why, or out of memory: no kernel without its functions */
@@ -1049,5 +1052,6 @@ void lower_free(lower_result *r)
 	free(r->fogs);
 	free(r->camera_rays);
 	free(r->emitters);
+	free(r->sky_cdf);
 	memset(r, 0, sizeof *r);
 }

@@ -101,6 +101,9 @@ typedef struct {
 	long n_camera_rays;
 	dev_emitter *emitters;    /* emissive primitives of the top level, with their power's cdf */
 	int n_emitters;
+	dev_sky sky;              /* the sky's importance sampling when params.sky_sampled (lower_sky.c) */
+	float *sky_cdf;           /* its cdfs, or NULL */
+	int n_sky_cdf;
 	lower_bvh_stats *stats;   /* [0] the top level, then one per mesh placed */
 	int n_stats;
 	dev_params params;        /* camera and background; the renderer fills the rest */
@@ -114,6 +117,19 @@ void lower_free(lower_result *r);
 
 /* The scene's fogs into out->fogs (lower_fog.c); -1 when out of memory. */
 int lower_fogs(const scene *s, lower_result *out);
+/* The sky's importance sampling (lower_sky.c): when the sky_sphere is one
+ * spherical image_map, out->sky and out->sky_cdf, and params.sky_sampled set;
+ * otherwise nothing, and the path tracer finds the sky by its bounce rays
+ * alone. -1 after saying that memory ran out. */
+int lower_sky(lower_result *out);
+/* The distribution over an image of width x height whose texel (x, y), top
+ * row first, has brightness weight[y * width + x] (>= 0), seen through rows
+ * (the linear map from world directions to the image's, 3 x 4, the fourth
+ * column ignored): the texels' weight times their solid angle. Returns 1 with
+ * *sky and *cdf (malloc'ed, *n floats) made, 0 when there is nothing to
+ * sample (no weight, or rows singular), -1 when out of memory. */
+int lower_sky_table(const float *weight, int width, int height, const float rows[3][4], dev_sky *sky,
+                    float **cdf, int *n);
 /* A mesh_camera's rays for an image of width x height into out->camera_rays
  * (lower_camera_mesh.c); nothing for the other cameras. -1 after an error. */
 int lower_camera_mesh(const scene *s, int width, int height, lower_result *out);

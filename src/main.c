@@ -61,13 +61,14 @@ struct options {
 	const char *resume;             /* --resume FILE */
 	int resume_output;              /* --continue, POV-Ray's +C: resume from the output when it is there */
 	cli_pov pov;      /* what POV-Ray's switches and INI files asked for besides */
+	int no_sky_sampling;   /* --sky-sampling off */
 };
 
 enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_DIR,
        OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_BVH_LAYOUT, OPT_STATS, OPT_SKIP_UNSUPPORTED, OPT_EXPORT_MESH2,
        OPT_MAX_INCLUDE_DEPTH, OPT_MAX_MACRO_DEPTH, OPT_MAX_LOOP_ITERATIONS, OPT_MESH_TIME_LIMIT,
        OPT_IO_SECURITY, OPT_IO_ALLOW, OPT_IO_ALLOW_WRITE, OPT_THREADS, OPT_SAMPLE_RANGE, OPT_RESUME,
-       OPT_CONTINUE, OPT_MEMORY_LIMIT, OPT_DEPFILE };
+       OPT_CONTINUE, OPT_MEMORY_LIMIT, OPT_DEPFILE, OPT_SKY_SAMPLING };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -77,6 +78,7 @@ static const struct option long_options[] = {
 	{ "seed", required_argument, NULL, OPT_SEED },
 	{ "max-depth", required_argument, NULL, OPT_MAX_DEPTH },
 	{ "integrator", required_argument, NULL, OPT_INTEGRATOR },
+	{ "sky-sampling", required_argument, NULL, OPT_SKY_SAMPLING },
 	{ "time-limit", required_argument, NULL, OPT_TIME_LIMIT },
 	{ "checkpoint", required_argument, NULL, OPT_CHECKPOINT },
 	{ "sample-range", required_argument, NULL, OPT_SAMPLE_RANGE },
@@ -130,6 +132,8 @@ static void usage(FILE *out)
 		"      --integrator NAME path (default): light sampling with MIS; naive: the\n"
 		"                        reference paper's random walk, for comparison; whitted:\n"
 		"                        POV-Ray's classic model, one ray a pixel (fast preview)\n"
+		"      --sky-sampling on|off  on (default): the path tracer samples a sky_sphere's\n"
+		"                        HDR image by importance; off: bounce rays alone find it\n"
 		"      --time-limit S    stop after S seconds, or at the samples, whichever is first\n"
 		"      --checkpoint S    write the image rendered so far every S seconds\n"
 		"      --sample-range FIRST:COUNT  render only samples FIRST to FIRST+COUNT-1 of\n"
@@ -345,6 +349,14 @@ static int integrator_arg(const char *s)
 	exit(1);
 }
 
+static int sky_sampling_arg(const char *s)
+{
+	if (strcmp(s, "on") == 0 || strcmp(s, "off") == 0)
+		return strcmp(s, "off") == 0;
+	fprintf(stderr, "eclat: --sky-sampling is on or off, not '%s'\n", s);
+	exit(1);
+}
+
 /* After getopt_long's "unrecognized option '--widht'": the option meant. */
 static void hint_option(const char *arg)
 {
@@ -382,6 +394,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case OPT_THREADS: o->threads = int_arg("--threads", optarg, 1, 512); break;
 		case OPT_DEPFILE: o->depfile = optarg; break;
 		case OPT_INTEGRATOR: o->integrator = integrator_arg(optarg); break;
+		case OPT_SKY_SAMPLING: o->no_sky_sampling = sky_sampling_arg(optarg); break;
 		case OPT_TIME_LIMIT: o->time_limit = seconds_arg("--time-limit", optarg); break;
 		case OPT_CHECKPOINT: o->checkpoint = seconds_arg("--checkpoint", optarg); break;
 		case OPT_SAMPLE_RANGE: range_arg(o, optarg); break;
@@ -700,6 +713,8 @@ static char *pixel_options(const struct options *o, const render_settings *rs, c
 	        o->bvh_layout, o->skip_unsupported, fi->clock, fi->frame);
 	for (int i = 0; i < o->n_declares; i++)
 		fprintf(f, "declare=%s\n", o->declares[i]);
+	if (o->no_sky_sampling)   /* only when off: parts made before the option still merge */
+		fprintf(f, "sky-sampling=off\n");
 	return fclose(f) == 0 ? text : (free(text), NULL);
 }
 
@@ -731,6 +746,8 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		return rc;
 	}
 	warn_if_dark(o, s, &lr);   /* only when there is an image to warn about */
+	if (o->no_sky_sampling)
+		lr.params.sky_sampled = 0;
 	if (o->pov.alpha)
 		lower_background_alpha(s, &lr.params);
 	split_info info = { 0 };

@@ -26,6 +26,8 @@
 #define HOST_fogs(LR) (LR)->fogs, (LR)->n_fogs * sizeof(dev_fog)
 #define HOST_camera_rays(LR) (LR)->camera_rays, (size_t)(LR)->n_camera_rays * sizeof(float4)
 #define HOST_media(LR) (LR)->textures.media, (LR)->textures.n_media * sizeof(dev_media)
+#define HOST_sky_dist(LR) &(LR)->sky, sizeof(dev_sky)
+#define HOST_sky_cdf(LR) (LR)->sky_cdf, (LR)->n_sky_cdf * sizeof(float)
 
 /* The kernels' buffers in argument order: the scene's, from shared.h's list,
  * then the parameters and the film's. */
