@@ -139,15 +139,17 @@ extern "C" int split_read_here(const char *path, split_info *info, int64_t **sum
 {
 	*info = split_info();
 	*sums = nullptr;
-	auto in = ImageInput::open(path);
-	if (!in) {
-		std::string why = OIIO::geterror();
-		return fail(err, errlen, why.empty() ? "not an image eclat can read" : why);
+	/* only OpenEXR looks at it: a part is an EXR, and no other decoder (there
+	 * are dozens behind ImageInput::open) should see what another machine sent */
+	auto in = ImageInput::create("openexr");
+	ImageSpec opened;
+	if (!in || !in->valid_file(path) || !in->open(path, opened)) {
+		std::string why = in ? in->geterror() : OIIO::geterror();
+		return fail(err, errlen, why.empty() ? "not an EXR of eclat's" : why);
 	}
 	const ImageSpec spec = in->spec();
 	int at[SUM_CHANNELS];
-	bool exr = std::strcmp(in->format_name(), "openexr") == 0;
-	if (!exr || !in->seek_subimage(1, 0) || !read_info(spec, in->spec(), info, at)) {
+	if (!in->seek_subimage(1, 0) || !read_info(spec, in->spec(), info, at)) {
 		split_info_free(info);
 		return fail(err, errlen, "not an EXR of eclat's with its sums (eclat writes them in every .exr it renders)");
 	}
