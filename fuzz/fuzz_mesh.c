@@ -55,7 +55,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	fclose(f);
 	scene_mesh m;
 	char err[512];
-	if (mesh_io_load(path, LOADER_SECONDS, &m, err, sizeof err) == 0)
+	if (mesh_io_load(path, LOADER_SECONDS, 0, &m, err, sizeof err) == 0)
 		scene_mesh_free(&m);
 	unlink(path);
 	return 0;

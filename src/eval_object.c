@@ -1040,16 +1040,14 @@ static int mesh_file(struct eval *e, struct cursor *c, const ast_node *item, str
 	free(name);
 	scene_mesh m;
 	int rc = eval_access(e, path, false, arg->loc, "a mesh");
-	if (rc == 0 && (rc = mesh_io_load_cached(e->opt->mesh_cache, path, e->opt->mesh_time_limit, &m, err,
-	                                             sizeof err)) != 0)
+	/* checked with the counts the child sends, before they are allocated */
+	if (rc == 0 && (rc = mesh_io_load_cached(e->opt->mesh_cache, path, e->opt->mesh_time_limit,
+	                                             eval_memory_left(e), &m, err, sizeof err)) != 0)
 		eval_error(e, arg->loc, "cannot load the mesh '%s': %s", path, err);
 	free(path);
 	if (rc)
 		return -1;
-	/* the child read the file; what it sent is here already (mesh_io.c), and
-	 * the lowering and the BVH will want about as much again */
-	double bytes = 2.0 * ((double)m.n_v * sizeof *m.v * (m.nrm ? 2 : 1) + (double)m.n_faces * sizeof *m.face * 3);
-	if (eval_memory_claim(e, arg->loc, bytes, "the mesh")) {
+	if (eval_memory_claim(e, arg->loc, mesh_io_bytes(m.n_v, m.n_faces, m.nrm != NULL), "the mesh")) {
 		scene_mesh_free(&m);
 		return -1;
 	}

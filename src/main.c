@@ -827,7 +827,7 @@ static int export_mesh2(const struct options *o)
 {
 	scene_mesh m;
 	char err[512], name[64];
-	if (mesh_io_load(o->export_mesh2, (unsigned)o->mesh_time_limit, &m, err, sizeof err)) {
+	if (mesh_io_load(o->export_mesh2, (unsigned)o->mesh_time_limit, 0, &m, err, sizeof err)) {
 		fprintf(stderr, "eclat: %s: %s\n", o->export_mesh2, err);
 		return 1;
 	}

@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "host_memory.h"
 #include "mesh_io.h"
 
 /* Triangulate polygons, flatten the node hierarchy into world positions, join
@@ -215,7 +216,28 @@ static void child(int fd, const char *path, unsigned time_limit)
 	_exit(bad ? 1 : 0);   /* no atexit handlers: they belong to the parent */
 }
 
-static int receive(int fd, scene_mesh *m, char *err, size_t errlen)
+double mesh_io_bytes(double n_v, double n_faces, int normals)
+{
+	/* the vertices (and normals), the faces (their normals' and materials'
+	 * indices), and about as much again for the lowering and the BVH */
+	return 2 * (n_v * sizeof(double[3]) * (normals ? 2 : 1) + n_faces * sizeof(int[3]) * 3);
+}
+
+/* 0 when a mesh this large may be allocated here; else -1 with the numbers. */
+int mesh_io_fits(double n_v, double n_faces, int normals, double max_bytes, char *err, size_t errlen)
+{
+	double need = mesh_io_bytes(n_v, n_faces, normals);
+	if (max_bytes <= 0 || need <= max_bytes)
+		return 0;
+	char a[32], b[32];
+	host_memory_format(need, a, sizeof a);
+	host_memory_format(max_bytes, b, sizeof b);
+	snprintf(err, errlen, "its %.0f vertices and %.0f triangles need %s, more than the %s of memory left to the "
+	         "scene (--memory-limit)", n_v, n_faces, a, b);
+	return -1;
+}
+
+static int receive(int fd, scene_mesh *m, double max_bytes, char *err, size_t errlen)
 {
 	int head[4];
 	if (read_all(fd, head, sizeof head))
@@ -228,6 +250,10 @@ static int receive(int fd, scene_mesh *m, char *err, size_t errlen)
 		snprintf(err, errlen, "%s", msg);
 		return -1;
 	}
+	if (head[1] < 0 || head[2] < 0)
+		return -2;
+	if (mesh_io_fits(head[1], head[2], head[3], max_bytes, err, errlen))
+		return -1;
 	m->n_v = head[1];
 	m->n_faces = head[2];
 	m->v = malloc((size_t)m->n_v * sizeof *m->v + 1);
@@ -246,7 +272,7 @@ static int receive(int fd, scene_mesh *m, char *err, size_t errlen)
 	return 0;
 }
 
-int mesh_io_load(const char *path, unsigned time_limit, scene_mesh *m, char *err, size_t errlen)
+int mesh_io_load(const char *path, unsigned time_limit, double max_bytes, scene_mesh *m, char *err, size_t errlen)
 {
 	memset(m, 0, sizeof *m);
 	int fd[2];
@@ -267,7 +293,7 @@ int mesh_io_load(const char *path, unsigned time_limit, scene_mesh *m, char *err
 		child(fd[1], path, time_limit);
 	}
 	close(fd[1]);
-	int rc = receive(fd[0], m, err, errlen);
+	int rc = receive(fd[0], m, max_bytes, err, errlen);
 	close(fd[0]);
 	int status = 0;
 	while (waitpid(pid, &status, 0) < 0 && errno == EINTR)

@@ -15,9 +15,15 @@
 /* Loads every triangle of the file, with the node transforms applied and shared
  * vertices joined; the file's own normals become shading normals when it has them
  * for every vertex. Points and lines are dropped. assimp gets time_limit seconds
- * (0: no limit). Returns 0, or -1 with assimp's reason (or ours) in err. m's
+ * (0: no limit), in a child process. Returns 0, or -1 with assimp's reason (or ours) in err. m's
  * arrays are the caller's (scene_add_mesh takes them). */
-int mesh_io_load(const char *path, unsigned time_limit, scene_mesh *m, char *err, size_t errlen);
+int mesh_io_load(const char *path, unsigned time_limit, double max_bytes, scene_mesh *m, char *err, size_t errlen);
+/* What a mesh of n_v vertices (with normals or not) and n_faces triangles takes
+ * once it is a scene's, its lowering included: max_bytes above bounds it (0: no
+ * bound), checked with the counts before anything is allocated for the arrays. */
+double mesh_io_bytes(double n_v, double n_faces, int normals);
+/* 0 when such a mesh fits in max_bytes (0: no bound); else -1 with the numbers in err. */
+int mesh_io_fits(double n_v, double n_faces, int normals, double max_bytes, char *err, size_t errlen);
 
 /* Mesh files kept between the frames of an animation (mesh_io_cache.c):
  * mesh_io_load_cached is mesh_io_load, or a copy of what the same file (same
@@ -26,8 +32,8 @@ int mesh_io_load(const char *path, unsigned time_limit, scene_mesh *m, char *err
 typedef struct mesh_io_cache mesh_io_cache;
 mesh_io_cache *mesh_io_cache_new(void);   /* NULL when out of memory */
 void mesh_io_cache_free(mesh_io_cache *c);
-int mesh_io_load_cached(mesh_io_cache *c, const char *path, unsigned time_limit, scene_mesh *m, char *err,
-                        size_t errlen);
+int mesh_io_load_cached(mesh_io_cache *c, const char *path, unsigned time_limit, double max_bytes, scene_mesh *m,
+                        char *err, size_t errlen);
 void mesh_io_cache_sweep(mesh_io_cache *c);
 int mesh_io_cache_hits(const mesh_io_cache *c);   /* files copied, not read, so far */
 

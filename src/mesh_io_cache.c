@@ -104,16 +104,19 @@ static void keep(mesh_io_cache *c, const char *path, const struct stat *st, cons
 	c->e[c->n++] = e;
 }
 
-int mesh_io_load_cached(mesh_io_cache *c, const char *path, unsigned time_limit, scene_mesh *m, char *err,
-                        size_t errlen)
+int mesh_io_load_cached(mesh_io_cache *c, const char *path, unsigned time_limit, double max_bytes, scene_mesh *m,
+                        char *err, size_t errlen)
 {
 	struct stat st;
 	if (!c || stat(path, &st) != 0)
-		return mesh_io_load(path, time_limit, m, err, errlen);
+		return mesh_io_load(path, time_limit, max_bytes, m, err, errlen);
 	for (int i = 0; i < c->n; i++) {
 		struct entry *e = &c->e[i];
 		if (strcmp(e->path, path) != 0)
 			continue;
+		if (same_file(&e->st, &st) &&
+		    mesh_io_fits(e->m.n_v, e->m.n_faces, e->m.nrm != NULL, max_bytes, err, errlen))
+			return -1;
 		if (same_file(&e->st, &st) && copy_mesh(&e->m, m) == 0) {
 			e->used = 1;
 			c->hits++;
@@ -124,7 +127,7 @@ int mesh_io_load_cached(mesh_io_cache *c, const char *path, unsigned time_limit,
 		c->e[i] = c->e[--c->n];
 		break;
 	}
-	int rc = mesh_io_load(path, time_limit, m, err, errlen);
+	int rc = mesh_io_load(path, time_limit, max_bytes, m, err, errlen);
 	if (rc == 0)
 		keep(c, path, &st, m);
 	return rc;

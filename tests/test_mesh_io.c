@@ -33,7 +33,7 @@ static void expect_triangles(const char *path, int want)
 {
 	scene_mesh m;
 	char err[512], what[1024];
-	if (mesh_io_load(path, MESH_IO_DEFAULT_TIME_LIMIT, &m, err, sizeof err) != 0) {
+	if (mesh_io_load(path, MESH_IO_DEFAULT_TIME_LIMIT, 0, &m, err, sizeof err) != 0) {
 		snprintf(what, sizeof what, "%s loads (%s)", path, err);
 		check(0, what);
 		return;
@@ -52,7 +52,7 @@ static void expect_error(const char *path, const char *label)
 {
 	scene_mesh m;
 	char err[512], what[1024];
-	int rc = mesh_io_load(path, MESH_IO_DEFAULT_TIME_LIMIT, &m, err, sizeof err);
+	int rc = mesh_io_load(path, MESH_IO_DEFAULT_TIME_LIMIT, 0, &m, err, sizeof err);
 	snprintf(what, sizeof what, "%s is refused with a reason (%s)", label, rc ? err : "loaded");
 	check(rc != 0 && err[0], what);
 	if (rc == 0)

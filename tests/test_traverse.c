@@ -367,7 +367,7 @@ static int test_mesh(device_ctx *dev, cl_program prog, const char *file, int n)
 	char label[320], err[512];
 	const char *name = strrchr(file, '/') ? strrchr(file, '/') + 1 : file;
 	scene_mesh m;
-	if (mesh_io_load(file, MESH_IO_DEFAULT_TIME_LIMIT, &m, err, sizeof err)) {
+	if (mesh_io_load(file, MESH_IO_DEFAULT_TIME_LIMIT, 0, &m, err, sizeof err)) {
 		printf("FAIL: %s does not load: %s\n", file, err);
 		failures++;
 		return -1;
