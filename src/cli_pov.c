@@ -361,7 +361,10 @@ static void antialiasing(cli_pov *p, enum kind k, const struct setting *s)
 			p->aa_method = 2;
 		}
 		break;
-	case K_AA_DEPTH: p->aa_depth = (int)whole(s, 1, 9); break;
+	case K_AA_DEPTH:   /* POV-Ray clips it to 1 .. 9 */
+		p->aa_depth = (int)whole(s, -1000000000, 1000000000);
+		p->aa_depth = p->aa_depth < 1 ? 1 : p->aa_depth > 9 ? 9 : p->aa_depth;
+		break;
 	case K_AA_GAMMA: p->aa_gamma = number(s); break;
 	case K_JITTER:   /* +J0.5 is Jitter on with Jitter_Amount 0.5 */
 		p->jitter = s->on;
