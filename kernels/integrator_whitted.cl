@@ -1,7 +1,8 @@
 /* integrator_whitted.cl: POV-Ray 3.7's classic lighting model, for previews and
  * for pixel-level cross-checks against povray (tests/povray.test).
  *
- * One ray through each pixel's centre, as povray -A traces it. At each surface,
+ * A camera ray's colour (kernels/whitted_pixel.cl makes the rays of a pixel as
+ * POV-Ray does, with or without anti-aliasing and focal blur). At each surface,
  * as POV-Ray's Trace::ComputeLightedTexture does for a one-layer texture:
  *   colour = pigment * (ambient * ambient_light + emission) * opacity
  *          + for each light_source: diffuse, phong and specular (whitted_light)
@@ -505,50 +506,4 @@ inline float3 whitted_radiance(const scene_data *sc, whitted_ray camera, first_h
 		}
 	}
 	return result;
-}
-
-/* Where sample s of a pixel goes: a 3x3 grid whose sample 0 is the centre, so
- * one sample is POV-Ray's image without anti-aliasing and nine (POV-Ray's +A,
- * src/main.c) cover the grid. */
-inline float2 whitted_subpixel(int s)
-{
-	int k = (s % 9 + 4) % 9;
-	return (float2)(((float)(k % 3) + 0.5f) / 3.0f, ((float)(k / 3) + 0.5f) / 3.0f);
-}
-
-kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, global long4 *film,
-                           global uint *counters, global float4 *aov)
-{
-	int pixel = get_global_id(0);
-	if (pixel >= p->width * p->height)
-		return;
-	int px = pixel % p->width, py = pixel / p->width;
-	uint counts[COUNT_N] = { 0 };
-	scene_data sc = { SCENE_BUFFERS(SCENE_FIELD) p, counts };
-	long4 acc = film[pixel];
-	media_stack around = media_around(&sc, p->cam_location.xyz);
-	for (int s = 0; s < p->samples_per_pass; s++) {
-		/* one ray through a fixed place of the pixel; focal blur, which needs many
-		 * rays, is the path tracer's. Where the camera makes no ray, POV-Ray's
-		 * pixel is black. */
-		float3 o, d, l = (float3)(0.0f);
-		float transm = 0.0f;
-		first_hit first = { (float3)(0.0f), (float3)(0.0f), 0.0f, -1 };
-		uint tests = counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA];
-		float2 at = whitted_subpixel(p->sample_base + s);
-		if (camera_view(&sc, px, py, at.x, at.y, &o, &d)) {
-			d = normalize(d);
-			whitted_ray camera = whitted_child(o, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE, p->camera_solids,
-			                                   around);
-			counts[COUNT_RAYS + RAY_CAMERA]++;
-			l = film_finite(whitted_radiance(&sc, camera, &first, &transm));
-		}
-		acc += film_fixed(l, counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA] - tests);
-		if (p->aov) {
-			film_add_aov(aov, pixel, &first, p->sample_base + s);
-			film_add_transm(aov, pixel, transm);
-		}
-	}
-	film[pixel] = acc;
-	film_add_counts(counters, counts);
 }

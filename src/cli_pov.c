@@ -27,7 +27,8 @@ struct cli_args {
 enum kind {
 	K_SILENT,     /* nothing to do in eclat: a display, log or memory knob */
 	K_WARN,       /* eclat cannot do it: a warning */
-	K_AA_WARN,    /* anti-aliasing's details: the path tracer's samples are its anti-aliasing */
+	K_AA_WARN,    /* anti-aliasing's details that eclat has not: a warning */
+	K_AA_METHOD, K_AA_DEPTH, K_AA_GAMMA, K_JITTER, K_JITTER_AMOUNT,   /* the whitted integrator's anti-aliasing */
 	K_WIDTH, K_HEIGHT, K_INPUT, K_OUTPUT, K_TO_FILE, K_TYPE, K_BITS, K_ALPHA,
 	K_AA, K_AA_THRESHOLD, K_QUALITY, K_LIBRARY, K_DECLARE, K_DISPLAY, K_THREADS, K_SEED,
 	K_LEFT, K_TOP, K_RIGHT, K_BOTTOM,   /* ORDER CLI_REGION_ */
@@ -46,8 +47,8 @@ static const struct pov_switch {
 	const char *what;   /* for a warning */
 } switches[] = {
 	{ "AC", K_AA_WARN, P_REQUIRED, "anti-aliasing confidence" },
-	{ "AG", K_AA_WARN, P_REQUIRED, "anti-aliasing gamma" },
-	{ "AM", K_AA_WARN, P_REQUIRED, "anti-aliasing method" },
+	{ "AG", K_AA_GAMMA, P_REQUIRED, NULL },
+	{ "AM", K_AA_METHOD, P_REQUIRED, NULL },
 	{ "A", K_AA, P_OPTIONAL, NULL },
 	{ "BM", K_SILENT, P_REQUIRED, NULL },
 	{ "BS", K_SILENT, P_REQUIRED, NULL },
@@ -73,7 +74,7 @@ static const struct pov_switch {
 	{ "HR", K_SILENT, P_NONE, NULL },
 	{ "H", K_HEIGHT, P_REQUIRED, NULL },
 	{ "I", K_INPUT, P_REQUIRED, NULL },
-	{ "J", K_AA_WARN, P_OPTIONAL, "jitter" },
+	{ "J", K_JITTER, P_OPTIONAL, NULL },
 	{ "KC", K_CYCLIC, P_NONE, NULL },
 	{ "KI", K_INITIAL_CLOCK, P_REQUIRED, NULL },
 	{ "KFF", K_FINAL_FRAME, P_REQUIRED, NULL },
@@ -95,7 +96,7 @@ static const struct pov_switch {
 	{ "RP", K_SILENT, P_REQUIRED, NULL },
 	{ "RTR", K_WARN, P_NONE, "real-time ray tracing" },
 	{ "RVP", K_WARN, P_NONE, "radiosity's vain pretrace" },
-	{ "R", K_AA_WARN, P_REQUIRED, "anti-aliasing depth" },
+	{ "R", K_AA_DEPTH, P_REQUIRED, NULL },
 	{ "SC", K_LEFT, P_REQUIRED, NULL },
 	{ "SF0", K_SUBSET_START, P_REQUIRED, NULL },
 	{ "SF", K_SUBSET_START, P_REQUIRED, NULL },
@@ -128,8 +129,8 @@ static const struct pov_key {
 } keys[] = {
 	{ "All_Console", K_SILENT, 1, NULL }, { "All_File", K_SILENT, 0, NULL },
 	{ "Antialias", K_AA, 1, NULL }, { "Antialias_Confidence", K_AA_WARN, 0, "anti-aliasing confidence" },
-	{ "Antialias_Depth", K_AA_WARN, 0, "anti-aliasing depth" },
-	{ "Antialias_Gamma", K_AA_WARN, 0, "anti-aliasing gamma" },
+	{ "Antialias_Depth", K_AA_DEPTH, 0, NULL },
+	{ "Antialias_Gamma", K_AA_GAMMA, 0, NULL },
 	{ "Antialias_Threshold", K_AA_THRESHOLD, 0, NULL }, { "Append_File", K_SILENT, 1, NULL },
 	{ "Bits_Per_Color", K_BITS, 0, NULL }, { "Bits_Per_Colour", K_BITS, 0, NULL },
 	{ "Bounding", K_SILENT, 1, NULL }, { "Bounding_Method", K_SILENT, 0, NULL },
@@ -156,8 +157,8 @@ static const struct pov_key {
 	{ "Histogram_Grid_Size", K_WARN, 0, "a histogram" }, { "Histogram_Type", K_WARN, 0, "a histogram" },
 	{ "Initial_Clock", K_INITIAL_CLOCK, 0, NULL }, { "Initial_Frame", K_INITIAL_FRAME, 0, NULL },
 	{ "Input_File_Name", K_INPUT, 0, NULL }, { "Include_Header", K_WARN, 0, "an include header" },
-	{ "Include_Ini", K_INCLUDE_INI, 0, NULL }, { "Jitter_Amount", K_AA_WARN, 0, "jitter" },
-	{ "Jitter", K_AA_WARN, 1, "jitter" }, { "Library_Path", K_LIBRARY, 0, NULL },
+	{ "Include_Ini", K_INCLUDE_INI, 0, NULL }, { "Jitter_Amount", K_JITTER_AMOUNT, 0, NULL },
+	{ "Jitter", K_JITTER, 1, NULL }, { "Library_Path", K_LIBRARY, 0, NULL },
 	{ "Light_Buffer", K_SILENT, 1, NULL }, { "Max_Image_Buffer_Memory", K_WARN, 0, "an image buffer memory limit" },
 	{ "Odd_Field", K_WARN, 1, "odd fields" }, { "Output_Alpha", K_ALPHA, 1, NULL },
 	{ "Output_File_Name", K_OUTPUT, 0, NULL }, { "Output_File_Type", K_TYPE, 0, NULL },
@@ -175,7 +176,7 @@ static const struct pov_key {
 	{ "Real_Time_Raytracing", K_WARN, 1, "real-time ray tracing" }, { "Remove_Bounds", K_SILENT, 1, NULL },
 	{ "Render_Block_Size", K_SILENT, 0, NULL }, { "Render_Block_Step", K_SILENT, 0, NULL },
 	{ "Render_Console", K_SILENT, 1, NULL }, { "Render_File", K_SILENT, 0, NULL },
-	{ "Render_Pattern", K_SILENT, 0, NULL }, { "Sampling_Method", K_AA_WARN, 0, "anti-aliasing method" },
+	{ "Render_Pattern", K_SILENT, 0, NULL }, { "Sampling_Method", K_AA_METHOD, 0, NULL },
 	{ "Split_Unions", K_SILENT, 1, NULL }, { "Start_Column", K_LEFT, 0, NULL },
 	{ "Start_Row", K_TOP, 0, NULL }, { "Statistic_Console", K_SILENT, 1, NULL },
 	{ "Statistic_File", K_SILENT, 0, NULL }, { "Stochastic_Seed", K_SEED, 0, NULL },
@@ -345,8 +346,33 @@ static void warn_or_not(enum kind k, const struct setting *s, const char *what)
 	if (k == K_WARN && s->on)
 		diag_warning(s->loc, "%s (%s): not in eclat; ignored", s->name, what);
 	else if (k == K_AA_WARN)
-		diag_warning(s->loc, "%s: ignored; eclat's path tracer anti-aliases with its samples (-s), "
-		             "and its whitted integrator does not yet", s->name);
+		diag_warning(s->loc, "%s (%s): ignored; eclat's anti-aliasing methods are 1 and 2", s->name, what);
+}
+
+/* The whitted integrator's anti-aliasing, clipped to POV-Ray 3.7's ranges as
+ * its View::StartRender clips them (the threshold too, where it is used). */
+static void antialiasing(cli_pov *p, enum kind k, const struct setting *s)
+{
+	switch (k) {
+	case K_AA_METHOD:
+		p->aa_method = (int)whole(s, 0, 3);
+		if (p->aa_method == 3) {
+			diag_warning(s->loc, "%s3: POV-Ray 3.7 has no method 3; eclat uses method 2", s->name);
+			p->aa_method = 2;
+		}
+		break;
+	case K_AA_DEPTH:   /* POV-Ray clips it to 1 .. 9 */
+		p->aa_depth = (int)whole(s, -1000000000, 1000000000);
+		p->aa_depth = p->aa_depth < 1 ? 1 : p->aa_depth > 9 ? 9 : p->aa_depth;
+		break;
+	case K_AA_GAMMA: p->aa_gamma = number(s); break;
+	case K_JITTER:   /* +J0.5 is Jitter on with Jitter_Amount 0.5 */
+		p->jitter = s->on;
+		if (s->value && *s->value)
+			p->jitter_amount = number(s);
+		break;
+	default: p->jitter_amount = number(s); break;
+	}
 }
 
 static void apply(cli_args *a, enum kind k, const struct setting *s, src_loc key_loc, const char *what)
@@ -364,11 +390,14 @@ static void apply(cli_args *a, enum kind k, const struct setting *s, src_loc key
 	case K_BITS: p->bits = (int)whole(s, 1, 16); break;
 	case K_ALPHA: p->alpha = s->on; break;
 	case K_AA:
-		if (s->value)
-			number(s);
+		if (s->value && *s->value)
+			p->aa_threshold = number(s);
 		p->antialias = s->on;
 		break;
-	case K_AA_THRESHOLD: number(s); break;
+	case K_AA_THRESHOLD: p->aa_threshold = number(s); break;
+	case K_AA_METHOD: case K_AA_DEPTH: case K_AA_GAMMA: case K_JITTER: case K_JITTER_AMOUNT:
+		antialiasing(p, k, s);
+		break;
 	case K_QUALITY:
 		if (whole(s, 0, 11) < 9)
 			diag_warning(s->loc, "%s asks for quality %s; eclat draws the whole scene at any quality "
@@ -598,7 +627,9 @@ static int one_argument(cli_args *a, char **argv, int i, int argc, const struct 
 int cli_pov_args(int argc, char **argv, const struct option *longopts, const char *shortopts,
                  cli_pov *pov, char ***out)
 {
-	*pov = (cli_pov){ .antialias = -1, .initial_frame = 1, .final_frame = 1, .final_clock = 1 };
+	*pov = (cli_pov){ .antialias = -1, .initial_frame = 1, .final_frame = 1, .final_clock = 1,
+	                  .aa_method = 1, .aa_threshold = 0.3, .aa_depth = 3, .aa_gamma = 2.5, .jitter = 1,
+	                  .jitter_amount = 1 };
 	cli_args a = { .pov = pov };
 	push(&a, "%s", argv[0]);
 	/* POV-Ray reads the INI file $POVINI names before the command line. */

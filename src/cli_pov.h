@@ -22,6 +22,10 @@ typedef struct {
 	int bits;                    /* +FN16: 16; 0: the format's own */
 	int alpha;                   /* +UA, Output_Alpha: the image gets an alpha channel */
 	int antialias;               /* +A: 1, -A: 0, not given: -1 */
+	/* the whitted integrator's anti-aliasing as POV-Ray's switches set it (POV-Ray's
+	 * defaults: +AM1 +A0.3 +R3 +AG2.5 +J1.0) */
+	int aa_method, aa_depth, jitter;
+	double aa_threshold, aa_gamma, jitter_amount;
 	int anim;                    /* Initial_Frame or Final_Frame was given */
 	int clock_given, cyclic, subset_start_given, subset_end_given;
 	double clock, initial_clock, final_clock;

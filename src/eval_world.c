@@ -184,26 +184,48 @@ static int camera_angle(struct eval *e, struct cursor *c, const ast_node *item, 
 	return err ? -1 : 0;
 }
 
+/* blur_samples N, or blur_samples Min, Max (POV-Ray 3.7): at least Min
+ * samples before the stopping rule may end a pixel's. */
+static int camera_blur_samples(struct eval *e, struct cursor *c, const ast_node *item, struct camera_items *ci)
+{
+	double n, most;
+	int err = 0;
+	if (eval_expect_float(e, item->kids[0], &n))
+		return -1;
+	const ast_node *second = eval_next_optional(c, &err);
+	if (err || (second && eval_expect_float(e, second, &most)))
+		return -1;
+	if (second && most != 0 && n > most) {
+		eval_error(e, second->loc, "blur_samples' minimum %g is larger than its maximum %g", n, most);
+		return -1;
+	}
+	if (!second || most == 0)
+		most = n, n = 0;
+	ci->c.blur_samples = most < 1 ? 1 : most > 1e6 ? 1000000 : (int)most;
+	ci->c.blur_samples_min = n < 0 ? 0 : n > 1e6 ? 1000000 : (int)n;
+	return 0;
+}
+
 static int camera_float(struct eval *e, struct cursor *c, const ast_node *item, struct camera_items *ci)
 {
 	double f;
-	int err = 0;
 	switch (item->kw) {
 	case KW_ANGLE:
 		return camera_angle(e, c, item, ci);
 	case KW_APERTURE:
 		return eval_expect_float(e, item->kids[0], &ci->c.aperture);
-	case KW_CONFIDENCE: case KW_VARIANCE:   /* POV-Ray's adaptive focal blur; the path tracer blurs without them */
-		eval_warn_once(e, item->loc, ast_keyword_name(item->kw), "the camera's '%s' is not supported yet; ignored",
-		               ast_keyword_name(item->kw));
-		return eval_expect_float(e, item->kids[0], &f);
-	case KW_BLUR_SAMPLES:
+	case KW_CONFIDENCE: case KW_VARIANCE:   /* the whitted integrator's stopping rule; as POV-Ray, a bad one warns */
 		if (eval_expect_float(e, item->kids[0], &f))
 			return -1;
-		ci->c.blur_samples = f < 1 ? 1 : f > 1e6 ? 1000000 : (int)f;
-		if (eval_next_optional(c, &err))   /* blur_samples Min, Max */
-			eval_warn_once(e, item->loc, "blur_samples max", "the second number of blur_samples is ignored");
-		return err ? -1 : 0;
+		if (item->kw == KW_CONFIDENCE ? f > 0 && f < 1 : f >= 0 && f <= 1)
+			*(item->kw == KW_CONFIDENCE ? &ci->c.confidence : &ci->c.variance) = f;
+		else
+			eval_warning(e, item->kids[0]->loc, "the camera's %s must be %s, not %g; the default is used",
+			          ast_keyword_name(item->kw), item->kw == KW_CONFIDENCE ? "above 0 and below 1" : "from 0 to 1",
+			          f);
+		return 0;
+	case KW_BLUR_SAMPLES:
+		return camera_blur_samples(e, c, item, ci);
 	default:
 		return 1;
 	}

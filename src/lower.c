@@ -1000,7 +1000,7 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	out->normals = lw.normals;
 	out->n_normals = lw.n_normals;
 	if (lower_camera(s, &out->params) || lower_fogs(s, out) ||
-	    lower_camera_mesh(s, lw.opt->width, lw.opt->height, out))
+	    lower_camera_mesh(s, lw.opt->width, lw.opt->height, out) || lower_camera_lens(s, out))
 		rc = -1;
 	out->params.n_fogs = out->n_fogs;
 	out->params.atmosphere = atmosphere;

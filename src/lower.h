@@ -97,7 +97,8 @@ typedef struct {
 	int n_lights;
 	dev_fog *fogs;            /* the scene's fogs (lower_fog.c) */
 	int n_fogs;
-	float4 *camera_rays;      /* a mesh_camera's rays (lower_camera_mesh.c), or NULL */
+	float4 *camera_rays;      /* a mesh_camera's rays (lower_camera_mesh.c), the lens of focal
+	                           * blur (lower_camera_lens.c), or NULL */
 	long n_camera_rays;
 	dev_emitter *emitters;    /* emissive primitives of the top level, with their power's cdf */
 	int n_emitters;
@@ -133,6 +134,10 @@ int lower_sky_table(const float *weight, int width, int height, const float rows
 /* A mesh_camera's rays for an image of width x height into out->camera_rays
  * (lower_camera_mesh.c); nothing for the other cameras. -1 after an error. */
 int lower_camera_mesh(const scene *s, int width, int height, lower_result *out);
+/* The Whitted integrator's focal blur (lower_camera_lens.c): the lens's samples
+ * and its confidence test's thresholds into out->camera_rays, when the camera
+ * blurs (out->params.lens.x > 0; never a mesh_camera). -1 after an error. */
+int lower_camera_lens(const scene *s, lower_result *out);
 /* How many solid (non-hollow) objects hold the camera's location. */
 int lower_camera_solids(const scene *s);
 

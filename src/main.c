@@ -752,11 +752,16 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 		lower_background_alpha(s, &lr.params);
 	split_info info = { 0 };
 	struct output out = { output, o->scene, o->pov.bits, part, split_is_exr(output) ? &info : NULL, o->pov.alpha };
-	/* deterministic: one sample is the image; POV-Ray's +A asks for the 3x3 grid
-	 * of kernels/integrator_whitted.cl */
-	int whitted = o->integrator == INTEGRATOR_WHITTED, whitted_samples = o->pov.antialias == 1 ? 9 : 1;
+	/* deterministic: one sample is the image, anti-aliased (+A) as POV-Ray does */
+	int whitted = o->integrator == INTEGRATOR_WHITTED;
+	const cli_pov *pov = &o->pov;
+	double aa_threshold = pov->aa_threshold < 0 ? 0 : pov->aa_threshold > 1 ? 1 : pov->aa_threshold;
+	double jitter = !pov->jitter ? 0 : pov->jitter_amount < 0 ? 0 : pov->jitter_amount > 1 ? 1 : pov->jitter_amount;
 	render_settings rs = {
-		.width = o->width, .height = o->height, .samples = whitted ? whitted_samples : o->samples, .seed = o->seed,
+		.width = o->width, .height = o->height, .samples = whitted ? 1 : o->samples, .seed = o->seed,
+		.aa_method = pov->antialias == 1 ? pov->aa_method : 0, .aa_depth = pov->aa_depth,
+		.aa_threshold = (float)aa_threshold, .aa_jitter = (float)jitter,
+		.aa_gamma = (float)(pov->aa_gamma > 0 ? s->film_gamma / pov->aa_gamma : s->film_gamma),
 		.max_depth = o->max_depth >= 0 ? o->max_depth
 		           : s->max_trace_level > 0 ? s->max_trace_level : DEFAULT_MAX_DEPTH,
 		.integrator = o->integrator, .adc_bailout = s->adc_bailout, .gamma = s->film_gamma, .quiet = o->quiet,

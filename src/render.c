@@ -62,6 +62,7 @@ static void buffer_table(const lower_result *lr, const dev_params *params, size_
 
 struct pass_loop {
 	device_ctx *d;
+	cl_program prog;     /* for the anti-aliasing's kernels */
 	cl_kernel k;
 	cl_mem bufs[BUF_COUNT];
 	dev_params params;
@@ -200,7 +201,10 @@ static int run_pass(struct pass_loop *pl, int base, int count)
 	size_t first = rs->rows ? (size_t)rs->row_first * rs->width : 0;
 	size_t n = rs->rows ? (size_t)rs->rows * rs->width : pl->npix;
 	size_t local = WHITTED_GROUP, global = (n + local - 1) / local * local;
-	if (pl->params.integrator == INTEGRATOR_WHITTED)
+	if (pl->params.integrator == INTEGRATOR_WHITTED && rs->aa_method > 0) {
+		if (render_aa_pass(pl->d, pl->prog, pl->bufs, BUF_COUNT, rs))
+			return -1;
+	} else if (pl->params.integrator == INTEGRATOR_WHITTED)
 		err = clEnqueueNDRangeKernel(pl->d->queue, pl->k, 1, &first, &global, &local, 0, NULL, NULL);
 	else
 		err = clEnqueueNDRangeKernel(pl->d->queue, pl->k, 1, &first, &n, NULL, 0, NULL, NULL);
@@ -314,7 +318,7 @@ static int setup(struct pass_loop *pl, cl_program prog, lower_result *lr)
 int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_settings *rs, film *f,
                render_stats *st)
 {
-	struct pass_loop pl = { .d = d, .npix = (size_t)rs->width * rs->height, .rs = rs, .st = st };
+	struct pass_loop pl = { .d = d, .prog = prog, .npix = (size_t)rs->width * rs->height, .rs = rs, .st = st };
 	memset(st, 0, sizeof *st);
 	pl.params = lr->params;
 	pl.params.width = rs->width;

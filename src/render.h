@@ -31,6 +31,12 @@ typedef struct render_settings {
 	int integrator;        /* INTEGRATOR_PATH, INTEGRATOR_NAIVE or INTEGRATOR_WHITTED (whose
 	                        * max_depth is max_trace_level, and which needs one sample) */
 	float adc_bailout;     /* the Whitted integrator's */
+	/* the Whitted integrator's anti-aliasing (render_aa.c): POV-Ray's method
+	 * (0: none, one trace at each pixel's centre; 1 or 2), its threshold, its
+	 * depth (+R), the jitter (+J's amount, 0 without) and the exponent its
+	 * colour distance takes the colours to (the working gamma over +AG's) */
+	int aa_method, aa_depth;
+	float aa_threshold, aa_jitter, aa_gamma;
 	float gamma;           /* the scene's working gamma (scene.film_gamma) */
 	int quiet;
 	int aov;               /* 1: keep the first hits' albedo, normal, depth and object (film.aov) */
@@ -60,6 +66,11 @@ double render_rays(const render_stats *st);
  * after printing the OpenCL error. A failure after some passes that still lets
  * the film be read back returns 1, with f holding the samples before it: no
  * lost work. */
+/* One pass of the Whitted integrator's anti-aliasing over rs's rows into the
+ * film buffer, whose kernels take bufs[0 .. n_bufs - 1] first (render_aa.c).
+ * Returns 0, or -1 after printing the OpenCL error. */
+int render_aa_pass(device_ctx *d, cl_program prog, const cl_mem *bufs, int n_bufs, const render_settings *rs);
+
 int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_settings *rs, film *f,
                render_stats *st);
 

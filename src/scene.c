@@ -322,6 +322,8 @@ scene_camera scene_default_camera(void)
 		.up = { 0, 1, 0 },
 		.loc = SRC_NOWHERE,
 		.focal_distance = -1,   /* not yet known */
+		.confidence = 0.9,
+		.variance = 1.0 / 10000,
 		.type = CAMERA_PERSPECTIVE,
 		.angle = 90,
 		.h_angle = 360,

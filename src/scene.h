@@ -282,6 +282,11 @@ typedef struct {
 	double focal_distance;
 	double focal_point[3];
 	int blur_samples;
+	/* the whitted integrator's focal blur stops after blur_samples_min samples
+	 * (0: after the first batch) once their variance is under variance, scaled
+	 * for a confidence level (POV-Ray's defaults 0.9 and 1/10000) */
+	int blur_samples_min;
+	double confidence, variance;
 	src_loc loc;
 	int type;               /* CAMERA_ (kernels/shared.h) */
 	/* POV-Ray's angle in degrees, which the types other than perspective and

@@ -79,7 +79,7 @@ int split_plan(const split_request *rq, render_settings *rs, split_info *info, i
 		fprintf(stderr, "eclat: --sample-range %d:%d %s\n", rq->range_first, rq->range_count,
 		        rq->n_aovs ? "cannot write AOVs: they do not merge"
 		        : !exr ? "writes an EXR for 'eclat merge': name one with -o PART.exr"
-		        : "reaches past the render's samples (-s, or 1 or 9 for whitted)");
+		        : "reaches past the render's samples (-s, or 1 for whitted)");
 		return -1;
 	}
 	*info = (split_info){ .scene = (char *)rq->scene, .width = rs->width, .height = rs->height, .total = total,
