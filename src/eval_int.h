@@ -323,6 +323,8 @@ int eval_height_field_arguments(struct eval *e, struct cursor *c, const ast_node
 int eval_bicubic_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 /* blob { }'s own items (eval_blob.c). */
 int eval_blob_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
+/* sphere_sweep { }'s own items (eval_sweep.c). */
+int eval_sweep_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 /* isosurface { }'s own items, up to its object modifiers (eval_isosurface.c). */
 int eval_isosurface_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 /* Evaluates a function's body with its parameters (names, or the definition's

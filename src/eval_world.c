@@ -18,7 +18,7 @@ const char *eval_pov_word(const char *name)
 		"cubic",
 		"lathe", "light_group", "ovus",
 		"parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
-		"sphere_sweep", "text",
+		"text",
 	};
 	static const char *const statements[] = { "rainbow" };
 	static const char *const patterns[] = {
