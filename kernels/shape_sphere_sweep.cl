@@ -4,6 +4,10 @@
  * the surface's depth), then per segment its box and the coefficients of u^0
  * to u^3 of its centre (xyz) and radius (w).
  *
+ * A long sweep is several primitives, each holding a few segments (a chunk
+ * record: its first segment, how many, and how far back the head is), whose
+ * hits are checked against every segment.
+ *
  * As src/shape_sphere_sweep.c, in double where the device has it: the spheres
  * where the ray touches a segment's envelope (the roots in [0, 1] of a
  * polynomial of degree 10 in u, kernels/roots.cl) and those at the segments'
@@ -19,9 +23,15 @@ typedef struct {
 	real3 lo, hi;
 } sweep_seg;
 
-inline sweep_seg sweep_segment_at(global const dev_prim *prims, global const dev_prim *p, int j)
+/* The head record of p's sweep. */
+inline int sweep_head(global const dev_prim *prims, global const dev_prim *p)
 {
-	int rec = p->link + 1 + SWEEP_RECORDS * j;
+	return p->link - (int)prims[p->link].a.z;
+}
+
+inline sweep_seg sweep_segment_at(global const dev_prim *prims, int head, int j)
+{
+	int rec = head + 1 + SWEEP_RECORDS * j;
 	sweep_seg g;
 	g.lo = convert_real3(prims[rec].a.xyz);
 	g.hi = convert_real3(prims[rec + 1].a.xyz);
@@ -43,9 +53,10 @@ inline real sweep_radius(const sweep_seg *g, real u)
 	return ((g->r[3] * u + g->r[2]) * u + g->r[1]) * u + g->r[0];
 }
 
-inline bool sweep_in_box(const sweep_seg *g, real3 x)
+inline bool sweep_in_box(const sweep_seg *g, real3 x, real slack)
 {
-	return !(x.x < g->lo.x || x.x > g->hi.x || x.y < g->lo.y || x.y > g->hi.y || x.z < g->lo.z || x.z > g->hi.z);
+	return !(x.x < g->lo.x - slack || x.x > g->hi.x + slack || x.y < g->lo.y - slack || x.y > g->hi.y + slack ||
+	         x.z < g->lo.z - slack || x.z > g->hi.z + slack);
 }
 
 /* The least power distance from x over u in [0, 1], its u into *best_u. */
@@ -72,16 +83,16 @@ inline real sweep_least_power(const sweep_seg *g, real3 x, real *best_u)
 	return best;
 }
 
-/* The least power distance over the segments (those whose box holds x, when
- * near), with the centre of its sphere into *centre. */
-inline real sweep_least(global const dev_prim *prims, global const dev_prim *p, real3 x, bool near, real3 *centre)
+/* The least power distance over the segments (those whose box, grown by
+ * slack, holds x, when near), with the centre of its sphere into *centre. */
+inline real sweep_least(global const dev_prim *prims, int head, real3 x, bool near, real slack, real3 *centre)
 {
-	int n = (int)prims[p->link].a.x;
+	int n = (int)prims[head].a.x;
 	real best = INFINITY;
 	*centre = x - (real3)(0, 1, 0);
 	for (int j = 0; j < n; j++) {
-		sweep_seg g = sweep_segment_at(prims, p, j);
-		if (near && !sweep_in_box(&g, x))
+		sweep_seg g = sweep_segment_at(prims, head, j);
+		if (near && !sweep_in_box(&g, x, slack))
 			continue;
 		real u, pw = sweep_least_power(&g, x, &u);
 		if (pw < best) {
@@ -93,12 +104,12 @@ inline real sweep_least(global const dev_prim *prims, global const dev_prim *p, 
 }
 
 /* Whether x is deeper than eps inside a segment: no point of the surface. */
-inline bool sweep_deep_inside(global const dev_prim *prims, global const dev_prim *p, real3 x, real eps)
+inline bool sweep_deep_inside(global const dev_prim *prims, int head, real3 x, real eps)
 {
-	int n = (int)prims[p->link].a.x;
+	int n = (int)prims[head].a.x;
 	for (int j = 0; j < n; j++) {
-		sweep_seg g = sweep_segment_at(prims, p, j);
-		if (!sweep_in_box(&g, x))
+		sweep_seg g = sweep_segment_at(prims, head, j);
+		if (!sweep_in_box(&g, x, (real)0))
 			continue;
 		real u, pw = sweep_least_power(&g, x, &u);
 		if (!(pw < (real)0))
@@ -149,16 +160,17 @@ inline int sweep_envelope_roots(const sweep_seg *g, real3 o, real3 d, real *u)
 inline float sphere_sweep_intersect(float3 wo, float3 wd, global const dev_prim *prims, global const dev_prim *p,
                                     float tmin, float tmax)
 {
-	float4 head = prims[p->link].a;
-	int n = (int)head.x;
+	float4 chunk = prims[p->link].a;
+	int head = sweep_head(prims, p), first = (int)chunk.x, end = first + (int)chunk.y;
+	float4 h = prims[head].a;
 	real3 o = intersect_to_local_real(p, wo), d = intersect_dir_to_local_real(p, wd);
-	real len = length(d), eps = (real)head.z;
+	real len = length(d), eps = (real)h.z;
 	if (!(len > (real)0))
 		return tmax;
 	/* POV-Ray's tolerance: no hit nearer than it */
-	real lo = fmax((real)tmin, (real)head.y / len), best = (real)tmax;
-	for (int j = 0; j < n; j++) {
-		sweep_seg g = sweep_segment_at(prims, p, j);
+	real lo = fmax((real)tmin, (real)h.y / len), best = (real)tmax;
+	for (int j = first; j < end; j++) {
+		sweep_seg g = sweep_segment_at(prims, head, j);
 		real t0 = lo, t1 = best;
 		for (int q = 0; q < 3 && t0 <= t1; q++) {
 			real oq = q == 0 ? o.x : q == 1 ? o.y : o.z, dq = q == 0 ? d.x : q == 1 ? d.y : d.z;
@@ -190,7 +202,7 @@ inline float sphere_sweep_intersect(float3 wo, float3 wd, global const dev_prim 
 				/* the first whose float is past tmin (a CSG's last stop) */
 				if (!(t > lo && t < best) || !((float)t > tmin))
 					continue;
-				if (!sweep_deep_inside(prims, p, o + t * d, eps))
+				if (!sweep_deep_inside(prims, head, o + t * d, eps))
 					best = t;
 			}
 		}
@@ -200,8 +212,11 @@ inline float sphere_sweep_intersect(float3 wo, float3 wd, global const dev_prim 
 
 inline float3 sphere_sweep_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
+	/* a point of the surface is in its segment's box, give or take rounding */
+	int head = sweep_head(prims, p);
 	real3 v = intersect_to_local_real(p, x), c;
-	sweep_least(prims, p, v, false, &c);
+	if (sweep_least(prims, head, v, true, (real)1000 * (real)prims[head].a.z, &c) == INFINITY)
+		sweep_least(prims, head, v, false, (real)0, &c);
 	float3 n = convert_float3(v - c);
 	if (n.x == 0.0f && n.y == 0.0f && n.z == 0.0f)
 		n.y = 1.0f;
@@ -211,5 +226,5 @@ inline float3 sphere_sweep_normal(global const dev_prim *prims, global const dev
 inline bool sphere_sweep_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	real3 c;
-	return sweep_least(prims, p, intersect_to_local_real(p, x), true, &c) < (real)0;
+	return sweep_least(prims, sweep_head(prims, p), intersect_to_local_real(p, x), true, (real)0, &c) < (real)0;
 }

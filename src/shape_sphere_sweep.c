@@ -125,14 +125,17 @@ static double least_power(const sweep_seg *g, const double x[3], double *best_u)
 
 /* The least power distance from x over the segments (over those whose box
  * holds x when near is set: the others' is positive), with its segment and u
- * into *seg and *u; INFINITY when none is looked at. */
-static double least_over(const sweep_seg *segs, int n, const double x[3], bool near, int *seg, double *u)
+ * into *seg and *u; INFINITY when none is looked at. A point of the surface
+ * is in its segment's box, so the normal looks near too, and everywhere only
+ * when rounding has put it outside every box. */
+static double least_over(const sweep_seg *segs, int n, const double x[3], bool near, double slack, int *seg,
+                         double *u)
 {
 	double best = INFINITY;
 	for (int j = 0; j < n; j++) {
 		const sweep_seg *g = &segs[j];
-		if (near && (x[0] < g->lo[0] || x[0] > g->hi[0] || x[1] < g->lo[1] || x[1] > g->hi[1] ||
-		             x[2] < g->lo[2] || x[2] > g->hi[2]))
+		if (near && (x[0] < g->lo[0] - slack || x[0] > g->hi[0] + slack || x[1] < g->lo[1] - slack ||
+		             x[1] > g->hi[1] + slack || x[2] < g->lo[2] - slack || x[2] > g->hi[2] + slack))
 			continue;
 		double v, p = least_power(g, x, &v);
 		if (p < best)
@@ -301,7 +304,8 @@ static void trace(const scene *s, const scene_object *o, const double ro[3], con
 	if (t < h->t) {
 		double x[3] = { ro[0] + t * rd[0], ro[1] + t * rd[1], ro[2] + t * rd[2] }, u = 0, cr[4];
 		int j = 0;
-		least_over(g, n, x, false, &j, &u);
+		if (least_over(g, n, x, true, 1e-4 * size_of(g, n), &j, &u) == INFINITY)
+			least_over(g, n, x, false, 0, &j, &u);
 		at(&g[j], u, cr);
 		h->t = t;
 		for (int q = 0; q < 3; q++)
@@ -317,7 +321,7 @@ static bool inside(const scene *s, const scene_object *o, const double p[3])
 	int n, j;
 	double u;
 	sweep_seg *g = segments(s, o, &n);
-	bool in = g && least_over(g, n, p, true, &j, &u) < 0;
+	bool in = g && least_over(g, n, p, true, 0, &j, &u) < 0;
 	free(g);
 	return in;
 }
@@ -348,20 +352,23 @@ static void bounds(const scene *s, const scene_object *o, double lo[3], double h
 		shape_grow_xformed_box(&o->xf, a, b, lo, hi);
 }
 
+/* Segments a primitive of the top level holds: a ray meets the primitives
+ * whose boxes it crosses (the BVH's), and tests only their segments' boxes,
+ * so a long sweep costs a ray what its neighbourhood does. */
+#define CHUNK 8
+
 static int lower(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id)
 {
 	int n = sweep_segments(s, o);
 	if (n <= 0)
 		return 0;
+	sweep_seg *g = segments(s, o, &n);
 	/* the segments about the centre of their box, which the map to the
 	 * sweep's space moves back: floats keep their digits far from the origin */
 	double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY }, cen[3];
-	sweep_seg g;
-	for (int i = 0; i < n; i++) {
-		sweep_segment(s, o, i, &g);
+	for (int i = 0; i < n; i++)
 		for (int q = 0; q < 3; q++)
-			lo[q] = fmin(lo[q], g.lo[q]), hi[q] = fmax(hi[q], g.hi[q]);
-	}
+			lo[q] = fmin(lo[q], g[i].lo[q]), hi[q] = fmax(hi[q], g[i].hi[q]);
 	double size = 0;
 	for (int q = 0; q < 3; q++) {
 		cen[q] = 0.5 * (lo[q] + hi[q]);
@@ -371,24 +378,37 @@ static int lower(struct lowering *lw, const scene *s, const scene_object *o, int
 	dev_prim p = { .type = PRIM_SPHERE_SWEEP };
 	if (lower_local_rows(&to_world, &p)) {
 		diag_warning(o->loc, "sphere_sweep with a singular transform (a scale of 0?) skipped");
+		free(g);
 		return 0;
 	}
-	p.link = lower_add_data(lw, (float4){ (float)n, (float)o->param[1], (float)(1e-7 * size), 0 });
+	int head = lower_add_data(lw, (float4){ (float)n, (float)o->param[1], (float)(1e-7 * size), 0 });
 	for (int i = 0; i < n; i++) {
-		sweep_segment(s, o, i, &g);
-		for (int q = 0; q < 3; q++)
-			g.c[0][q] -= cen[q];
-		lower_add_data(lw, (float4){ (float)(g.lo[0] - cen[0]), (float)(g.lo[1] - cen[1]),
-		                             (float)(g.lo[2] - cen[2]), 0 });
-		lower_add_data(lw, (float4){ (float)(g.hi[0] - cen[0]), (float)(g.hi[1] - cen[1]),
-		                             (float)(g.hi[2] - cen[2]), 0 });
+		g[i].c[0][0] -= cen[0], g[i].c[0][1] -= cen[1], g[i].c[0][2] -= cen[2];
+		lower_add_data(lw, (float4){ (float)(g[i].lo[0] - cen[0]), (float)(g[i].lo[1] - cen[1]),
+		                             (float)(g[i].lo[2] - cen[2]), 0 });
+		lower_add_data(lw, (float4){ (float)(g[i].hi[0] - cen[0]), (float)(g[i].hi[1] - cen[1]),
+		                             (float)(g[i].hi[2] - cen[2]), 0 });
 		for (int k = 0; k < 4; k++)
-			lower_add_data(lw, (float4){ (float)g.c[k][0], (float)g.c[k][1], (float)g.c[k][2], (float)g.c[k][3] });
+			lower_add_data(lw, (float4){ (float)g[i].c[k][0], (float)g[i].c[k][1], (float)g[i].c[k][2],
+			                             (float)g[i].c[k][3] });
 	}
-	double blo[3] = { INFINITY, INFINITY, INFINITY }, bhi[3] = { -INFINITY, -INFINITY, -INFINITY };
-	bounds(s, o, blo, bhi);
-	lower_add_prim(lw, p, mat, id, blo, bhi);
-	return 0;
+	/* a CSG's leaf is one primitive: then one chunk holds every segment */
+	int chunk = lower_in_csg(lw) ? n : CHUNK;
+	for (int first = 0, k = 0; first < n; first += chunk, k++) {
+		int count = n - first < chunk ? n - first : chunk;
+		/* its first segment, how many, and how far back the head is (the
+		 * records are consecutive: the head, six a segment, the chunks) */
+		p.link = lower_add_data(lw, (float4){ (float)first, (float)count, (float)(1 + 6 * n + k), 0 });
+		double clo[3] = { INFINITY, INFINITY, INFINITY }, chi[3] = { -INFINITY, -INFINITY, -INFINITY };
+		for (int i = first; i < first + count; i++)
+			for (int q = 0; q < 3; q++)
+				clo[q] = fmin(clo[q], g[i].lo[q]), chi[q] = fmax(chi[q], g[i].hi[q]);
+		double blo[3] = { INFINITY, INFINITY, INFINITY }, bhi[3] = { -INFINITY, -INFINITY, -INFINITY };
+		shape_grow_xformed_box(&o->xf, clo, chi, blo, bhi);
+		lower_add_prim(lw, p, mat, id, blo, bhi);
+	}
+	free(g);
+	return head < 0 ? -1 : 0;
 }
 
 static void dump(FILE *out, const scene_object *o)
