@@ -19,6 +19,7 @@
 
 #define FIRST 64          /* the grid the curvature is measured on */
 #define CHORD 5e-5        /* the most a triangle strays from the surface, of the container's diagonal */
+#define TURN 0.03         /* the most the normal turns from a corner to the next, in radians */
 #define MAX_CELLS (640 * 640)
 #define BYTES_PER_CELL 200   /* two faces, a vertex and a normal, and what clipping adds */
 
@@ -75,6 +76,18 @@ static int add_vertex(struct build *b, const double x[3], const double n[3])
 
 static void add_face(struct build *b, int i, int j, int k)
 {
+	/* a sliver would be no triangle in floats: the lowering would warn of it */
+	const double *p = b->m.v[i], *q = b->m.v[j], *r = b->m.v[k];
+	double e1[3], e2[3], e3[3], c[3];
+	for (int a = 0; a < 3; a++)
+		e1[a] = q[a] - p[a], e2[a] = r[a] - p[a], e3[a] = r[a] - q[a];
+	c[0] = e1[1] * e2[2] - e1[2] * e2[1];
+	c[1] = e1[2] * e2[0] - e1[0] * e2[2];
+	c[2] = e1[0] * e2[1] - e1[1] * e2[0];
+	double l = fmax(fmax(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2], e2[0] * e2[0] + e2[1] * e2[1] + e2[2] * e2[2]),
+	                e3[0] * e3[0] + e3[1] * e3[1] + e3[2] * e3[2]);
+	if (!(sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) > 1e-6 * l))
+		return;
 	if (b->m.n_faces == b->cap_f) {
 		b->cap_f = b->cap_f ? 2 * b->cap_f : 2048;
 		b->m.face = eval_xrealloc(b->m.face, (size_t)b->cap_f * sizeof *b->m.face);
@@ -180,17 +193,33 @@ static void add_triangle(struct build *b, const struct surface *sf, int i, int j
 
 /* ---- the grid ---- */
 
+/* The angle between unit vectors a and b (0 when either is none). */
+static double turn(const double a[3], const double b[3])
+{
+	double c = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+	return isfinite(c) && (a[0] || a[1] || a[2]) && (b[0] || b[1] || b[2]) ? acos(fmin(fmax(c, -1), 1)) : 0;
+}
+
 /* How many cells along u and v: enough that the second differences measured
  * on a FIRST x FIRST grid, scaled down by the square of the step, stay within
- * the chord's tolerance. */
+ * the chord's tolerance, and that the normal, which the triangles blend
+ * between their corners, turns by at most TURN from a corner to the next (a
+ * twisted strip is straight along v, but its normal turns). */
 static void grid_size(const struct surface *sf, const double uv[2][2], double size, int *nu, int *nv)
 {
-	static double x[FIRST + 1][FIRST + 1][3];
+	static double x[FIRST + 1][FIRST + 1][3], n[FIRST + 1][FIRST + 1][3];
 	for (int i = 0; i <= FIRST; i++)
-		for (int j = 0; j <= FIRST; j++)
-			point(sf, uv[0][0] + (uv[1][0] - uv[0][0]) * i / FIRST, uv[0][1] + (uv[1][1] - uv[0][1]) * j / FIRST,
-			      x[i][j]);
-	double du = 0, dv = 0;
+		for (int j = 0; j <= FIRST; j++) {
+			double u = uv[0][0] + (uv[1][0] - uv[0][0]) * i / FIRST, v = uv[0][1] + (uv[1][1] - uv[0][1]) * j / FIRST;
+			point(sf, u, v, x[i][j]);
+			normal(sf, u, v, x[i][j], n[i][j]);
+		}
+	double du = 0, dv = 0, tu = 0, tv = 0;
+	for (int i = 0; i < FIRST; i++)
+		for (int j = 0; j < FIRST; j++) {
+			tu = fmax(tu, turn(n[i][j], n[i + 1][j]));
+			tv = fmax(tv, turn(n[i][j], n[i][j + 1]));
+		}
 	for (int i = 1; i < FIRST; i++)
 		for (int j = 1; j < FIRST; j++) {
 			double a = 0, b = 0;
@@ -203,7 +232,8 @@ static void grid_size(const struct surface *sf, const double uv[2][2], double si
 				du = fmax(du, sqrt(a)), dv = fmax(dv, sqrt(b));
 		}
 	double tol = CHORD * size;
-	double ku = ceil(FIRST * sqrt(du / (8 * tol))), kv = ceil(FIRST * sqrt(dv / (8 * tol)));
+	double ku = ceil(FIRST * fmax(sqrt(du / (8 * tol)), tu / TURN));
+	double kv = ceil(FIRST * fmax(sqrt(dv / (8 * tol)), tv / TURN));
 	ku = fmin(fmax(ku, 8), 4096), kv = fmin(fmax(kv, 8), 4096);
 	if (ku * kv > MAX_CELLS) {   /* as fine as the budget allows, in the same ratio */
 		double f = sqrt(MAX_CELLS / (ku * kv));
