@@ -73,7 +73,8 @@ typedef struct {
 	X(ISOSURFACE, isosurface) \
 	X(POLY, poly) \
 	X(BLOB, blob) \
-	X(JULIA_FRACTAL, julia_fractal)
+	X(JULIA_FRACTAL, julia_fractal) \
+	X(SPHERE_SWEEP, sphere_sweep)
 #define PRIM_ENUM_ROW(NAME, name) PRIM_##NAME,
 enum {
 	PRIM_SHAPES(PRIM_ENUM_ROW)
@@ -121,6 +122,13 @@ enum { PRISM_OPEN = 1, PRISM_FLAT = 2, PRISM_CONIC = 4 };
  *   the slice (unit length), then slice distance, 1/precision, exit value and
  *   bounding radius, then max_iteration, algebra and function as floats
  *   (JULIA_; kernels/shape_julia_fractal.cl).
+ * Sphere sweep: the map to its own space, about the centre of its box; a
+ *   head record (a.x its number of segments, a.y its tolerance, a.z the depth
+ *   below which a point counts as on its surface), six records a segment
+ *   (its box's corners, and the coefficients of u^0 to u^3 of its centre
+ *   (xyz) and radius (w)), then a record a primitive: a few segments each
+ *   (a.x the first, a.y how many, a.z how many records back the head is),
+ *   linked from it (kernels/shape_sphere_sweep.cl).
  * Poly (poly, cubic, quartic, polynomial): the map to its own space; its first
  *   record's a.x is its order, and the records after it hold its coefficients
  *   in POV-Ray's order, two in each a, each as a float and the float of what

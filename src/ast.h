@@ -334,6 +334,13 @@ enum kw_class {
 #define AST_WORD_FLIP "flip"
 #define AST_WORD_BLACK_HOLE "black_hole"
 #define AST_WORD_STRENGTH "strength"
+/* sphere_sweep { } (eval_sweep.c) */
+#define AST_WORD_SPHERE_SWEEP "sphere_sweep"
+#define AST_WORD_B_SPLINE "b_spline"
+#define AST_WORD_TOLERANCE "tolerance"
+/* parametric { } (eval_parametric.c); accuracy, max_gradient and contained_by are above */
+#define AST_WORD_PARAMETRIC "parametric"
+#define AST_WORD_PRECOMPUTE "precompute"
 #define AST_WORD_HIERARCHY "hierarchy"
 /* height_field { } (eval_hfield.c) */
 #define AST_WORD_HEIGHT_FIELD "height_field"

@@ -60,6 +60,10 @@ static int unsupported(struct eval *e, bool *skipped, src_loc loc, const char *f
 
 static int param_index(const struct fcomp *c, const char *name)
 {
+	/* a function without a parameter list calls x and y u and v too, as
+	 * POV-Ray's do (a parametric's functions are written in u and v) */
+	if (c->names == xyz && (strcmp(name, "u") == 0 || strcmp(name, "v") == 0))
+		return name[0] == 'u' ? 0 : 1;
 	for (int i = 0; i < c->n_params; i++)
 		if (strcmp(c->names ? c->names[i] : c->def->kids[0]->kids[i]->str, name) == 0)
 			return i;

@@ -323,6 +323,14 @@ int eval_height_field_arguments(struct eval *e, struct cursor *c, const ast_node
 int eval_bicubic_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 /* blob { }'s own items (eval_blob.c). */
 int eval_blob_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
+/* contained_by { box { } | sphere { } } of an isosurface or a parametric into
+ * o: p[0], p[1] a box's corners (ordered), or p[0] and radius a sphere's
+ * centre and radius with n[0][0] set (eval_isosurface.c). */
+int eval_contained_by(struct eval *e, const ast_node *b, scene_object *o);
+/* parametric { }'s own items: its triangles into o->mesh (eval_parametric.c). */
+int eval_parametric_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
+/* sphere_sweep { }'s own items (eval_sweep.c). */
+int eval_sweep_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 /* isosurface { }'s own items, up to its object modifiers (eval_isosurface.c). */
 int eval_isosurface_arguments(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o);
 /* Evaluates a function's body with its parameters (names, or the definition's

@@ -42,7 +42,7 @@ int eval_word_float(struct eval *e, struct cursor *c, const ast_node *at, const 
 }
 
 /* contained_by { box { <Corner1>, <Corner2> } | sphere { <Centre>, Radius } } */
-static int contained_by(struct eval *e, const ast_node *b, scene_object *o)
+int eval_contained_by(struct eval *e, const ast_node *b, scene_object *o)
 {
 	struct cursor c;
 	int err = 0, rc = -1;
@@ -102,7 +102,7 @@ int eval_isosurface_arguments(struct eval *e, struct cursor *c, const ast_node *
 		const ast_node *neg;
 		const char *w = eval_word_item(item, &neg);
 		if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_CONTAINED_BY) == 0) {
-			rc = contained_by(e, item, o);
+			rc = eval_contained_by(e, item, o);
 		} else if (w && strcmp(w, AST_WORD_THRESHOLD) == 0) {
 			rc = eval_word_float(e, c, item, neg, &o->param[0]);
 		} else if (w && strcmp(w, AST_WORD_ACCURACY) == 0) {

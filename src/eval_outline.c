@@ -895,6 +895,8 @@ int eval_outline_arguments(struct eval *e, struct cursor *c, const ast_node *b, 
 	case SHAPE_LATHE: return lathe_args(e, c, b, o);
 	case SHAPE_ISOSURFACE: return eval_isosurface_arguments(e, c, b, o);
 	case SHAPE_BLOB: return eval_blob_arguments(e, c, b, o);
+	case SHAPE_SPHERE_SWEEP: return eval_sweep_arguments(e, c, b, o);
+	case SHAPE_PARAMETRIC: return eval_parametric_arguments(e, c, b, o);
 	case SHAPE_HEIGHT_FIELD: return eval_height_field_arguments(e, c, b, o);
 	case SHAPE_BICUBIC_PATCH: return eval_bicubic_arguments(e, c, b, o);
 	case SHAPE_JULIA_FRACTAL: return eval_julia_fractal_arguments(e, c, b, o);

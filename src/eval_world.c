@@ -17,8 +17,8 @@ const char *eval_pov_word(const char *name)
 	static const char *const objects[] = {
 		"cubic",
 		"lathe", "light_group", "ovus",
-		"parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
-		"sphere_sweep", "text",
+		"poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
+		"text",
 	};
 	static const char *const statements[] = { "rainbow" };
 	static const char *const patterns[] = {

@@ -150,7 +150,10 @@ typedef struct {
  *   disc: p[0] centre, p[1] normal, radius, param[0] the hole's radius (0: none);
  *   torus: radius the major radius, param[0] the minor;
  *   superellipsoid: p[0] <E, N, 0>;
- *   poly, cubic, quartic, polynomial: poly, an index into scene.polys. */
+ *   poly, cubic, quartic, polynomial: poly, an index into scene.polys;
+ *   sphere_sweep: outline, its spheres as edges (x, y, z, radius), param[0] its
+ *   spline (src/sweep.h), param[1] its tolerance;
+ *   height_field, bicubic_patch, parametric: mesh, their triangles (or -1). */
 #define SCENE_SHAPES(X) \
 	X(SPHERE, sphere) \
 	X(TRIANGLE, triangle) \
@@ -177,7 +180,9 @@ typedef struct {
 	X(BLOB, blob) \
 	X(HEIGHT_FIELD, height_field) \
 	X(BICUBIC_PATCH, bicubic_patch) \
-	X(JULIA_FRACTAL, julia_fractal)
+	X(JULIA_FRACTAL, julia_fractal) \
+	X(SPHERE_SWEEP, sphere_sweep) \
+	X(PARAMETRIC, parametric)
 #define SCENE_SHAPE_ENUM_ROW(NAME, name) SHAPE_##NAME,
 typedef enum { SCENE_SHAPES(SCENE_SHAPE_ENUM_ROW) SHAPE_KINDS } scene_shape;
 

@@ -3,7 +3,9 @@
  * instance of it): height_field { }, POV-Ray's grid of triangles over an
  * image (src/eval_hfield.c), and bicubic_patch { }, a Bezier patch cut into
  * 2^u_steps by 2^v_steps quadrilaterals of two triangles each, with the
- * patch's own normals at their corners (src/eval_bicubic.c). o->mesh is the
+ * patch's own normals at their corners (src/eval_bicubic.c), and parametric
+ * { }, a grid over its (u, v) rectangle cut to its container, with POV-Ray's
+ * normals at the corners (src/eval_parametric.c). o->mesh is the
  * mesh, or -1 when --skip-unsupported left it out. */
 #include "ast.h"
 #include "lower.h"
@@ -29,13 +31,17 @@ static int lower(struct lowering *lw, const scene *s, const scene_object *o, int
 
 static void dump(FILE *out, const scene_object *o)
 {
-	fprintf(out, "%s mesh %d", o->shape == SHAPE_HEIGHT_FIELD ? AST_WORD_HEIGHT_FIELD : AST_WORD_BICUBIC_PATCH,
-	        o->mesh);
+	fprintf(out, "%s mesh %d", shape_of(o)->name, o->mesh);
 	scene_dump_xform(out, &o->xf);
 }
 
 const shape_class shape_height_field = {
 	.name = AST_WORD_HEIGHT_FIELD, .args = NULL, .needs = "an image or a function",
+	.bounds = bounds, .trace = trace, .lower = lower, .dump = dump,
+};
+
+const shape_class shape_parametric = {
+	.name = AST_WORD_PARAMETRIC, .args = NULL, .needs = "three functions and a range of u and v",
 	.bounds = bounds, .trace = trace, .lower = lower, .dump = dump,
 };
 

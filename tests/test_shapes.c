@@ -927,16 +927,18 @@ int main(int argc, char **argv)
 	/* every shape of the table has a maker, but a mesh (test_traverse's), a
 	 * smooth triangle (a triangle here), and the shapes whose arguments are
 	 * lists, which property tests of their own cover with the same rules:
-	 * tests/test_prism.c, test_revolve.c and test_torus.c, and the isosurface,
+	 * tests/test_prism.c, test_revolve.c, test_torus.c and test_sweep.c (the
+	 * sphere_sweep), and the isosurface,
 	 * whose function is compiled into the kernels: tests/test_function.c; a
-	 * height field and a bicubic patch are meshes (test_traverse), their
-	 * triangles POV-Ray's in tests/povray/height_field.scn and bicubic_patch.scn;
+	 * height field, a bicubic patch and a parametric are meshes (test_traverse),
+	 * their triangles POV-Ray's in tests/povray/height_field.scn,
+	 * bicubic_patch.scn and parametric.scn;
 	 * a julia_fractal's marching is chaotic where a ray grazes a thin part (a
 	 * float ray's last bits decide which part a step lands in), so it is held
 	 * to POV-Ray's images in tests/povray/julia_fractal.scn instead */
 	static const char *const elsewhere[] = { "polygon", "prism", "text", "quadric", "sor", "lathe", "torus",
 	                                         "superellipsoid", "isosurface", "height_field",
-	                                         "bicubic_patch", "julia_fractal" };
+	                                         "bicubic_patch", "julia_fractal", "sphere_sweep", "parametric" };
 	for (int s = 0; s < SHAPE_KINDS; s++) {
 		scene_object o = { .shape = (scene_shape)s };
 		const char *name = shape_of(&o)->name;
