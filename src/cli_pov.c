@@ -30,7 +30,7 @@ enum kind {
 	K_AA_WARN,    /* anti-aliasing's details that eclat has not: a warning */
 	K_AA_METHOD, K_AA_DEPTH, K_AA_GAMMA, K_JITTER, K_JITTER_AMOUNT,   /* the whitted integrator's anti-aliasing */
 	K_WIDTH, K_HEIGHT, K_INPUT, K_OUTPUT, K_TO_FILE, K_TYPE, K_BITS, K_ALPHA,
-	K_AA, K_AA_THRESHOLD, K_QUALITY, K_LIBRARY, K_DECLARE, K_DISPLAY, K_THREADS, K_SEED,
+	K_AA, K_AA_THRESHOLD, K_QUALITY, K_LIBRARY, K_DECLARE, K_DISPLAY, K_PAUSE, K_THREADS, K_SEED,
 	K_LEFT, K_TOP, K_RIGHT, K_BOTTOM,   /* ORDER CLI_REGION_ */
 	K_CONTINUE, K_CLOCK, K_INITIAL_FRAME, K_FINAL_FRAME, K_INITIAL_CLOCK, K_FINAL_CLOCK,
 	K_SUBSET_START, K_SUBSET_END, K_CYCLIC, K_SHELL, K_INCLUDE_INI,
@@ -87,7 +87,7 @@ static const struct pov_switch {
 	{ "MI", K_WARN, P_REQUIRED, "an image buffer memory limit" },
 	{ "MV", K_WARN, P_REQUIRED, "a language version switch (#version in the scene is)" },
 	{ "O", K_OUTPUT, P_REQUIRED, NULL },
-	{ "P", K_SILENT, P_NONE, NULL },
+	{ "P", K_PAUSE, P_NONE, NULL },
 	{ "Q", K_QUALITY, P_REQUIRED, NULL },
 	{ "RFI", K_WARN, P_NONE, "radiosity data from a file" },
 	{ "RFO", K_WARN, P_NONE, "radiosity data to a file" },
@@ -163,7 +163,7 @@ static const struct pov_key {
 	{ "Odd_Field", K_WARN, 1, "odd fields" }, { "Output_Alpha", K_ALPHA, 1, NULL },
 	{ "Output_File_Name", K_OUTPUT, 0, NULL }, { "Output_File_Type", K_TYPE, 0, NULL },
 	{ "Output_To_File", K_TO_FILE, 1, NULL }, { "Palette", K_SILENT, 0, NULL },
-	{ "Pause_When_Done", K_SILENT, 1, NULL }, { "Post_Frame_Command", K_SHELL, 0, NULL },
+	{ "Pause_When_Done", K_PAUSE, 1, NULL }, { "Post_Frame_Command", K_SHELL, 0, NULL },
 	{ "Post_Frame_Return", K_SILENT, 0, NULL }, { "Post_Scene_Command", K_SHELL, 0, NULL },
 	{ "Post_Scene_Return", K_SILENT, 0, NULL }, { "Preview_End_Size", K_SILENT, 0, NULL },
 	{ "Preview_Start_Size", K_SILENT, 0, NULL }, { "Pre_Frame_Command", K_SHELL, 0, NULL },
@@ -405,11 +405,8 @@ static void apply(cli_args *a, enum kind k, const struct setting *s, src_loc key
 		break;
 	case K_LIBRARY: push(a, "--include-path=%s", s->value); break;
 	case K_DECLARE: push(a, "--declare=%s", s->value); break;
-	case K_DISPLAY:
-		if (s->on)
-			diag_warning(s->loc, "%s: eclat has no display window yet; the image is only written to its file",
-			             s->name);
-		break;
+	case K_DISPLAY: push(a, s->on ? "--preview" : "--no-preview"); break;   /* +D's palette letter is moot */
+	case K_PAUSE: push(a, s->on ? "--pause" : "--no-pause"); break;
 	case K_THREADS: push(a, "--threads=%ld", whole(s, 1, 512)); break;
 	case K_SEED: push(a, "--seed=%ld", whole(s, 0, 2147483647)); break;
 	case K_LEFT: case K_TOP: case K_RIGHT: case K_BOTTOM:

@@ -35,6 +35,11 @@ int image_finish(const char *tmp, const char *path, const char *write_error, int
 int image_write(const char *path, const float *rgb, int width, int height, const image_meta *meta,
                 char *err, size_t errlen);
 
+/* What an 8-bit image file holds for n linear values (3 a pixel): the sRGB
+ * transfer, the clamp and the rounding image_write gives them, so that the
+ * preview window (src/preview.c) shows the written image's bytes. */
+void image_encode8(const float *linear, size_t n, unsigned char *out);
+
 /* The heat map: the BVH tests per pixel per sample. Linear formats get the counts;
  * 8-bit formats a colour map ("turbo") with a legend under it that gives the scale
  * and the units, as in the reference paper's figure. *mean gets the mean. */

@@ -175,6 +175,12 @@ extern "C" int image_write(const char *path, const float *rgb, int width, int he
 	return write_atomic(path, rgb, width, height, 3, true, meta, err, errlen);
 }
 
+extern "C" void image_encode8(const float *linear, size_t n, unsigned char *out)
+{
+	for (size_t i = 0; i < n; i++)   // write_image's own conversion of the encoded floats
+		out[i] = convert_type<float, unsigned char>(srgb_encode(linear[i]));
+}
+
 extern "C" int image_read_here(const char *path, long max_texels, image_data *out, char *err, size_t errlen)
 {
 	std::string p(path);

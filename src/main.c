@@ -22,6 +22,7 @@
 #include "merge.h"
 #include "mesh_io.h"
 #include "parse.h"
+#include "preview.h"
 #include "render.h"
 #include "split_plan.h"
 #include "render_keep.h"
@@ -58,6 +59,7 @@ struct options {
 	int threads;      /* --threads, POV-Ray's +WT; 0: the device's own */
 	int range_first, range_count;   /* --sample-range; count 0: all samples */
 	int devices[MAX_LIST], n_devices;   /* --device 0,2 (more than one); --device all: n_devices -1 */
+	int preview, pause;   /* --preview (POV-Ray's +D), --pause (+P): the window, kept open at the end */
 	const char *resume;             /* --resume FILE */
 	int resume_output;              /* --continue, POV-Ray's +C: resume from the output when it is there */
 	cli_pov pov;      /* what POV-Ray's switches and INI files asked for besides */
@@ -68,7 +70,8 @@ enum { OPT_SEED = 256, OPT_MAX_DEPTH, OPT_DEVICE, OPT_LIST_DEVICES, OPT_KERNEL_D
        OPT_CHECK, OPT_DUMP_AST, OPT_DUMP_SCENE, OPT_INTEGRATOR, OPT_TIME_LIMIT, OPT_CHECKPOINT, OPT_AOV, OPT_BVH, OPT_BVH_LAYOUT, OPT_STATS, OPT_SKIP_UNSUPPORTED, OPT_EXPORT_MESH2,
        OPT_MAX_INCLUDE_DEPTH, OPT_MAX_MACRO_DEPTH, OPT_MAX_LOOP_ITERATIONS, OPT_MESH_TIME_LIMIT,
        OPT_IO_SECURITY, OPT_IO_ALLOW, OPT_IO_ALLOW_WRITE, OPT_THREADS, OPT_SAMPLE_RANGE, OPT_RESUME,
-       OPT_CONTINUE, OPT_MEMORY_LIMIT, OPT_DEPFILE, OPT_SKY_SAMPLING };
+       OPT_CONTINUE, OPT_MEMORY_LIMIT, OPT_DEPFILE, OPT_SKY_SAMPLING, OPT_PREVIEW, OPT_NO_PREVIEW, OPT_PAUSE,
+       OPT_NO_PAUSE };
 
 static const struct option long_options[] = {
 	{ "output", required_argument, NULL, 'o' },
@@ -103,6 +106,10 @@ static const struct option long_options[] = {
 	{ "io-allow-write", required_argument, NULL, OPT_IO_ALLOW_WRITE },
 	{ "threads", required_argument, NULL, OPT_THREADS },
 	{ "depfile", required_argument, NULL, OPT_DEPFILE },
+	{ "preview", no_argument, NULL, OPT_PREVIEW },
+	{ "no-preview", no_argument, NULL, OPT_NO_PREVIEW },
+	{ "pause", no_argument, NULL, OPT_PAUSE },
+	{ "no-pause", no_argument, NULL, OPT_NO_PAUSE },
 	{ "device", required_argument, NULL, OPT_DEVICE },
 	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
 	{ "kernel-dir", required_argument, NULL, OPT_KERNEL_DIR },
@@ -175,6 +182,10 @@ static void usage(FILE *out)
 		"      --io-allow-write DIR  let it read and write files in DIR and below (repeatable)\n"
 		"      --depfile FILE    write a make rule: the images depend on the scene and every\n"
 		"                        file it read (includes, meshes, images, fonts, #fopen)\n"
+		"      --preview         show the image in a window as it renders (POV-Ray's +D);\n"
+		"                        Escape, q or closing it stops the render as Ctrl-C does\n"
+		"      --pause           keep the window open at the end until a key (POV-Ray's +P)\n"
+		"      --no-preview, --no-pause  the defaults (POV-Ray's -D, -P)\n"
 		"      --check           check the scene for errors and warnings, render nothing\n"
 		"      --dump-ast        print the syntax tree and exit\n"
 		"      --dump-scene      print the evaluated scene in world space and exit\n"
@@ -393,6 +404,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case OPT_DEVICE: device_arg(o, optarg); break;
 		case OPT_THREADS: o->threads = int_arg("--threads", optarg, 1, 512); break;
 		case OPT_DEPFILE: o->depfile = optarg; break;
+		case OPT_PREVIEW: case OPT_NO_PREVIEW: o->preview = c == OPT_PREVIEW; break;
+		case OPT_PAUSE: case OPT_NO_PAUSE: o->pause = c == OPT_PAUSE; break;
 		case OPT_INTEGRATOR: o->integrator = integrator_arg(optarg); break;
 		case OPT_SKY_SAMPLING: o->no_sky_sampling = sky_sampling_arg(optarg); break;
 		case OPT_TIME_LIMIT: o->time_limit = seconds_arg("--time-limit", optarg); break;
@@ -500,6 +513,19 @@ static volatile sig_atomic_t stop_signal;
 static void on_signal(int sig)
 {
 	stop_signal = sig;
+}
+
+/* The preview window (+D), open for all the frames; NULL: none. */
+static preview *window;
+
+/* The window's picture between passes: Escape, q or closing it stop the
+ * render as Ctrl-C does. */
+static int show_film(const film *f, void *ctx)
+{
+	if (!preview_show(ctx, f->rgb))
+		return 0;
+	stop_signal = SIGINT;
+	return 1;
 }
 
 static void catch_signals(void)
@@ -779,6 +805,11 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	catch_signals();
 	int ran = -1;   /* 1: failed after some passes, whose samples f holds */
 	int several = o->n_devices < 0 || o->n_devices > 1;
+	if (window && !several) {   /* several devices' films add up only at the end */
+		rs.on_show = show_film;
+		rs.show_ctx = window;
+		rs.show_every = PREVIEW_EVERY;
+	}
 	int planned = plan_split(o, s, output, part, in, fi, &rs, &info, &resumed) == 0 &&
 	              (keep->opened || set_threads(o) == 0);
 	if (planned && several)
@@ -794,6 +825,8 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 			summary(&rs, &st, several ? &multi : &keep->dev);
 		if (o->stats)
 			print_ray_stats(&st);
+		if (window)   /* a stop asked for now stops the frames after */
+			preview_show(window, f.rgb);
 		int wrote = write_film(&f, &out) == 0 && write_aovs(o, &f) == 0;
 		if (wrote)
 			rc = ran ? 1 : stop_signal ? 128 + stop_signal : 0;
@@ -802,8 +835,11 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 			        st.samples, output);
 		else if (wrote && st.samples < rs.samples)   /* said even with -q: the image is not what was asked */
 			fprintf(stderr, "eclat: stopped early by %s: '%s' holds %ld of the %d samples per pixel asked for\n",
-			        stop_signal == SIGINT ? "Ctrl-C (SIGINT)" : stop_signal ? "SIGTERM"
+			        preview_stopped(window) ? "the preview window" : stop_signal == SIGINT ? "Ctrl-C (SIGINT)"
+			        : stop_signal ? "SIGTERM"
 			        : "--time-limit", output, st.samples, rs.samples);
+		if (window && o->pause && !stop_signal && !preview_stopped(window))
+			preview_pause(window, &stop_signal);
 	}
 	film_free(&f);
 	free(resumed);
@@ -904,7 +940,8 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 	eopt->on_read_ctx = &reads;
 	for (int i = 0; deps && i < o->n_aovs; i++)
 		rc = rc || depfile_add(deps, DEPFILE_TARGET, o->aov_file[i]);
-	for (long k = 0; k < frames && rc == 0 && !stop_signal; k++) {
+	window = o->preview && !o->check && rc == 0 ? preview_open(o->width, o->height, o->scene) : NULL;
+	for (long k = 0; k < frames && rc == 0 && !stop_signal && !preview_stopped(window); k++) {
 		cli_frame_goto(frame, frame->first + k);
 		char *output = cli_pov_output(&o->pov, frame, o->scene, o->output);
 		rc = !output || (!o->check && check_output(o->scene, output, o->pov.alpha)) ||
@@ -939,6 +976,8 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 	mesh_io_cache_free(eopt->mesh_cache);
 	eopt->mesh_cache = NULL;
 	render_keep_free(&keep);
+	preview_close(window);
+	window = NULL;
 	return rc;
 }
 

@@ -1,5 +1,6 @@
 /* render.c: device buffers, kernel arguments and the progressive sample loop,
  * with progress, a time limit, checkpoints and clean stops between passes. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -71,6 +72,8 @@ struct pass_loop {
 	render_stats *st;
 	int64_t *sums;
 	double t0;
+	film *f;
+	double last_show, show_cost;   /* when the window was last shown the film, and what it took */
 };
 
 static double now(void)
@@ -157,7 +160,8 @@ static void progress(const struct pass_loop *pl)
 	        left);
 }
 
-static int read_film(struct pass_loop *pl, film *f)
+/* f from the device's film, whose pixels hold samples samples each. */
+static int read_film_at(struct pass_loop *pl, film *f, long samples)
 {
 	cl_int err = clEnqueueReadBuffer(pl->d->queue, pl->bufs[BUF_film], CL_TRUE, 0,
 	                                 pl->npix * 4 * sizeof *pl->sums, pl->sums, 0, NULL, NULL);
@@ -166,7 +170,57 @@ static int read_film(struct pass_loop *pl, film *f)
 		                          pl->npix * AOV_FLOAT4S * 4 * sizeof(float), f->aov, 0, NULL, NULL);
 	if (err != CL_SUCCESS)
 		return device_fail("clEnqueueReadBuffer", err);
-	film_resolve(f, pl->sums, pl->st->samples, pl->rs->gamma);
+	film_resolve(f, pl->sums, samples, pl->rs->gamma);
+	return 0;
+}
+
+static int read_film(struct pass_loop *pl, film *f)
+{
+	return read_film_at(pl, f, pl->st->samples);
+}
+
+/* Shows the window the film, of samples samples a pixel, when that is due:
+ * every show_every seconds, and less often when a large film takes a while
+ * to read and show (0.27 s at 1920x1080 here): at most a twentieth of the
+ * render goes to it. Returns 1 when the window asks for a stop, -1 when the
+ * film could not be read. */
+static int show(struct pass_loop *pl, long samples)
+{
+	const render_settings *rs = pl->rs;
+	double t = now();
+	if (!rs->on_show || t - pl->last_show < fmax(rs->show_every, 20 * pl->show_cost))
+		return 0;
+	if (read_film_at(pl, pl->f, samples))
+		return -1;
+	int stop = rs->on_show(pl->f, rs->show_ctx);
+	pl->last_show = now();
+	pl->show_cost = pl->last_show - t;
+	return stop;
+}
+
+/* The Whitted kernel over pixels first to first + n - 1 (in groups of local:
+ * see run_pass). When a window shows the render and this pass holds all the
+ * samples (POV-Ray's one pass), in 16 bands of rows, each shown as it ends:
+ * a band done is final. A stop asked for then waits for the pass's end. */
+static int launch_whitted(struct pass_loop *pl, size_t first, size_t n, size_t local, int count)
+{
+	const render_settings *rs = pl->rs;
+	size_t band = n;
+	if (rs->on_show && pl->st->samples == 0 && count == rs->samples)
+		band = ((n + 15) / 16 + local - 1) / local * local;   /* whole groups: no pixel twice */
+	for (size_t done = 0; done < n; done += band) {
+		size_t at = first + done, m = n - done < band ? n - done : band;
+		size_t global = (m + local - 1) / local * local;
+		cl_int err = clEnqueueNDRangeKernel(pl->d->queue, pl->k, 1, &at, &global, &local, 0, NULL, NULL);
+		if (err != CL_SUCCESS)
+			return device_fail("clEnqueueNDRangeKernel", err);
+		if (band == n || done + m == n)
+			continue;
+		if ((err = clFinish(pl->d->queue)) != CL_SUCCESS)
+			return device_fail("clFinish", err);
+		if (show(pl, count) < 0)
+			return -1;
+	}
 	return 0;
 }
 
@@ -200,16 +254,17 @@ static int run_pass(struct pass_loop *pl, int base, int count)
 	const render_settings *rs = pl->rs;
 	size_t first = rs->rows ? (size_t)rs->row_first * rs->width : 0;
 	size_t n = rs->rows ? (size_t)rs->rows * rs->width : pl->npix;
-	size_t local = WHITTED_GROUP, global = (n + local - 1) / local * local;
 	if (pl->params.integrator == INTEGRATOR_WHITTED && rs->aa_method > 0) {
 		if (render_aa_pass(pl->d, pl->prog, pl->bufs, BUF_COUNT, rs))
 			return -1;
-	} else if (pl->params.integrator == INTEGRATOR_WHITTED)
-		err = clEnqueueNDRangeKernel(pl->d->queue, pl->k, 1, &first, &global, &local, 0, NULL, NULL);
-	else
+	} else if (pl->params.integrator == INTEGRATOR_WHITTED) {
+		if (launch_whitted(pl, first, n, WHITTED_GROUP, count))
+			return -1;
+	} else {
 		err = clEnqueueNDRangeKernel(pl->d->queue, pl->k, 1, &first, &n, NULL, 0, NULL, NULL);
-	if (err != CL_SUCCESS)
-		return device_fail("clEnqueueNDRangeKernel", err);
+		if (err != CL_SUCCESS)
+			return device_fail("clEnqueueNDRangeKernel", err);
+	}
 	err = clEnqueueReadBuffer(pl->d->queue, pl->bufs[BUF_counters], CL_TRUE, 0, sizeof counts, counts,
 	                          0, NULL, NULL);
 	if (err != CL_SUCCESS)
@@ -281,6 +336,11 @@ static int run_passes(struct pass_loop *pl, film *f)
 		}
 		if (tty)
 			progress(pl);
+		int shown = pl->st->samples < rs->samples ? show(pl, pl->st->samples) : 0;
+		if (shown < 0)
+			return -1;
+		if (shown)
+			break;
 		if ((rs->stop && *rs->stop) || (rs->time_limit > 0 && now() - pl->t0 >= rs->time_limit))
 			break;
 		if (rs->checkpoint > 0 && rs->on_checkpoint && now() - last_checkpoint >= rs->checkpoint &&
@@ -343,7 +403,8 @@ int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_se
 		goto out;
 	}
 	if (setup(&pl, prog, lr) == 0) {
-		pl.t0 = now();
+		pl.t0 = pl.last_show = now();
+		pl.f = f;
 		rc = run_passes(&pl, f);
 		st->seconds = now() - pl.t0;
 	}

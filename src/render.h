@@ -45,6 +45,11 @@ typedef struct render_settings {
 	int (*on_checkpoint)(const film *f, void *ctx);
 	void *ctx;
 	volatile sig_atomic_t *stop;  /* set (by a signal handler): finish the pass and return */
+	/* Every show_every seconds, between passes, the film so far goes to on_show
+	 * (the preview window); its nonzero answer stops the render as *stop does. */
+	double show_every;
+	int (*on_show)(const film *f, void *ctx);
+	void *show_ctx;
 	/* In an animation (frames > 1) the progress line names the frame (the
 	 * frame_index-th of frames, from 0) and the time the whole animation has
 	 * left, reckoned from anim_seconds spent on the frames before this one. */
