@@ -93,7 +93,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 			fn.ops = malloc(sizeof *fn.ops);
 		scene_add_function(&s, &fn);
 	}
-	char *src = lower_function_source(&s);
+	char *src = lower_function_source(&s, NULL);
 	int valid = s.n_functions > 0;
 	char why[128];
 	for (int f = 0; f < s.n_functions; f++)

@@ -533,7 +533,7 @@ static int pattern_start(struct eval *e, struct cursor *c, const ast_node *item,
 	}
 	if (item->kind == AST_FUNCTION) {   /* function { }: the device runs it */
 		start_pattern(p, item, scene_pattern_name(PATTERN_FUNCTION));
-		int f, rc = eval_function_index(e, item, "the pattern is averaged", &f);
+		int f, rc = eval_function_pattern_index(e, item, "the pattern is averaged", &f);
 		if (rc < 0)
 			return -1;
 		if (rc > 0) {   /* --skip-unsupported: averaged, as a pattern eclat lacks */

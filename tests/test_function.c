@@ -278,8 +278,8 @@ static void check_hand_made(device_ctx *dev)
 	scene_function fn = { .n_params = 1, .ops = malloc(sizeof odd), .n_ops = (int)(sizeof odd / sizeof *odd) };
 	memcpy(fn.ops, odd, sizeof odd);
 	scene_add_function(&s, &fn);
-	char *src = lower_function_source(&s);
-	const char *prelude = "typedef float real;\nfloat pattern_noise(float3 p, int g) { return p.x + g; }\n";
+	char *src = lower_function_source(&s, NULL);
+	const char *prelude = "typedef float real;\ntypedef struct scene_data scene_data;\nfloat pattern_noise(float3 p, int g) { return p.x + g; }\n";
 	const char *parts[2] = { prelude, src ? src : "" };
 	cl_int err;
 	cl_program p = clCreateProgramWithSource(dev->context, 2, parts, NULL, &err);
@@ -303,7 +303,7 @@ static void check_hand_made(device_ctx *dev)
 		scene_function bf = { .n_params = 1, .ops = malloc(sizeof broken[i]), .n_ops = 2 };
 		memcpy(bf.ops, broken[i], sizeof broken[i]);
 		scene_add_function(&b, &bf);
-		char *bsrc = lower_function_source(&b);
+		char *bsrc = lower_function_source(&b, NULL);
 		printf("%s: a malformed program (%zu) is refused\n", bsrc ? "FAIL" : "ok", i);
 		failures += bsrc != NULL;
 		free(bsrc);
