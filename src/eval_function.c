@@ -112,6 +112,7 @@ static int emit(struct fcomp *c, const ast_node *at, int op, int arg, double v)
 
 static int compile(struct fcomp *c, const ast_node *n);
 static int operands(struct fcomp *c, const ast_node *n, int first, int count);
+static int add_once(scene *s, scene_function *f);
 
 const ast_node *eval_function_pattern_body(const ast_node *def)
 {
@@ -148,6 +149,35 @@ int eval_function_pigment(struct eval *e, const ast_node *def, scene_material *o
 		return -1;
 	eval_value_free(&v);
 	*out = v.mat;
+	return 0;
+}
+
+int eval_function_pigment_pattern(struct eval *e, const ast_node *b, const char *instead, int *index)
+{
+	ast_node block = *b;
+	block.kw = KW_PIGMENT;
+	value v;
+	if (eval_material_value(e, &block, &v))
+		return -1;
+	eval_value_free(&v);
+	if (has_function_pattern(e->s, v.mat.pattern, 0)) {
+		bool skipped = false;
+		fallback = instead;
+		unsupported(e, &skipped, b->loc, "this pigment_pattern's pigment holds a function pattern: the device "
+		            "runs a pigment_pattern only when its pigment calls no function");
+		return skipped ? 1 : -1;
+	}
+	scene_function f = { .n_params = 3, .loc = b->loc, .key = b };
+	f.ops = eval_xrealloc(NULL, 4 * sizeof *f.ops);
+	const float *c = v.mat.pigment;
+	if (v.mat.pattern < 0) {   /* a colour: its grey, a constant */
+		f.ops[f.n_ops++] = (scene_fop){ FOP_CONST, 0, 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2] };
+	} else {
+		for (int i = 0; i < 3; i++)
+			f.ops[f.n_ops++] = (scene_fop){ FOP_PARAM, i, 0 };
+		f.ops[f.n_ops++] = (scene_fop){ FOP_PIGMENT, v.mat.pattern, 5 };
+	}
+	*index = add_once(e->s, &f);
 	return 0;
 }
 

@@ -318,6 +318,10 @@ const ast_node *eval_function_pattern_body(const ast_node *def);
 /* That pattern or pigment evaluated, into out's pigment part (where it is
  * declared, as POV-Ray does: a macro's locals are still there). */
 int eval_function_pigment(struct eval *e, const ast_node *def, scene_material *out);
+/* pigment_pattern { PIGMENT } (block b) as a function pattern's program: the
+ * grey of the pigment's colour at x, y, z (POV-Ray 3.7's pigment_pattern).
+ * Returns as eval_function_index does. */
+int eval_function_pigment_pattern(struct eval *e, const ast_node *b, const char *instead, int *index);
 /* POV-Ray's internal function number (functions.inc's internal(N)) written in
  * POV-Ray's language, or NULL when eclat has not written it (eval_internal.c). */
 const ast_node *eval_internal_function(int number);
