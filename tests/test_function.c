@@ -309,6 +309,23 @@ static void check_hand_made(device_ctx *dev)
 		free(bsrc);
 		scene_free(&b);
 	}
+	/* a pattern or pigment op names a pigment of the scene, and a channel of 0 to 5 */
+	static const scene_fop patterns[][4] = {
+		{ { FOP_PARAM, 0, 0 }, { FOP_PARAM, 0, 0 }, { FOP_PARAM, 0, 0 }, { FOP_PATTERN, 0, 0 } },
+		{ { FOP_PARAM, 0, 0 }, { FOP_PARAM, 0, 0 }, { FOP_PARAM, 0, 0 }, { FOP_PIGMENT, -1, 0 } },
+	};
+	for (size_t i = 0; i < sizeof patterns / sizeof *patterns; i++) {
+		scene b;
+		scene_init(&b);
+		scene_function bf = { .n_params = 1, .ops = malloc(sizeof patterns[i]), .n_ops = 4 };
+		memcpy(bf.ops, patterns[i], sizeof patterns[i]);
+		scene_add_function(&b, &bf);
+		char *bsrc = lower_function_source(&b, NULL);
+		printf("%s: a pattern op of a pigment the scene lacks (%zu) is refused\n", bsrc ? "FAIL" : "ok", i);
+		failures += bsrc != NULL;
+		free(bsrc);
+		scene_free(&b);
+	}
 	scene_free(&s);
 }
 
