@@ -279,7 +279,8 @@ static void check_hand_made(device_ctx *dev)
 	memcpy(fn.ops, odd, sizeof odd);
 	scene_add_function(&s, &fn);
 	char *src = lower_function_source(&s, NULL);
-	const char *prelude = "typedef float real;\ntypedef struct scene_data scene_data;\nfloat pattern_noise(float3 p, int g) { return p.x + g; }\n";
+	const char *prelude = "typedef float real;\ntypedef struct scene_data scene_data;\n"
+	                      "float pattern_noise(float3 p, int g) { return p.x + g; }\n";
 	const char *parts[2] = { prelude, src ? src : "" };
 	cl_int err;
 	cl_program p = clCreateProgramWithSource(dev->context, 2, parts, NULL, &err);
