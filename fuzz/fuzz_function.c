@@ -51,7 +51,8 @@ static void build(const char *src)
 	static unsigned written;
 	if (++written % BUILD_EVERY != 1 || open_device())
 		return;
-	const char *parts[2] = { "typedef float real;\nfloat pattern_noise(float3 p, int g) { return p.x + g; }\n", src };
+	const char *parts[2] = { "typedef float real;\ntypedef struct scene_data scene_data;\n"
+	                         "float pattern_noise(float3 p, int g) { return p.x + g; }\n", src };
 	cl_int err;
 	cl_program p = clCreateProgramWithSource(context, 2, parts, NULL, &err);
 	if (!p)
@@ -93,7 +94,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 			fn.ops = malloc(sizeof *fn.ops);
 		scene_add_function(&s, &fn);
 	}
-	char *src = lower_function_source(&s);
+	char *src = lower_function_source(&s, NULL);
 	int valid = s.n_functions > 0;
 	char why[128];
 	for (int f = 0; f < s.n_functions; f++)

@@ -101,9 +101,10 @@ inline float3 normal_facets(float4 prm, float3 p, float3 v)
 /* The normal n (unit, world space, facing the ray) perturbed at p (world
  * space) by the normal pattern pt, with its warps and its slope_map (maps,
  * from pt->map_first): the unit perturbed normal in world space. */
-float3 pattern_perturb(global const dev_pattern *pt, global const dev_warp *warps, global const dev_map_entry *maps,
-                       float3 p, float3 n)
+float3 pattern_perturb(const scene_data *sc, global const dev_pattern *pt, float3 p, float3 n)
 {
+	global const dev_warp *warps = sc->warps;
+	global const dev_map_entry *maps = sc->maps;
 	int kind = pt->kind;
 	if (kind == PATTERN_SOLID || kind == PATTERN_AOI || (pt->flags & PATTERN_NORMAL_MAP))
 		return normalize(n);   /* aoi: the same value at the four points, no slope; normals of
@@ -183,7 +184,7 @@ float3 pattern_perturb(global const dev_pattern *pt, global const dev_warp *warp
 		float3 sum = (float3)(0.0f);
 		for (int i = 0; i < 4; i++) {
 			float3 dir = normal_pyramid[i].xyz;
-			float val = pattern_at(pt, warps, t + accuracy * dir, n, -n);
+			float val = pattern_at(sc, pt, t + accuracy * dir, n, -n);
 			sum += normal_slope_map(e, pt->map_count, val) * dir;
 		}
 		v += k * sum;

@@ -679,10 +679,10 @@ inline float pattern_slope(global const dev_pattern *pt, float3 p, float3 n)
 	return pattern_slope_wrap(slen * v1 + alen * v2);
 }
 
-/* The value of the pattern pt at p, a point already warped
- * (pattern_warp_point): POV-Ray's Evaluate_TPat, which normals call at
- * points around the warped one. n and d as for pattern_value. */
-float pattern_at(global const dev_pattern *pt, global const dev_warp *warps, float3 p, float3 n, float3 d)
+/* pattern_at without function patterns: what the scene's generated functions
+ * call (function_pattern.cl), so that no function calls itself through a
+ * pattern, which OpenCL C cannot (eval refuses a function pattern there). */
+float pattern_plain(global const dev_pattern *pt, global const dev_warp *warps, float3 p, float3 n, float3 d)
 {
 	int kind = pt->kind;
 	int generator = pt->noise_generator;
@@ -788,11 +788,6 @@ float pattern_at(global const dev_pattern *pt, global const dev_warp *warps, flo
 	case PATTERN_SLOPE:
 		v = pattern_slope(pt, p, n);
 		break;
-	case PATTERN_FUNCTION:   /* POV-Ray wraps values above 1, not those below 0 */
-		v = scene_function_pattern((int)pt->params[0].x, p);
-		if (v > 1.0f)
-			v = fmod(v, 1.0f);
-		break;
 	case PATTERN_MANDEL:
 	case PATTERN_JULIA:
 	case PATTERN_MAGNET:
@@ -809,7 +804,21 @@ float pattern_at(global const dev_pattern *pt, global const dev_warp *warps, flo
  * both in world space, serve only aoi and slope. Continuous patterns give [0, 1] (some,
  * as in POV-Ray, a little beyond: the map clamps); discrete ones (brick,
  * checker, cubic, hexagon, square, triangular) the index of a list entry. */
-float pattern_value(global const dev_pattern *pt, global const dev_warp *warps, float3 p, float3 n, float3 d)
+/* The value of the pattern pt at p, a point already warped
+ * (pattern_warp_point): POV-Ray's Evaluate_TPat, which normals call at
+ * points around the warped one. n and d as for pattern_value. */
+float pattern_at(const scene_data *sc, global const dev_pattern *pt, float3 p, float3 n, float3 d)
 {
-	return pattern_at(pt, warps, pattern_warp_point(pt, warps, p), n, d);
+	if (pt->kind != PATTERN_FUNCTION)
+		return pattern_plain(pt, sc->warps, p, n, d);
+	/* POV-Ray wraps values above 1, not those below 0 */
+	float v = scene_function_pattern(sc, (int)pt->params[0].x, p);
+	if (v > 1.0f)
+		v = fmod(v, 1.0f);
+	return pattern_wave(pt, v);
+}
+
+float pattern_value(const scene_data *sc, global const dev_pattern *pt, float3 p, float3 n, float3 d)
+{
+	return pattern_at(sc, pt, pattern_warp_point(pt, sc->warps, p), n, d);
 }

@@ -74,7 +74,7 @@ kernel void shapecast(global const bvh_node *nodes, global const dev_prim *prims
 kernel void function_values(int f, global const float4 *points, global float *out)
 {
 	int i = get_global_id(0);
-	out[i] = scene_function_pattern(f, points[i].xyz);
+	out[i] = scene_function_pattern(0, f, points[i].xyz);   /* no patterns in its functions */
 }
 
 /* make bench's traversal-only measure (tests/bench/embree_bench.c, against

@@ -6,13 +6,13 @@
  *   scene_data sc = { SCENE_BUFFERS(SCENE_FIELD) p, counts };
  */
 
-typedef struct {
+struct scene_data {   /* the typedef: function.cl, whose functions take it */
 #define SCENE_MEMBER(TYPE, NAME) global const TYPE *NAME;
 	SCENE_BUFFERS(SCENE_MEMBER)
 #undef SCENE_MEMBER
 	global const dev_params *p;
 	uint *counts;        /* the work item's ray and test counters (COUNT_) */
-} scene_data;
+};
 
 #define SCENE_PARAM(TYPE, NAME) global const TYPE *NAME,
 #define SCENE_FIELD(TYPE, NAME) NAME,

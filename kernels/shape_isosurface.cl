@@ -43,7 +43,7 @@ inline iso_shape iso_shape_of(global const dev_prim *prims, global const dev_pri
 /* The function less the threshold, negative inside (POV-Ray's EvaluatePolarized). */
 inline real iso_value(const iso_shape *s, real3 x)
 {
-	real f = scene_function_at(s->fn, x.x, x.y, x.z);
+	real f = scene_function_at(0, s->fn, x.x, x.y, x.z);   /* eval gives it no pattern */
 	return (s->flags & ISO_POSITIVE) ? s->threshold - f : f - s->threshold;
 }
 

@@ -123,19 +123,19 @@ float3 texture_normal(const scene_data *sc, int normal, float3 x, float3 n)
 {
 	global const dev_pattern *pt = &sc->patterns[normal];
 	if (!(pt->flags & PATTERN_NORMAL_MAP))
-		return pattern_perturb(pt, sc->warps, sc->maps, x, n);
+		return pattern_perturb(sc, pt, x, n);
 	global const dev_map_entry *e = sc->maps + pt->map_first;
 	float3 sum = (float3)(0.0f);
 	if (pt->kind == PATTERN_AVERAGE) {
 		float total = texture_map_weights(e, pt->map_count);
 		for (int i = 0; i < pt->map_count; i++) {
-			float3 ni = e[i].pigment >= 0 ? pattern_perturb(&sc->patterns[e[i].pigment], sc->warps, sc->maps, x, n)
+			float3 ni = e[i].pigment >= 0 ? pattern_perturb(sc, &sc->patterns[e[i].pigment], x, n)
 			                              : n;
 			sum += e[i].value / total * ni;
 		}
 		return length(sum) > 0.0f ? normalize(sum) : n;
 	}
-	float v = pattern_value(pt, sc->warps, texture_pattern_point(pt, x), n, -n);
+	float v = pattern_value(sc, pt, texture_pattern_point(pt, x), n, -n);
 	int b;
 	float f;
 	int a = texture_map_search(e, pt->map_count, v, &b, &f);
@@ -145,7 +145,7 @@ float3 texture_normal(const scene_data *sc, int normal, float3 x, float3 n)
 		if (wt[k] <= 0.0f)
 			continue;
 		int child = e[idx[k]].pigment;
-		sum += wt[k] * (child >= 0 ? pattern_perturb(&sc->patterns[child], sc->warps, sc->maps, x, n) : n);
+		sum += wt[k] * (child >= 0 ? pattern_perturb(sc, &sc->patterns[child], x, n) : n);
 	}
 	return length(sum) > 0.0f ? normalize(sum) : n;
 }
@@ -260,8 +260,78 @@ inline pigment_colour texture_image(const scene_data *sc, global const dev_patte
 
 #define TEXTURE_STACK 8   /* nested pigments waiting; lower.c keeps maps shallower */
 
-/* The pigment at the shading point: the solid colour, or the pattern's map at
- * the pattern's value there, nested pigments evaluated and blended in turn. */
+/* The pigment whose pattern is root at p (world space: each pattern's rows
+ * take it into its own), its map at the pattern's value there, nested
+ * pigments evaluated and blended in turn; VALUE(sc, pt, q, n, d) is a
+ * pattern's value at q, its point. Made twice, since OpenCL C has no
+ * recursion: texture_pigment_tree for surfaces, and function_pigment_tree,
+ * which runs no function pattern, for the scene's functions that call a
+ * pigment function (function_pattern.cl). */
+#define TEXTURE_PIGMENT_TREE(NAME, VALUE) \
+pigment_colour NAME(const scene_data *sc, int root, float3 p, float3 n, float3 d) \
+{ \
+	int stack[TEXTURE_STACK]; \
+	float weight[TEXTURE_STACK]; \
+	int top = 0; \
+	stack[top] = root; \
+	weight[top++] = 1.0f; \
+	float4 sum = (float4)(0.0f); \
+	float transmit = 0.0f; \
+	while (top > 0) { \
+		top--; \
+		global const dev_pattern *pt = &sc->patterns[stack[top]]; \
+		float w = weight[top], v = 0.0f; \
+		if (pt->kind == PATTERN_AVERAGE) {   /* every entry, by its weight (POV-Ray's ComputeAverage) */ \
+			global const dev_map_entry *e = sc->maps + pt->map_first; \
+			float total = texture_map_weights(e, pt->map_count); \
+			for (int i = 0; i < pt->map_count; i++) { \
+				float wi = w * e[i].value / total; \
+				if (e[i].pigment >= 0 && top < TEXTURE_STACK) { \
+					stack[top] = e[i].pigment; \
+					weight[top++] = wi; \
+				} else { \
+					sum += wi * e[i].colour; \
+					transmit += wi * e[i].transmit; \
+				} \
+			} \
+			continue; \
+		} \
+		if (pt->kind != PATTERN_SOLID) { \
+			float3 q = texture_pattern_point(pt, p); \
+			if (pt->kind == PATTERN_IMAGE_MAP) {   /* a colour of its own, no map */ \
+				pigment_colour c = texture_image(sc, pt, pattern_warp_point(pt, sc->warps, q)); \
+				sum += w * (float4)(c.rgb, c.filter); \
+				transmit += w * c.transmit; \
+				continue; \
+			} \
+			v = VALUE(sc, pt, q, n, d); \
+		} \
+		global const dev_map_entry *e = sc->maps + pt->map_first; \
+		int b; \
+		float f; \
+		int a = texture_map_search(e, pt->map_count, v, &b, &f); \
+		int idx[2] = { a, b }; \
+		float wt[2] = { a == b ? 1.0f : 1.0f - f, a == b ? 0.0f : f }; \
+		for (int k = 0; k < 2; k++) { \
+			if (wt[k] <= 0.0f) \
+				continue; \
+			global const dev_map_entry *x = &e[idx[k]]; \
+			if (x->pigment >= 0 && top < TEXTURE_STACK) { \
+				stack[top] = x->pigment; \
+				weight[top++] = w * wt[k]; \
+			} else { \
+				sum += w * wt[k] * x->colour; \
+				transmit += w * wt[k] * x->transmit; \
+			} \
+		} \
+	} \
+	pigment_colour out = { sum.xyz, sum.w, transmit }; \
+	return out; \
+}
+
+TEXTURE_PIGMENT_TREE(texture_pigment_tree, pattern_value)
+
+/* The pigment at the shading point: the solid colour, or its pattern's tree. */
 inline pigment_colour texture_pigment(const scene_data *sc, const shading_point *sp)
 {
 	global const dev_material *m = sp->m;
@@ -269,65 +339,7 @@ inline pigment_colour texture_pigment(const scene_data *sc, const shading_point 
 	if (m->pattern < 0)
 		return out;
 	float3 p = m->flags & MATERIAL_LOCAL ? sp->object_x : sp->x;
-	int stack[TEXTURE_STACK];
-	float weight[TEXTURE_STACK];
-	int n = 0;
-	stack[n] = m->pattern;
-	weight[n++] = 1.0f;
-	float4 sum = (float4)(0.0f);
-	float transmit = 0.0f;
-	while (n > 0) {
-		n--;
-		global const dev_pattern *pt = &sc->patterns[stack[n]];
-		float w = weight[n], v = 0.0f;
-		if (pt->kind == PATTERN_AVERAGE) {   /* every entry, by its weight (POV-Ray's ComputeAverage) */
-			global const dev_map_entry *e = sc->maps + pt->map_first;
-			float total = texture_map_weights(e, pt->map_count);
-			for (int i = 0; i < pt->map_count; i++) {
-				float wi = w * e[i].value / total;
-				if (e[i].pigment >= 0 && n < TEXTURE_STACK) {
-					stack[n] = e[i].pigment;
-					weight[n++] = wi;
-				} else {
-					sum += wi * e[i].colour;
-					transmit += wi * e[i].transmit;
-				}
-			}
-			continue;
-		}
-		if (pt->kind != PATTERN_SOLID) {
-			float3 q = texture_pattern_point(pt, p);
-			if (pt->kind == PATTERN_IMAGE_MAP) {   /* a colour of its own, no map */
-				pigment_colour c = texture_image(sc, pt, pattern_warp_point(pt, sc->warps, q));
-				sum += w * (float4)(c.rgb, c.filter);
-				transmit += w * c.transmit;
-				continue;
-			}
-			v = pattern_value(pt, sc->warps, q, sp->ns, sp->d);
-		}
-		global const dev_map_entry *e = sc->maps + pt->map_first;
-		int b;
-		float f;
-		int a = texture_map_search(e, pt->map_count, v, &b, &f);
-		int idx[2] = { a, b };
-		float wt[2] = { a == b ? 1.0f : 1.0f - f, a == b ? 0.0f : f };
-		for (int k = 0; k < 2; k++) {
-			if (wt[k] <= 0.0f)
-				continue;
-			global const dev_map_entry *x = &e[idx[k]];
-			if (x->pigment >= 0 && n < TEXTURE_STACK) {
-				stack[n] = x->pigment;
-				weight[n++] = w * wt[k];
-			} else {
-				sum += w * wt[k] * x->colour;
-				transmit += w * wt[k] * x->transmit;
-			}
-		}
-	}
-	out.rgb = sum.xyz;
-	out.filter = sum.w;
-	out.transmit = transmit;
-	return out;
+	return texture_pigment_tree(sc, m->pattern, p, sp->ns, sp->d);
 }
 
 /* ---- patterns of whole textures, and layers ---- */
@@ -376,7 +388,7 @@ inline texture_blend texture_blend_at(const scene_data *sc, const shading_point 
 			continue;
 		}
 		float3 q = texture_pattern_point(pt, m->flags & MATERIAL_LOCAL ? sp->object_x : sp->x);
-		float v = pattern_value(pt, sc->warps, q, sp->n0, sp->d);
+		float v = pattern_value(sc, pt, q, sp->n0, sp->d);
 		int c;
 		float f;
 		int a = texture_map_search(e, pt->map_count, v, &c, &f);

@@ -959,8 +959,13 @@ int eval_call_function(struct eval *e, const ast_node *call, const value *fn, va
 	static const char *const xyz[] = { "x", "y", "z" };
 	int n_params = params->n_kids ? params->n_kids : 3;
 	if (body->n_kids != 1 || !AST_IS_EXPRESSION(body->kids[0]->kind)) {
-		eval_error(e, call->loc, "'%s' is a function eclat cannot evaluate (a pattern or internal function)",
-		           call->str);
+		const ast_node *b = body->n_kids == 1 && body->kids[0]->kind == AST_BLOCK ? body->kids[0] : NULL;
+		const char *what = !b ? "function" : b->kw == KW_PIGMENT ? "pigment" : b->str ? b->str : "function";
+		if (strcmp(what, "pigment") == 0 || strcmp(what, "pattern") == 0)   /* no pattern evaluator here */
+			eval_error(e, call->loc, "'%s' is a %s function, which eclat runs only on the device, in a "
+			           "pigment's function pattern (not while it reads the scene)", call->str, what);
+		else
+			eval_error(e, call->loc, "'%s' is a %s function, which eclat cannot evaluate", call->str, what);
 		return -1;
 	}
 	if (body->kids[0]->kind == AST_CALL && strcmp(body->kids[0]->str, "internal") == 0) {

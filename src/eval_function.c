@@ -34,6 +34,11 @@ struct fcomp {
 
 /* What --skip-unsupported does instead, for its warning: "the pattern is averaged". */
 static const char *fallback;
+/* Whether the function being made may call pattern and pigment functions: a
+ * pigment's function pattern may (the device runs it with the scene's
+ * pattern buffers), an isosurface or a height_field may not (the traversal
+ * has no pattern buffers, and the host no pattern evaluator). */
+static bool patterns_allowed;
 
 static const char *const xyz[] = { "x", "y", "z" };
 
@@ -110,6 +115,128 @@ static int emit(struct fcomp *c, const ast_node *at, int op, int arg, double v)
 }
 
 static int compile(struct fcomp *c, const ast_node *n);
+static int operands(struct fcomp *c, const ast_node *n, int first, int count);
+static int add_once(scene *s, scene_function *f);
+
+const ast_node *eval_function_pattern_body(const ast_node *def)
+{
+	const ast_node *body = def->kids[1];
+	if (body->n_kids != 1 || body->kids[0]->kind != AST_BLOCK)
+		return NULL;
+	const ast_node *b = body->kids[0];
+	if (b->kw == KW_PIGMENT || (b->kw == KW_UNKNOWN && b->str && strcmp(b->str, "pattern") == 0))
+		return b;
+	return NULL;
+}
+
+/* Whether pigment node of the pool, or one nested in its maps, is a function
+ * pattern: the device would run a function inside a function. */
+static bool has_function_pattern(const scene *s, int node, int depth)
+{
+	if (node < 0 || node >= s->n_pigments || depth > 16)
+		return false;
+	const scene_pigment *pg = &s->pigments[node];
+	if (pg->kind == PATTERN_FUNCTION)
+		return true;
+	for (int i = 0; i < pg->n_map; i++)
+		if (has_function_pattern(s, pg->map[i].pigment, depth + 1))
+			return true;
+	return false;
+}
+
+int eval_function_pigment(struct eval *e, const ast_node *def, scene_material *out)
+{
+	ast_node block = *eval_function_pattern_body(def);
+	block.kw = KW_PIGMENT;   /* pattern { } reads as a pigment whose map goes unused */
+	value v;
+	if (eval_material_value(e, &block, &v))
+		return -1;
+	eval_value_free(&v);
+	*out = v.mat;
+	return 0;
+}
+
+int eval_function_pigment_pattern(struct eval *e, const ast_node *b, const char *instead, int *index)
+{
+	ast_node block = *b;
+	block.kw = KW_PIGMENT;
+	value v;
+	if (eval_material_value(e, &block, &v))
+		return -1;
+	eval_value_free(&v);
+	if (has_function_pattern(e->s, v.mat.pattern, 0)) {
+		bool skipped = false;
+		fallback = instead;
+		unsupported(e, &skipped, b->loc, "this pigment_pattern's pigment holds a function pattern: the device "
+		            "runs a pigment_pattern only when its pigment calls no function");
+		return skipped ? 1 : -1;
+	}
+	scene_function f = { .n_params = 3, .loc = b->loc, .key = b };
+	f.ops = eval_xrealloc(NULL, 4 * sizeof *f.ops);
+	const float *c = v.mat.pigment;
+	if (v.mat.pattern < 0) {   /* a colour: its grey, a constant */
+		f.ops[f.n_ops++] = (scene_fop){ FOP_CONST, 0, 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2] };
+	} else {
+		for (int i = 0; i < 3; i++)
+			f.ops[f.n_ops++] = (scene_fop){ FOP_PARAM, i, 0 };
+		f.ops[f.n_ops++] = (scene_fop){ FOP_PIGMENT, v.mat.pattern, 5 };
+	}
+	*index = add_once(e->s, &f);
+	return 0;
+}
+
+/* The pigment of the pattern or pigment function fn (evaluated where it was
+ * declared, as POV-Ray does), called as name at use, if the function being
+ * made may call it. */
+static int function_pigment(struct fcomp *c, const value *fn, const char *name, src_loc use,
+                            scene_material *out)
+{
+	if (!patterns_allowed)
+		return unsupported(c->e, c->skipped, use, "'%s' is a pattern or pigment function, which only a "
+		                   "pigment's function pattern can call yet (not an isosurface or a height_field)", name);
+	if (has_function_pattern(c->e->s, fn->mat.pattern, 0))
+		return unsupported(c->e, c->skipped, use, "'%s' is made of a function pattern: the device runs a "
+		                   "pattern function's pattern only when it calls no function", name);
+	*out = fn->mat;
+	return 0;
+}
+
+/* The channel a member of a pigment function's colour names (POV-Ray's
+ * compile_member), or -1. */
+static int channel_of(const char *m)
+{
+	static const char *const names[][3] = {
+		{ "red", "x", "u" }, { "green", "y", "v" }, { "blue", "z", "" }, { "filter", "t", "" },
+		{ "transmit", "", "" }, { "gray", "grey", "" },
+	};
+	for (int k = 0; k < 6; k++)
+		for (int j = 0; j < 3; j++)
+			if (names[k][j][0] && strcmp(m, names[k][j]) == 0)
+				return k;
+	return -1;
+}
+
+/* A call of a pattern function (channel -1) or of one channel of a pigment
+ * function: its three arguments, then the op that reads the pigment. A
+ * pigment without a pattern is its colour, a constant. */
+static int pattern_call(struct fcomp *c, const ast_node *call, const value *fn, int channel)
+{
+	scene_material m;
+	if (function_pigment(c, fn, call->str, call->loc, &m))
+		return -1;
+	if (call->n_kids != 3) {
+		eval_error(c->e, call->loc, "function '%s' takes 3 arguments, not %d", call->str, call->n_kids);
+		return -1;
+	}
+	if (m.pattern < 0) {
+		const float *p = m.pigment;
+		double v = channel < 0 ? 0 : channel < 5 ? p[channel] : 0.297 * p[0] + 0.589 * p[1] + 0.114 * p[2];
+		return emit(c, call, FOP_CONST, 0, v);
+	}
+	if (operands(c, call, 0, 3))
+		return -1;
+	return channel < 0 ? emit(c, call, FOP_PATTERN, m.pattern, 0) : emit(c, call, FOP_PIGMENT, m.pattern, channel);
+}
 
 static int function_of(struct eval *e, const ast_node *def, const char *name, src_loc use, int depth, bool *skipped,
                        int *index);
@@ -216,6 +343,9 @@ static int call(struct fcomp *c, const ast_node *n)
 		eval_error(c->e, n->loc, "'%s' is not a function", n->str);
 		return -1;
 	}
+	const ast_node *block = eval_function_pattern_body(v->node);
+	if (block)   /* a pigment function without a member: its red, as POV-Ray's first value */
+		return pattern_call(c, n, v, block->kw == KW_PIGMENT ? 0 : -1);
 	int callee;
 	if (function_of(c->e, v->node, n->str, n->loc, c->depth + 1, c->skipped, &callee))
 		return -1;
@@ -260,19 +390,51 @@ static int compile(struct fcomp *c, const ast_node *n)
 		return builtin(c, n);
 	case AST_CALL:
 		return call(c, n);
-	case AST_MEMBER:   /* P(x, y, z).x of a pigment function: say so */
-		if (n->kids[0]->kind == AST_CALL && call(c, n->kids[0]))
+	case AST_MEMBER: {   /* P(x, y, z).x of a pigment function */
+		const ast_node *k = n->kids[0];
+		const value *v = k->kind == AST_CALL ? eval_lookup(c->e, k->str) : NULL;
+		const ast_node *block = v && v->kind == V_FUNCTION ? eval_function_pattern_body(v->node) : NULL;
+		if (block && block->kw == KW_PIGMENT) {
+			int channel = channel_of(n->str);
+			if (channel < 0) {
+				eval_error(c->e, n->loc, "'.%s' is no member of a colour: red, green, blue, filter, transmit, "
+				           "gray (or x, y, z, t, u, v)", n->str);
+				return -1;
+			}
+			return pattern_call(c, k, v, channel);
+		}
+		if (k->kind == AST_CALL && call(c, k))
 			return -1;
 		eval_error(c->e, n->loc, "'.%s' of a float has no meaning in a function", n->str);
 		return -1;
+	}
 	default:
 		return unsupported(c->e, c->skipped, n->loc, "this expression of the function's parameters cannot be "
 		                   "computed on the device (a function computes with floats)");
 	}
 }
 
-/* The pool's function made from def, made now unless it was before. name: how
- * the scene calls it (for messages), use: where. */
+/* f's index in the pool: an earlier function with the same program, or f
+ * added. Programs, not definitions, are compared: a definition in a macro
+ * makes a different program at each call when what it names differs. */
+static int add_once(scene *s, scene_function *f)
+{
+	for (int i = 0; i < s->n_functions; i++) {
+		const scene_function *g = &s->functions[i];
+		if (g->n_params != f->n_params || g->n_ops != f->n_ops)
+			continue;
+		int k = 0;
+		while (k < f->n_ops && g->ops[k].op == f->ops[k].op && g->ops[k].arg == f->ops[k].arg &&
+		       memcmp(&g->ops[k].value, &f->ops[k].value, sizeof f->ops[k].value) == 0)
+			k++;
+		if (k == f->n_ops) {
+			free(f->ops);
+			return i;
+		}
+	}
+	return scene_add_function(s, f);
+}
+
 /* f_noise3d, internal(76): POV-Ray's Noise at (x, y, z) with the scene's
  * noise_generator (global_settings may come later: 0 stands for it). */
 #define NOISE3D 76
@@ -283,18 +445,13 @@ static int noise3d(struct eval *e, const ast_node *def, int *index)
 	for (int i = 0; i < 3; i++)
 		f.ops[i] = (scene_fop){ FOP_PARAM, i, 0 };
 	f.ops[3] = (scene_fop){ FOP_NOISE3, 0, 0 };
-	*index = scene_add_function(e->s, &f);
+	*index = add_once(e->s, &f);
 	return 0;
 }
 
 static int function_of(struct eval *e, const ast_node *def, const char *name, src_loc use, int depth, bool *skipped,
                        int *index)
 {
-	for (int i = 0; i < e->s->n_functions; i++)
-		if (e->s->functions[i].key == def) {
-			*index = i;
-			return 0;
-		}
 	if (depth > MAX_CALL_DEPTH) {
 		eval_error(e, use, "functions call each other more than %d deep here (a function that calls itself?)",
 		           MAX_CALL_DEPTH);
@@ -326,14 +483,31 @@ static int function_of(struct eval *e, const ast_node *def, const char *name, sr
 		free(c.f.ops);
 		return -1;
 	}
-	*index = scene_add_function(e->s, &c.f);
+	*index = add_once(e->s, &c.f);
 	return 0;
+}
+
+static int make(struct eval *e, const ast_node *def, const char *instead, bool patterns, int *index)
+{
+	/* a function pattern in a pigment read while this one is made (in a
+	 * constant's expression) makes its own: this one's state comes back after */
+	const char *was_fallback = fallback;
+	bool was_allowed = patterns_allowed;
+	bool skipped = false;
+	fallback = instead;
+	patterns_allowed = patterns;
+	int rc = function_of(e, def, "function", def->loc, 0, &skipped, index);
+	fallback = was_fallback;
+	patterns_allowed = was_allowed;
+	return rc && skipped ? 1 : rc;
 }
 
 int eval_function_index(struct eval *e, const ast_node *def, const char *instead, int *index)
 {
-	bool skipped = false;
-	fallback = instead;
-	int rc = function_of(e, def, "function", def->loc, 0, &skipped, index);
-	return rc && skipped ? 1 : rc;
+	return make(e, def, instead, false, index);
+}
+
+int eval_function_pattern_index(struct eval *e, const ast_node *def, const char *instead, int *index)
+{
+	return make(e, def, instead, true, index);
 }

@@ -67,7 +67,8 @@ typedef struct value {
 	scene_fog *fog;          /* V_FOG */
 	int media;               /* V_MEDIA: its index in scene.media */
 	struct array *arr;       /* V_ARRAY */
-	const ast_node *node;    /* V_MACRO, V_FUNCTION: the definition */
+	const ast_node *node;    /* V_MACRO, V_FUNCTION: the definition (a pattern or pigment
+	                          * function's pigment in mat) */
 } value;
 
 struct array {
@@ -308,6 +309,19 @@ int eval_call_function(struct eval *e, const ast_node *call, const value *fn, va
  * device cannot run and --skip-unsupported made that a warning, which ends
  * with instead ("the pattern is averaged"). */
 int eval_function_index(struct eval *e, const ast_node *def, const char *instead, int *index);
+/* The same for a pigment's function pattern, which may call pattern and pigment
+ * functions (the device runs it with the scene's pattern buffers). */
+int eval_function_pattern_index(struct eval *e, const ast_node *def, const char *instead, int *index);
+/* The pattern { } or pigment { } that the function def is made of (a pattern
+ * or pigment function), or NULL. */
+const ast_node *eval_function_pattern_body(const ast_node *def);
+/* That pattern or pigment evaluated, into out's pigment part (where it is
+ * declared, as POV-Ray does: a macro's locals are still there). */
+int eval_function_pigment(struct eval *e, const ast_node *def, scene_material *out);
+/* pigment_pattern { PIGMENT } (block b) as a function pattern's program: the
+ * grey of the pigment's colour at x, y, z (POV-Ray 3.7's pigment_pattern).
+ * Returns as eval_function_index does. */
+int eval_function_pigment_pattern(struct eval *e, const ast_node *b, const char *instead, int *index);
 /* POV-Ray's internal function number (functions.inc's internal(N)) written in
  * POV-Ray's language, or NULL when eclat has not written it (eval_internal.c). */
 const ast_node *eval_internal_function(int number);

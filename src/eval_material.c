@@ -531,9 +531,11 @@ static int pattern_start(struct eval *e, struct cursor *c, const ast_node *item,
 		start_pattern(p, item, item->str);
 		return 0;
 	}
-	if (item->kind == AST_FUNCTION) {   /* function { }: the device runs it */
+	bool grey = item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, "pigment_pattern") == 0;
+	if (item->kind == AST_FUNCTION || grey) {   /* function { }: the device runs it */
 		start_pattern(p, item, scene_pattern_name(PATTERN_FUNCTION));
-		int f, rc = eval_function_index(e, item, "the pattern is averaged", &f);
+		int f, rc = grey ? eval_function_pigment_pattern(e, item, "the pattern is averaged", &f)
+		                 : eval_function_pattern_index(e, item, "the pattern is averaged", &f);
 		if (rc < 0)
 			return -1;
 		if (rc > 0) {   /* --skip-unsupported: averaged, as a pattern eclat lacks */

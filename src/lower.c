@@ -1020,7 +1020,9 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 		lower_emitters(out);
 	if (rc == 0 && lower_sky(out) < 0)
 		rc = -1;
-	out->functions = lower_function_source(s);
+	int *roots = lower_function_roots(&out->textures, s);
+	out->functions = lower_function_source(s, roots);
+	free(roots);
 	if (s->n_functions > 0 && !out->functions)
 		rc = -1;   /* said why, or out of memory: no kernel without its functions */
 	for (int m = 0; m < s->n_meshes; m++) {

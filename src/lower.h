@@ -153,7 +153,7 @@ void lower_background_alpha(const scene *s, dev_params *p);
 const char *lower_kernel_options(const lower_result *lr);
 /* The scene's functions as OpenCL C, or NULL when it has none (or on out of
  * memory, or after an error that a program is malformed). */
-char *lower_function_source(const scene *s);
+char *lower_function_source(const scene *s, const int *roots);
 /* 1 when function f's program keeps scene.h's promises; else 0, why in why. */
 int lower_function_valid(const scene *s, int f, char *why, size_t n);
 
@@ -163,6 +163,12 @@ int lower_function_valid(const scene *s, int f, char *why, size_t n);
 int lower_media(lower_textures *lt, const scene *s, int head, const xform *to_world, int *n);
 /* Warns about media in objects that have no inside (a triangle, a mesh, a disc). */
 void lower_media_warn_open(const scene *s);
+/* Pattern pigment pigment of the pool flattened into lt with no transformation
+ * around it, for a pattern or pigment function: its first dev_pattern. */
+int lower_texture_pigment(lower_textures *lt, const scene *s, int pigment);
+/* Each scene pigment's dev_pattern in lt for the functions that call it
+ * (lower_texture_pigment), -1 for the others; NULL when none does. */
+int *lower_function_roots(lower_textures *lt, const scene *s);
 /* A density { }'s material (its pigment: the density) in lt->subs, placed by to_world. */
 int lower_texture_density(lower_textures *lt, const scene *s, int pattern, const float rgb[3],
                           const xform *to_world);

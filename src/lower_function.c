@@ -6,7 +6,9 @@
  * below, on numbered temporaries, and a constant is printed by printf from a
  * double. No name, string or text of the scene reaches the kernels' source, so
  * whatever a scene writes, the program is well-formed and does only
- * arithmetic. The host's twin is scene_function_eval. */
+ * arithmetic, or calls a pattern or pigment function on a pattern tree
+ * lowering made (roots: each scene pigment's dev_pattern). The host's twin is
+ * scene_function_eval. */
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -69,7 +71,8 @@ static void put(struct text *t, const char *fmt, ...)
 }
 
 /* One op as "real tN = ...;" on the temporaries named by stack. */
-static void statement(struct text *t, const scene *s, const scene_fop *o, int *stack, int *top, int temp)
+static void statement(struct text *t, const scene *s, const int *roots, const scene_fop *o, int *stack, int *top,
+                      int temp)
 {
 	put(t, "\treal t%d = ", temp);
 	if (o->op == FOP_CONST) {
@@ -87,12 +90,20 @@ static void statement(struct text *t, const scene *s, const scene_fop *o, int *s
 		*top -= 3;
 		put(t, "(real)pattern_noise((float3)((float)t%d, (float)t%d, (float)t%d), %d);\n", stack[*top],
 		    stack[*top + 1], stack[*top + 2], o->arg ? o->arg : s->noise_generator);
+	} else if (o->op == FOP_PATTERN || o->op == FOP_PIGMENT) {
+		*top -= 3;
+		int root = roots ? roots[o->arg] : 0;
+		if (o->op == FOP_PATTERN)
+			put(t, "function_pattern(sc, %d, ", root);
+		else
+			put(t, "function_pigment(sc, %d, %d, ", root, (int)o->value);
+		put(t, "t%d, t%d, t%d);\n", stack[*top], stack[*top + 1], stack[*top + 2]);
 	} else if (o->op == FOP_CALL) {
 		int n = s->functions[o->arg].n_params;
 		*top -= n;
-		put(t, "scene_fn%d(", o->arg);
+		put(t, "scene_fn%d(sc", o->arg);
 		for (int i = 0; i < n; i++)
-			put(t, "%st%d", i ? ", " : "", stack[*top + i]);
+			put(t, ", t%d", stack[*top + i]);
 		put(t, ");\n");
 	} else {
 		int n = scene_fop_arity(o->op);
@@ -108,16 +119,16 @@ static void statement(struct text *t, const scene *s, const scene_fop *o, int *s
 	stack[(*top)++] = temp;
 }
 
-static void function(struct text *t, const scene *s, int f)
+static void function(struct text *t, const scene *s, const int *roots, int f)
 {
 	const scene_function *fn = &s->functions[f];
-	put(t, "real scene_fn%d(", f);
+	put(t, "real scene_fn%d(const scene_data *sc", f);
 	for (int i = 0; i < fn->n_params; i++)
-		put(t, "%sreal p%d", i ? ", " : "", i);
+		put(t, ", real p%d", i);
 	put(t, ")\n{\n");
 	int stack[SCENE_FUNCTION_STACK], top = 0;
 	for (int i = 0; i < fn->n_ops; i++)
-		statement(t, s, &fn->ops[i], stack, &top, i);
+		statement(t, s, roots, &fn->ops[i], stack, &top, i);
 	if (top > 0)
 		put(t, "\treturn t%d;\n}\n\n", stack[top - 1]);
 	else
@@ -140,8 +151,13 @@ int lower_function_valid(const scene *s, int f, char *why, size_t n)
 		const scene_fop *o = &fn->ops[i];
 		int pop = o->op == FOP_CALL && o->arg >= 0 && o->arg < f ? s->functions[o->arg].n_params
 		        : scene_fop_arity(o->op);
-		if (o->op < 0 || o->op >= FOP_COUNT || (o->op > FOP_CALL && o->op != FOP_NOISE3 && !templates[o->op]))
+		bool pattern = o->op == FOP_PATTERN || o->op == FOP_PIGMENT;
+		if (o->op < 0 || o->op >= FOP_COUNT ||
+		    (o->op > FOP_CALL && o->op != FOP_NOISE3 && !pattern && !templates[o->op]))
 			snprintf(why, n, "op %d is %d, no op", i, o->op);
+		else if (pattern && (o->arg < 0 || o->arg >= s->n_pigments || !(o->value >= 0 && o->value <= 5)))
+			snprintf(why, n, "op %d reads pigment %d channel %g of %d pigments", i, o->arg, o->value,
+			         s->n_pigments);
 		else if (o->op == FOP_PARAM && (o->arg < 0 || o->arg >= fn->n_params))
 			snprintf(why, n, "op %d reads parameter %d of %d", i, o->arg, fn->n_params);
 		else if (o->op == FOP_CALL && (o->arg < 0 || o->arg >= f))
@@ -159,7 +175,28 @@ int lower_function_valid(const scene *s, int f, char *why, size_t n)
 	return 1;
 }
 
-char *lower_function_source(const scene *s)
+int *lower_function_roots(lower_textures *lt, const scene *s)
+{
+	int *roots = NULL;
+	for (int f = 0; f < s->n_functions; f++)
+		for (int i = 0; i < s->functions[f].n_ops; i++) {
+			const scene_fop *o = &s->functions[f].ops[i];
+			if ((o->op != FOP_PATTERN && o->op != FOP_PIGMENT) || o->arg < 0 || o->arg >= s->n_pigments)
+				continue;
+			if (!roots) {
+				roots = malloc((size_t)s->n_pigments * sizeof *roots);
+				if (!roots)
+					return NULL;
+				for (int k = 0; k < s->n_pigments; k++)
+					roots[k] = -1;
+			}
+			if (roots[o->arg] < 0)
+				roots[o->arg] = lower_texture_pigment(lt, s, o->arg);
+		}
+	return roots;
+}
+
+char *lower_function_source(const scene *s, const int *roots)
 {
 	if (s->n_functions == 0)
 		return NULL;
@@ -174,12 +211,12 @@ char *lower_function_source(const scene *s)
 	struct text t = { 0 };
 	put(&t, "/* The scene's functions, written by src/lower_function.c. */\n");
 	for (int f = 0; f < s->n_functions; f++)
-		function(&t, s, f);
-	put(&t, "real scene_function_at(int f, real x, real y, real z)\n{\n\tswitch (f) {\n");
+		function(&t, s, roots, f);
+	put(&t, "real scene_function_at(const scene_data *sc, int f, real x, real y, real z)\n{\n\tswitch (f) {\n");
 	for (int f = 0; f < s->n_functions; f++) {
-		put(&t, "\tcase %d: return scene_fn%d(", f, f);
+		put(&t, "\tcase %d: return scene_fn%d(sc", f, f);
 		for (int i = 0; i < s->functions[f].n_params; i++)
-			put(&t, "%s%s", i ? ", " : "", i == 0 ? "x" : i == 1 ? "y" : i == 2 ? "z" : "0");
+			put(&t, ", %s", i == 0 ? "x" : i == 1 ? "y" : i == 2 ? "z" : "0");
 		put(&t, ");\n");
 	}
 	put(&t, "\t}\n\treturn 0;\n}\n");

@@ -246,6 +246,12 @@ static int add_sub(lower_textures *lt)
 	return lt->n_subs++;
 }
 
+int lower_texture_pigment(lower_textures *lt, const scene *s, int pigment)
+{
+	xform identity = scene_xform_identity();
+	return flatten(lt, s, pigment, &identity, 0, NULL);
+}
+
 int lower_texture_density(lower_textures *lt, const scene *s, int pattern, const float rgb[3], const xform *to_world)
 {
 	scene_material m = scene_default_material();

@@ -405,7 +405,8 @@ typedef struct {
 	X(ADD, 2)    X(SUB, 2)    X(MUL, 2)   X(DIV, 2)   X(LT, 2)    X(LE, 2) \
 	X(GT, 2)     X(GE, 2)     X(EQ, 2)    X(NE, 2)    X(AND, 2)   X(OR, 2) \
 	X(MIN, 2)    X(MAX, 2)    X(ATAN2, 2) X(POW, 2)   X(MOD, 2)   X(IDIV, 2) \
-	X(COND, 3)   X(SELECT3, 3) X(SELECT4, 4) X(NOISE3, 3)
+	X(COND, 3)   X(SELECT3, 3) X(SELECT4, 4) X(NOISE3, 3) \
+	X(PATTERN, 3) X(PIGMENT, 3)
 enum {
 #define X(name, arity) FOP_##name,
 	SCENE_FOPS(X)
@@ -415,7 +416,12 @@ enum {
 /* CONST pushes value; PARAM pushes parameter arg; CALL pops the callee's
  * parameters (the last on top) and pushes function arg's value for them;
  * NOISE3 pops x, y, z and pushes POV-Ray's Noise there with noise_generator
- * arg, or the scene's when arg is 0 (f_noise3d). */
+ * arg, or the scene's when arg is 0 (f_noise3d). PATTERN pops x, y, z and
+ * pushes the value there of pattern pigment arg (scene.pigments: POV-Ray's
+ * f_pattern, its map unused); PIGMENT the same pigment's channel value (0
+ * red, 1 green, 2 blue, 3 filter, 4 transmit, 5 grey: f_pigment). Only the
+ * device runs these two: the host has no pattern evaluator, and evaluation
+ * keeps them out of what the host runs. */
 typedef struct {
 	int op, arg;
 	double value;

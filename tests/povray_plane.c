@@ -145,7 +145,7 @@ int plane_read_case(const char *dir, const char *name, float *out, int channels)
 static cl_program build(device_ctx *d, const char *const *kernels, int n_kernels, const char *test_kernel,
                         const char *who)
 {
-	const char *texts[8];
+	const char *texts[12];
 	int n = 0;
 	if (n_kernels + 1 > (int)(sizeof texts / sizeof texts[0])) {
 		fprintf(stderr, "%s: too many kernel sources\n", who);

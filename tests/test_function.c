@@ -278,8 +278,9 @@ static void check_hand_made(device_ctx *dev)
 	scene_function fn = { .n_params = 1, .ops = malloc(sizeof odd), .n_ops = (int)(sizeof odd / sizeof *odd) };
 	memcpy(fn.ops, odd, sizeof odd);
 	scene_add_function(&s, &fn);
-	char *src = lower_function_source(&s);
-	const char *prelude = "typedef float real;\nfloat pattern_noise(float3 p, int g) { return p.x + g; }\n";
+	char *src = lower_function_source(&s, NULL);
+	const char *prelude = "typedef float real;\ntypedef struct scene_data scene_data;\n"
+	                      "float pattern_noise(float3 p, int g) { return p.x + g; }\n";
 	const char *parts[2] = { prelude, src ? src : "" };
 	cl_int err;
 	cl_program p = clCreateProgramWithSource(dev->context, 2, parts, NULL, &err);
@@ -303,8 +304,25 @@ static void check_hand_made(device_ctx *dev)
 		scene_function bf = { .n_params = 1, .ops = malloc(sizeof broken[i]), .n_ops = 2 };
 		memcpy(bf.ops, broken[i], sizeof broken[i]);
 		scene_add_function(&b, &bf);
-		char *bsrc = lower_function_source(&b);
+		char *bsrc = lower_function_source(&b, NULL);
 		printf("%s: a malformed program (%zu) is refused\n", bsrc ? "FAIL" : "ok", i);
+		failures += bsrc != NULL;
+		free(bsrc);
+		scene_free(&b);
+	}
+	/* a pattern or pigment op names a pigment of the scene, and a channel of 0 to 5 */
+	static const scene_fop patterns[][4] = {
+		{ { FOP_PARAM, 0, 0 }, { FOP_PARAM, 0, 0 }, { FOP_PARAM, 0, 0 }, { FOP_PATTERN, 0, 0 } },
+		{ { FOP_PARAM, 0, 0 }, { FOP_PARAM, 0, 0 }, { FOP_PARAM, 0, 0 }, { FOP_PIGMENT, -1, 0 } },
+	};
+	for (size_t i = 0; i < sizeof patterns / sizeof *patterns; i++) {
+		scene b;
+		scene_init(&b);
+		scene_function bf = { .n_params = 1, .ops = malloc(sizeof patterns[i]), .n_ops = 4 };
+		memcpy(bf.ops, patterns[i], sizeof patterns[i]);
+		scene_add_function(&b, &bf);
+		char *bsrc = lower_function_source(&b, NULL);
+		printf("%s: a pattern op of a pigment the scene lacks (%zu) is refused\n", bsrc ? "FAIL" : "ok", i);
 		failures += bsrc != NULL;
 		free(bsrc);
 		scene_free(&b);

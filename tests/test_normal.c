@@ -162,10 +162,14 @@ static const char *test_kernel =
 	"                        global float4 *out)\n"
 	"{\n"
 	"	int i = get_global_id(0);\n"
-	"	out[i] = (float4)(pattern_perturb(pt, warps, maps, points[i].xyz, (float3)(0.0f, 0.0f, -1.0f)), 0.0f);\n"
+	"	scene_data sc = { 0 };   /* the buffers a normal reads */\n"
+	"	sc.warps = warps;\n"
+	"	sc.maps = maps;\n"
+	"	out[i] = (float4)(pattern_perturb(&sc, pt, points[i].xyz, (float3)(0.0f, 0.0f, -1.0f)), 0.0f);\n"
 	"}\n";
 
-static const char *const kernel_files[] = { "kernels/shared.h", "kernels/intersect.cl", "kernels/function.cl", "kernels/pattern_tables.cl", "kernels/pattern_fractal.cl", "kernels/pattern.cl",
+static const char *const kernel_files[] = { "kernels/shared.h", "kernels/intersect.cl", "kernels/function.cl", "kernels/scene.cl",
+                                            "kernels/pattern_tables.cl", "kernels/pattern_fractal.cl", "kernels/pattern.cl",
                                             "kernels/normal.cl" };
 
 static void fill_pattern(const struct ncase *c, dev_pattern *pt, dev_warp *warps, dev_map_entry *maps)

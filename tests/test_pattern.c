@@ -257,10 +257,13 @@ static const char *test_kernel =
 	"                         global float *out)\n"
 	"{\n"
 	"	int i = get_global_id(0);\n"
-	"	out[i] = pattern_value(pt, warps, points[i].xyz, normal.xyz, dirs[i].xyz);\n"
+	"	scene_data sc = { 0 };   /* the buffers a pattern reads */\n"
+	"	sc.warps = warps;\n"
+	"	out[i] = pattern_value(&sc, pt, points[i].xyz, normal.xyz, dirs[i].xyz);\n"
 	"}\n";
 
-static const char *const kernel_files[] = { "kernels/shared.h", "kernels/intersect.cl", "kernels/function.cl", "kernels/pattern_tables.cl", "kernels/pattern_fractal.cl", "kernels/pattern.cl" };
+static const char *const kernel_files[] = { "kernels/shared.h", "kernels/intersect.cl", "kernels/function.cl", "kernels/scene.cl",
+                                            "kernels/pattern_tables.cl", "kernels/pattern_fractal.cl", "kernels/pattern.cl" };
 
 static void fill_pattern(const struct pcase *c, dev_pattern *pt, dev_warp *warps)
 {
