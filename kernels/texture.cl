@@ -13,6 +13,7 @@ typedef struct {
 	float3 ng, ns;     /* geometric and shading normals, turned to face the ray (the
 	                    * shading one before its normal pattern's tilt) */
 	float3 n0;         /* the shading normal before any normal pattern's tilt */
+	float2 uv;         /* the surface's uv (shape_uv), where a pattern is uv_mapped (SCENE_UV) */
 	float3 d;          /* the ray's direction */
 	float t;           /* its distance along the ray */
 	float eps;         /* how far rays leaving the surface start off it */
@@ -30,7 +31,7 @@ typedef struct {
 	float filter, transmit;
 } pigment_colour;
 
-float3 texture_normal(const scene_data *sc, int normal, float3 x, float3 n);
+float3 texture_normal(const scene_data *sc, int normal, float3 x, float2 uv, float3 n);
 
 inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float3 o, float3 d)
 {
@@ -38,6 +39,8 @@ inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float
 	sp.x = o + hit.t * d;
 	intersect_surface s = intersect_surface_at(sc->prims, sc->normals, hit.prim, hit.inst, hit.flip, sp.x);
 	sp.object_x = s.object_x;
+	sp.uv = sc->p->scene_flags & SCENE_UV ? shape_uv(sc->prims, sc->normals, hit.prim, hit.inst, s.object_x, sp.x)
+	                                      : (float2)(0.0f);
 	sp.entering = dot(s.ng, d) < 0.0f;
 	/* surfaces are two-sided, as in POV-Ray: both normals turn to face the ray */
 	sp.ng = sp.entering ? s.ng : -s.ng;
@@ -60,7 +63,7 @@ inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float
 	/* the normal's pattern tilts the shading normal (a mesh's own textures'
 	 * normals are not applied yet: lower_texture.c says so) */
 	if (sp.m->normal >= 0 && !(sp.m->flags & (MATERIAL_LOCAL | MATERIAL_TEXTURE_MAP)))
-		sp.ns = texture_normal(sc, sp.m->normal, sp.x, sp.ns);
+		sp.ns = texture_normal(sc, sp.m->normal, sp.x, sp.uv, sp.ns);
 	return sp;
 }
 
@@ -72,7 +75,14 @@ inline void texture_use(const scene_data *sc, shading_point *sp, int material)
 	sp->m = &sc->materials[material];
 	sp->ns = sp->n0;
 	if (sp->m->normal >= 0 && !(sp->m->flags & MATERIAL_LOCAL))
-		sp->ns = texture_normal(sc, sp->m->normal, sp->x, sp->ns);
+		sp->ns = texture_normal(sc, sp->m->normal, sp->x, sp->uv, sp->ns);
+}
+
+/* The point a pattern's rows map: p, or the surface's <u, v, 0> for a
+ * uv_mapped one. */
+inline float3 texture_at(global const dev_pattern *pt, float3 p, float2 uv)
+{
+	return pt->flags & PATTERN_UV ? (float3)(uv, 0.0f) : p;
 }
 
 /* A point of world space (or of the mesh's, for a mesh's own textures) in a
@@ -119,23 +129,23 @@ inline float texture_map_weights(global const dev_map_entry *e, int n)
  * (average) by every entry: POV-Ray's Perturb_Normal and Do_Average_Normals,
  * one level deep; each entry's normal is placed by every transformation around
  * it, as nested pigments are. */
-float3 texture_normal(const scene_data *sc, int normal, float3 x, float3 n)
+float3 texture_normal(const scene_data *sc, int normal, float3 x, float2 uv, float3 n)
 {
 	global const dev_pattern *pt = &sc->patterns[normal];
 	if (!(pt->flags & PATTERN_NORMAL_MAP))
-		return pattern_perturb(pt, sc->warps, sc->maps, x, n);
+		return pattern_perturb(pt, sc->warps, sc->maps, texture_at(pt, x, uv), n);
 	global const dev_map_entry *e = sc->maps + pt->map_first;
 	float3 sum = (float3)(0.0f);
 	if (pt->kind == PATTERN_AVERAGE) {
 		float total = texture_map_weights(e, pt->map_count);
 		for (int i = 0; i < pt->map_count; i++) {
-			float3 ni = e[i].pigment >= 0 ? pattern_perturb(&sc->patterns[e[i].pigment], sc->warps, sc->maps, x, n)
-			                              : n;
+			global const dev_pattern *c = &sc->patterns[max(e[i].pigment, 0)];
+			float3 ni = e[i].pigment >= 0 ? pattern_perturb(c, sc->warps, sc->maps, texture_at(c, x, uv), n) : n;
 			sum += e[i].value / total * ni;
 		}
 		return length(sum) > 0.0f ? normalize(sum) : n;
 	}
-	float v = pattern_value(pt, sc->warps, texture_pattern_point(pt, x), n, -n);
+	float v = pattern_value(pt, sc->warps, texture_pattern_point(pt, texture_at(pt, x, uv)), n, -n);
 	int b;
 	float f;
 	int a = texture_map_search(e, pt->map_count, v, &b, &f);
@@ -145,7 +155,8 @@ float3 texture_normal(const scene_data *sc, int normal, float3 x, float3 n)
 		if (wt[k] <= 0.0f)
 			continue;
 		int child = e[idx[k]].pigment;
-		sum += wt[k] * (child >= 0 ? pattern_perturb(&sc->patterns[child], sc->warps, sc->maps, x, n) : n);
+		global const dev_pattern *c = &sc->patterns[max(child, 0)];
+		sum += wt[k] * (child >= 0 ? pattern_perturb(c, sc->warps, sc->maps, texture_at(c, x, uv), n) : n);
 	}
 	return length(sum) > 0.0f ? normalize(sum) : n;
 }
@@ -296,7 +307,7 @@ inline pigment_colour texture_pigment(const scene_data *sc, const shading_point 
 			continue;
 		}
 		if (pt->kind != PATTERN_SOLID) {
-			float3 q = texture_pattern_point(pt, p);
+			float3 q = texture_pattern_point(pt, texture_at(pt, p, sp->uv));
 			if (pt->kind == PATTERN_IMAGE_MAP) {   /* a colour of its own, no map */
 				pigment_colour c = texture_image(sc, pt, pattern_warp_point(pt, sc->warps, q));
 				sum += w * (float4)(c.rgb, c.filter);
@@ -375,7 +386,7 @@ inline texture_blend texture_blend_at(const scene_data *sc, const shading_point 
 			}
 			continue;
 		}
-		float3 q = texture_pattern_point(pt, m->flags & MATERIAL_LOCAL ? sp->object_x : sp->x);
+		float3 q = texture_pattern_point(pt, texture_at(pt, m->flags & MATERIAL_LOCAL ? sp->object_x : sp->x, sp->uv));
 		float v = pattern_value(pt, sc->warps, q, sp->n0, sp->d);
 		int c;
 		float f;
@@ -487,6 +498,7 @@ inline float3 texture_sky(const scene_data *sc, float3 d, bool alpha_ray)
 	float3 col = (float3)(0.0f), through = (float3)(1.0f);
 	shading_point sp;
 	sp.x = sp.object_x = d;
+	sp.uv = (float2)(0.0f);
 	sp.ng = sp.ns = -d;
 	sp.d = d;
 	/* POV-Ray 3.6's: a layer's opacity scaled by the filters and transmits
@@ -526,6 +538,7 @@ inline float texture_sky_transm(const scene_data *sc, float3 d)
 	float3 through = (float3)(1.0f);
 	shading_point sp;
 	sp.x = sp.object_x = d;
+	sp.uv = (float2)(0.0f);
 	sp.ng = sp.ns = -d;
 	sp.d = d;
 	for (int i = p->sky + p->sky_layers - 1; p->sky >= 0 && i >= p->sky; i--) {

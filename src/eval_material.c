@@ -64,6 +64,8 @@ void eval_apply_value(const value *v, scene_material *m)
 		m->normal = v->mat.normal;
 		m->texture_map = v->mat.texture_map;
 		m->layers = v->mat.layers;
+		m->uv = v->mat.uv;
+		m->uv_xf = v->mat.uv_xf;
 		break;
 	case V_NORMAL: m->normal = v->mat.normal; break;
 	case V_INTERIOR: copy_interior(m, &v->mat); break;
@@ -384,18 +386,10 @@ static bool is_pattern(const ast_node *item)
 	}
 }
 
-/* uv_mapping, which eclat does not have: the pattern stays in 3D space. */
-void eval_uv_mapping_warning(struct eval *e, const ast_node *item)
-{
-	eval_warn_once(e, item->loc, "uv_mapping", "'uv_mapping' is not supported yet; the texture is mapped "
-	               "in space as if it were not there");
-}
-
 /* Items that shape a pattern: nothing to eclat, which averages it. */
 static bool is_pattern_modifier(struct eval *e, const ast_node *item)
 {
-	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING)
-		eval_uv_mapping_warning(e, item);
+	(void)e;
 	if (item->kind == AST_ARG)
 		switch (item->kw) {
 		case KW_TURBULENCE: case KW_OCTAVES: case KW_OMEGA: case KW_LAMBDA: case KW_FREQUENCY:
@@ -436,7 +430,16 @@ struct pattern {
 	int map_pigment;         /* the map's entries (map_pigment), or -1 */
 	scene_material map_mat;  /* a texture_map's finish */
 	bool map_finish;         /* the map is a texture_map */
+	bool uv;                 /* uv_mapping was written */
 };
+
+/* Whether item is uv_mapping; the scene learns that it has some. */
+static bool is_uv_mapping(struct eval *e, const ast_node *item)
+{
+	bool uv = item->kind == AST_FLAG && item->kw == KW_UV_MAPPING;
+	e->s->uv_mapped |= uv;
+	return uv;
+}
 
 /* The map of the pigment being made: its map's, its list's, the inherited
  * pigment's, or POV-Ray's default. */
@@ -473,6 +476,7 @@ static void pattern_result(struct eval *e, struct pattern *p, double c[5], int *
 	if (p->kind > 0) {
 		if (!(p->inherited && !p->has_map && !p->n_list))
 			pattern_map(e, p);
+		p->pg.uv |= p->uv;
 		*pigment = scene_add_pigment(e->s, &p->pg);
 		p->pg.map = NULL;
 	}
@@ -506,7 +510,7 @@ static void pattern_result(struct eval *e, struct pattern *p, double c[5], int *
 static void start_pattern(struct pattern *p, const ast_node *item, const char *name)
 {
 	free(p->pg.map);
-	*p = (struct pattern){ .at = item, .kind = eval_pattern_kind(name), .map_pigment = -1 };
+	*p = (struct pattern){ .at = item, .kind = eval_pattern_kind(name), .map_pigment = -1, .uv = p->uv };
 	snprintf(p->name, sizeof p->name, "%s", name);
 	eval_pattern_defaults(&p->pg, p->kind > 0 ? p->kind : PATTERN_SOLID, item->loc);
 }
@@ -639,6 +643,10 @@ static int pigment_value(struct eval *e, const ast_node *item, struct pattern *p
 static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p,
                         scene_material *m)
 {
+	if (is_uv_mapping(e, item)) {   /* POV-Ray's UV_MAP_PATTERN around the rest of the pigment */
+		p->uv = true;
+		return 0;
+	}
 	int rc = pattern_start(e, c, item, p);
 	if (rc <= 0)
 		return rc;
@@ -1053,6 +1061,10 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 {
 	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_TILES) == 0)
 		return tiles(e, item, p, m);
+	if (is_uv_mapping(e, item)) {   /* the rest of the texture at <u, v, 0> */
+		m->uv = SCENE_UV_TEXTURE;
+		return 0;
+	}
 	value v;
 	int skip = pattern_word(e, c, item, p);
 	if (skip <= 0)
@@ -1148,6 +1160,8 @@ static int texture_block(struct eval *e, const ast_node *b, scene_material *m)
 	}
 	if (p.at)
 		texture_pattern(e, &p, m);
+	if (m->uv == SCENE_UV_TEXTURE)   /* transformations after the texture do not move it */
+		m->uv_xf = m->tex_xf;
 	free(p.pg.map);
 	return 0;
 }
@@ -1194,8 +1208,8 @@ static int normal_item(struct eval *e, struct cursor *c, const ast_node *item, s
 	scene_pigment *pg = &p->pg;
 	const char *w = item->kind == AST_IDENT && !eval_lookup(e, item->str) ? item->str : NULL;
 	int err = 0;
-	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING) {
-		eval_uv_mapping_warning(e, item);
+	if (is_uv_mapping(e, item)) {
+		p->uv = true;
 		return 0;
 	}
 	if (eval_pattern_is_fractal(pg->kind) && pg->params[0][0] == 0)   /* mandel 50 [Amount]: its arguments first */
@@ -1352,6 +1366,10 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
 		value v;
+		if (is_uv_mapping(e, item)) {   /* a declared normal may follow it */
+			p.uv = true;
+			continue;
+		}
 		if (first && AST_IS_EXPRESSION(item->kind) && !eval_pov_word_item(e, item) &&
 		    (item->kind != AST_IDENT || eval_lookup(e, item->str))) {   /* a declared normal */
 			if ((rc = eval_expect_kind(e, item, V_NORMAL, &v)) == 0 && v.mat.normal >= 0) {
@@ -1409,6 +1427,7 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		p.kind = -1;
 	if (p.at && p.kind < 0 && p.name[0])
 		eval_warn_once(e, p.at->loc, p.name, "pattern '%s' is not supported yet in a normal; ignored", p.name);
+	p.pg.uv |= p.uv;
 	if (p.at && p.kind > 0)
 		m->normal = scene_add_pigment(e->s, &p.pg);
 	else

@@ -681,6 +681,8 @@ static void dump_pigment(FILE *out, const scene *s, int index, const scene_pigme
 		num(out, params[i]);
 	}
 	fprintf(out, " wave %d noise_generator %d", pg->wave, scene_noise_generator(s, pg));
+	if (pg->uv)
+		fputs(" uv_mapping", out);
 	if (pg->bump_size != 0 || pg->accuracy != 0) {
 		fnum(out, "bump_size", pg->bump_size);
 		fnum(out, "accuracy", pg->accuracy);
