@@ -213,6 +213,9 @@ enum {                       /* ORDER: the names in src/eval_pattern.c */
 	PATTERN_AVERAGE,     /* no value: every map entry, weighted by its value (texture.cl) */
 	PATTERN_SLOPE,       /* of the shading normal, and of the altitude (pattern.cl) */
 	PATTERN_MANDEL, PATTERN_JULIA, PATTERN_MAGNET,   /* kernels/pattern_fractal.cl */
+	PATTERN_IMAGE_PATTERN,   /* an image's grey (or alpha) as the value: image.cl */
+	PATTERN_BUMP_MAP,    /* a normal only, from an image's greys: image.cl */
+	PATTERN_MATERIAL_MAP,   /* a texture's: an image's material numbers pick textures: image.cl */
 	PATTERN_COUNT
 };
 /* POV-Ray's wave types, applied to a continuous pattern's value. */
@@ -279,6 +282,12 @@ typedef struct {
  *              1 spherical, 2 cylindrical, 5 torus), z interpolate (0 none,
  *              2 bilinear, 4 normalized distance), w 1 for once;
  *              params[1].x filter all, y transmit all; no map
+ *   image_pattern, bump_map: params[0] as image_map's; image_pattern's
+ *              params[1].x 1 for use_alpha, y 1 when the image has an alpha
+ *              channel; bump_map's bump_size its amount
+ *   material_map: params[0] as image_map's, the image's texels' x its
+ *              material numbers (lower_texture.c); its map, the textures at
+ *              0, 1, 2...
  *   function:  params[0].x the scene's function (scene.functions)
  *   slope:     params[0].xyz the slope's unit direction, params[1].xyz the
  *              altitude's, each times its share of their summed lengths;

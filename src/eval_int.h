@@ -276,6 +276,13 @@ int eval_pattern_slope(struct eval *e, struct cursor *c, const ast_node *item, s
  * scene's images once per file and gamma, its options and a one-entry map of
  * its average colour. -1 after an error. */
 int eval_image_map(struct eval *e, const ast_node *b, scene_pigment *pg);
+int eval_image_pattern(struct eval *e, const ast_node *b, scene_pigment *pg);
+int eval_bump_map(struct eval *e, const ast_node *b, scene_pigment *pg);
+/* material_map { IMAGE... TEXTURE... }: the image into pg; texture is called
+ * with ctx for each item that is no image item (0: taken, 1: not valid, -1:
+ * an error reported). */
+int eval_material_map(struct eval *e, const ast_node *b, scene_pigment *pg,
+                      int (*texture)(struct eval *, const ast_node *, void *), void *ctx);
 
 /* ---- #fopen, #read, #write, #fclose (eval_fileio.c) ---- */
 void eval_file_io(struct eval *e, const ast_node *d);

@@ -595,6 +595,88 @@ static int pattern_word(struct eval *e, struct cursor *c, const ast_node *item, 
 	return err ? -1 : 0;
 }
 
+/* image_pattern { ... }, which starts the pattern; 1 when item is not one. */
+static int image_pattern_block(struct eval *e, const ast_node *item, struct pattern *p)
+{
+	if (item->kind != AST_BLOCK || item->kw != KW_UNKNOWN || strcmp(item->str, AST_WORD_IMAGE_PATTERN) != 0)
+		return 1;
+	start_pattern(p, item, AST_WORD_IMAGE_PATTERN);
+	return eval_image_pattern(e, item, &p->pg) ? -1 : 0;
+}
+
+/* A material_map's textures, as its map: entry i, the texture for material
+ * number i. */
+struct material_list {
+	scene_map_entry *map;
+	int n;
+	scene_material first;
+};
+
+static int material_map_texture(struct eval *e, const ast_node *item, void *ctx)
+{
+	struct material_list *l = ctx;
+	if (item->kind != AST_BLOCK || item->kw != KW_TEXTURE)
+		return 1;
+	value v;
+	if (eval_material_value(e, item, &v))
+		return -1;
+	if (l->n == 0)
+		l->first = v.mat;
+	l->map = eval_xrealloc(l->map, (l->n + 1) * sizeof *l->map);
+	l->map[l->n] = (scene_map_entry){ .value = l->n, .pigment = -1, .texture = scene_add_texture(e->s, &v.mat) };
+	for (int k = 0; k < 5; k++)
+		l->map[l->n].colour[k] = v.mat.pigment[k];
+	l->n++;
+	eval_value_free(&v);
+	return 0;
+}
+
+/* material_map { [FORMAT] "File" [map_type N] [interpolate N] [once]
+ * TEXTURE... }: a pattern of whole textures whose value is the image's
+ * material number; 1 when item is not one. */
+static int material_map_block(struct eval *e, const ast_node *item, struct pattern *p)
+{
+	if (item->kind != AST_BLOCK || item->kw != KW_UNKNOWN || strcmp(item->str, AST_WORD_MATERIAL_MAP) != 0)
+		return 1;
+	start_pattern(p, item, AST_WORD_MATERIAL_MAP);
+	struct material_list l = { 0 };
+	if (eval_material_map(e, item, &p->pg, material_map_texture, &l)) {
+		free(l.map);
+		return -1;
+	}
+	if (l.n == 0) {
+		eval_error(e, item->loc, "a material_map needs a texture");
+		return -1;
+	}
+	scene_pigment holder = p->pg;   /* the map, as a texture_map's */
+	holder.map = l.map;
+	holder.n_map = l.n;
+	p->map_pigment = scene_add_pigment(e->s, &holder);
+	p->has_map = p->map_finish = true;
+	p->map_mat = l.first;
+	for (int k = 0; k < 5; k++) {
+		double sum = 0;
+		for (int i = 0; i < l.n; i++)
+			sum += l.map[i].colour[k];
+		p->map[k] = sum / l.n;
+	}
+	return 0;
+}
+
+/* bump_map outside a normal, material_map outside a texture: POV-Ray's
+ * error (where is what item may stand in); 1 when item is neither. */
+static int misplaced_image(struct eval *e, const ast_node *item, const char *where)
+{
+	if (item->kind != AST_BLOCK || item->kw != KW_UNKNOWN)
+		return 1;
+	bool bump = strcmp(item->str, AST_WORD_BUMP_MAP) == 0, mat = strcmp(item->str, AST_WORD_MATERIAL_MAP) == 0;
+	if ((!bump || strcmp(where, "a normal") == 0) && (!mat || strcmp(where, "a texture") == 0))
+		return 1;
+	eval_error(e, item->loc, "%s is only allowed in %s, not in %s", item->str, bump ? "a normal" : "a texture",
+	           where);
+	return -1;
+}
+
 /* ---- pigment ---- */
 
 /* An expression in a pigment: a colour or a declared pigment, or a colour of the
@@ -683,6 +765,8 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 		return -1;   /* a pigment's transformations move its pattern only */
 	if (rc != 0 || is_pattern_modifier(e, item))
 		return rc < 0 ? -1 : 0;
+	if ((rc = image_pattern_block(e, item, p)) <= 0 || (rc = misplaced_image(e, item, "a pigment")) <= 0)
+		return rc;
 	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_IMAGE_MAP) == 0) {
 		start_pattern(p, item, AST_WORD_IMAGE_MAP);
 		if (eval_image_map(e, item, &p->pg))
@@ -1081,6 +1165,9 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 		return eval_material_block(e, item, m);
 	if (p->at && p->kind > 0 && (skip = eval_pattern_modifier(e, c, item, &p->pg)) <= 0)
 		return skip;
+	if ((skip = image_pattern_block(e, item, p)) <= 0 || (skip = material_map_block(e, item, p)) <= 0 ||
+	    (skip = misplaced_image(e, item, "a texture")) <= 0)
+		return skip;
 	if ((item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str) &&
 	     strcmp(eval_pov_word(item->str), "other") != 0) || (item->kind == AST_BLOCK && item->kw == KW_OBJECT)) {
 		start_pattern(p, item, item->kw == KW_OBJECT ? "object" : item->str);   /* slope { }, object { } */
@@ -1370,6 +1457,15 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 			p.uv = true;
 			continue;
 		}
+		if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_BUMP_MAP) == 0) {
+			start_pattern(&p, item, AST_WORD_BUMP_MAP);
+			p.pg.bump_size = 0.5;   /* its bump_size, or the amount after it, may change it */
+			p.pg.accuracy = 0.02;
+			amount = false;
+			rc = eval_bump_map(e, item, &p.pg);
+			first = false;
+			continue;
+		}
 		if (first && AST_IS_EXPRESSION(item->kind) && !eval_pov_word_item(e, item) &&
 		    (item->kind != AST_IDENT || eval_lookup(e, item->str))) {   /* a declared normal */
 			if ((rc = eval_expect_kind(e, item, V_NORMAL, &v)) == 0 && v.mat.normal >= 0) {
@@ -1393,6 +1489,12 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		} else if (p.at && p.kind > 0 && item->kind == AST_BLOCK && item->kw == KW_UNKNOWN &&
 		           strcmp(item->str, AST_WORD_SLOPE_MAP) == 0) {
 			rc = slope_map(e, item, &p.pg);
+		} else if ((rc = misplaced_image(e, item, "a normal")) <= 0) {
+			;
+		} else if ((rc = image_pattern_block(e, item, &p)) <= 0) {
+			amount = false;
+			p.pg.bump_size = 0.5;
+			p.pg.accuracy = 0.02;
 		} else if ((rc = pattern_word(e, &c, item, &p)) <= 0) {
 			;   /* a pattern eclat does not have (warned below), or another POV-Ray word (warned) */
 		} else if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {

@@ -108,7 +108,7 @@ static void lower_images(lower_textures *lt, const scene *s)
 			for (int j = 0; j < 3 && transcode; j++) {
 				float v = im->premultiplied && a > 0 ? rgb[j] / a : rgb[j];
 				v = decode(im, v);
-				if (g > 0 && g != 1)
+				if (g > 0 && g != 1 && !im->data)
 					v = v > 0 ? powf(v, 1 / g) : v;
 				rgb[j] = im->premultiplied && a > 0 ? v * a : v;
 			}
@@ -206,6 +206,8 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 		if (!sf && (e->colour[3] != 0 || e->colour[4] != 0))
 			lt->see_through = 1;
 	}
+	if (pg->kind == PATTERN_IMAGE_PATTERN || pg->kind == PATTERN_BUMP_MAP || pg->kind == PATTERN_MATERIAL_MAP)
+		lower_images(lt, s);
 	if (pg->kind == PATTERN_IMAGE_MAP) {
 		/* its one map entry is its average; texture_image reads the image */
 		lower_images(lt, s);

@@ -627,7 +627,8 @@ static const char *const pattern_names[] = {
 	"planar", "quilted", "radial", "ripples", "spherical", "spiral1", "spiral2", "spotted", "square",
 	"triangular", "waves", "wood", "wrinkles", "image_map", "function",
 	"average", "slope",
-	"mandel", "julia", "magnet",
+	"mandel", "julia", "magnet", "image_pattern", "bump_map",
+	"material_map",
 };
 _Static_assert(sizeof pattern_names / sizeof *pattern_names == PATTERN_COUNT, "a name for each pattern");
 

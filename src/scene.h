@@ -84,6 +84,9 @@ typedef struct {
 	float gamma;             /* SCENE_DECODE_POWER's */
 	bool gamma_given;        /* gamma written: decoded even with gamma correction off */
 	bool premultiplied;      /* rgb is multiplied by alpha */
+	bool data;               /* a bump_map's, image_pattern's or material_map's: decoded
+	                          * only by a gamma written, never into the working gamma
+	                          * (POV-Ray's); a material_map's red is its material numbers */
 	float average[4];        /* rgb and alpha, as the file has them */
 	src_loc loc;
 } scene_image;
