@@ -32,8 +32,8 @@ real function_pattern(const scene_data *sc, int root, real x, real y, real z)
  * transmit, or (5) its grey, POV-Ray's weights of the channels. */
 real function_pigment(const scene_data *sc, int root, int channel, real x, real y, real z)
 {
-	pigment_colour c = function_pigment_tree(sc, root, (float3)((float)x, (float)y, (float)z), FUNCTION_NO_NORMAL,
-	                                         -FUNCTION_NO_NORMAL);
+	pigment_colour c = function_pigment_tree(sc, root, (float3)((float)x, (float)y, (float)z), (float2)(0.0f),
+	                                         FUNCTION_NO_NORMAL, -FUNCTION_NO_NORMAL);
 	switch (channel) {
 	case 0: return (real)c.rgb.x;
 	case 1: return (real)c.rgb.y;

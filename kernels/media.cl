@@ -81,6 +81,7 @@ inline float3 media_density(const scene_data *sc, global const dev_media *md, fl
 	for (int k = 0; k < MEDIA_DENSITIES && md->density[k] >= 0; k++) {
 		shading_point sp;
 		sp.x = sp.object_x = x;
+		sp.uv = (float2)(0.0f);   /* a density has no surface */
 		sp.ns = sp.ng = sp.n0 = (float3)(0.0f, 1.0f, 0.0f);
 		sp.d = (float3)(0.0f, 0.0f, 1.0f);
 		sp.m = &sc->materials[md->density[k]];

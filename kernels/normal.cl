@@ -9,9 +9,10 @@
  * at four points of a pyramid around the warped point, `accuracy` away, with
  * frequency, phase and wave type applied, through the slope_map if any.
  * normal_map and the other normals of normals are texture.cl's texture_normal.
- * Left out: bump_map, uv_mapping.
+ * A bump_map reads its image: texture.cl's texture_perturb, with
+ * normal_warp_in and normal_warp_out around image.cl's image_bump.
  *
- * Exported: pattern_perturb. */
+ * Exported: pattern_perturb, normal_warp_in, normal_warp_out. */
 
 /* POV-Ray's pyramid: four unit vectors that sum to zero. */
 constant float4 normal_pyramid[4] = {
@@ -98,6 +99,35 @@ inline float3 normal_facets(float4 prm, float3 p, float3 v)
 	return v + coords * pert;
 }
 
+/* POV-Ray's Warp_Normal: the world-space normal n into pt's space, through
+ * every transformation in the warps' order, the pattern's own (rows) first;
+ * unit length unless no_bump_scale. */
+float3 normal_warp_in(global const dev_pattern *pt, global const dev_warp *warps, float3 n)
+{
+	int scale_bumps = !(pt->flags & PATTERN_NO_BUMP_SCALE);
+	float3 v = scale_bumps ? normalize(n) : n;
+	v = normal_into(pt->rows[0], pt->rows[1], pt->rows[2], v);
+	for (int i = 0; i < pt->warp_count; i++) {
+		global const dev_warp *w = &warps[pt->warp_first + i];
+		if (w->kind == WARP_TRANSFORM)
+			v = normal_into(w->a, w->b, w->c, v);
+	}
+	return scale_bumps ? normalize(v) : v;
+}
+
+/* POV-Ray's UnWarp_Normal: back through the transformations in reverse
+ * order, to a unit normal in world space. */
+float3 normal_warp_out(global const dev_pattern *pt, global const dev_warp *warps, float3 v)
+{
+	for (int i = pt->warp_count - 1; i >= 0; i--) {
+		global const dev_warp *w = &warps[pt->warp_first + i];
+		if (w->kind == WARP_TRANSFORM)
+			v = normal_out_of(w->a, w->b, w->c, v);
+	}
+	v = normal_out_of(pt->rows[0], pt->rows[1], pt->rows[2], v);
+	return normalize(v);
+}
+
 /* The normal n (unit, world space, facing the ray) perturbed at p (world
  * space) by the normal pattern pt, with its warps and its slope_map (maps,
  * from pt->map_first): the unit perturbed normal in world space. */
@@ -111,20 +141,8 @@ float3 pattern_perturb(const scene_data *sc, global const dev_pattern *pt, float
 		                        * normals: texture_normal, one level deep */
 	float4 r0 = pt->rows[0], r1 = pt->rows[1], r2 = pt->rows[2];
 	float3 q = (float3)(dot(r0.xyz, p) + r0.w, dot(r1.xyz, p) + r1.w, dot(r2.xyz, p) + r2.w);
-	int scale_bumps = !(pt->flags & PATTERN_NO_BUMP_SCALE);
 	float amount = pt->bump_size;
-
-	/* Warp_Normal: through every transformation in the warps' order, the
-	 * pattern's own (rows) first. */
-	float3 v = scale_bumps ? normalize(n) : n;
-	v = normal_into(r0, r1, r2, v);
-	for (int i = 0; i < pt->warp_count; i++) {
-		global const dev_warp *w = &warps[pt->warp_first + i];
-		if (w->kind == WARP_TRANSFORM)
-			v = normal_into(w->a, w->b, w->c, v);
-	}
-	if (scale_bumps)
-		v = normalize(v);
+	float3 v = normal_warp_in(pt, warps, n);
 
 	float3 t = pattern_warp_point(pt, warps, q);
 	int generator = pt->noise_generator;
@@ -192,12 +210,5 @@ float3 pattern_perturb(const scene_data *sc, global const dev_pattern *pt, float
 	}
 	}
 
-	/* UnWarp_Normal: back through the transformations in reverse order. */
-	for (int i = pt->warp_count - 1; i >= 0; i--) {
-		global const dev_warp *w = &warps[pt->warp_first + i];
-		if (w->kind == WARP_TRANSFORM)
-			v = normal_out_of(w->a, w->b, w->c, v);
-	}
-	v = normal_out_of(r0, r1, r2, v);
-	return normalize(v);
+	return normal_warp_out(pt, warps, v);
 }

@@ -34,6 +34,29 @@ inline bool shape_inside(global const dev_prim *prims, global const dev_prim *p,
 	}
 }
 
+/* POV-Ray's uv at a hit x (lx: in the primitive's space, a mesh's for its
+ * triangles), for uv_mapping: the shapes that define one (a mesh's triangles,
+ * not a lone triangle); every other shape gives x's own x and y, as POV-Ray's
+ * default UVCoord does. */
+inline float2 shape_uv(global const dev_prim *prims, global const float4 *normals, int prim, int inst, float3 lx,
+                       float3 x)
+{
+	global const dev_prim *p = &prims[prim];
+	if (inst >= 0 && (p->type == PRIM_TRIANGLE || p->type == PRIM_SMOOTH_TRIANGLE))   /* a mesh's */
+		return triangle_uv(p, normals + 3 * p->link, lx);
+	switch (p->type) {
+	case PRIM_SPHERE: return sphere_uv(prims, p, lx);
+	case PRIM_ELLIPSOID: return ellipsoid_uv(prims, p, lx);
+	case PRIM_BOX: return box_uv(prims, p, lx);
+	case PRIM_TORUS: return torus_uv(prims, p, lx);
+	case PRIM_SOR:
+		if (!as_int(sor_rec(prims, p, 1).x))   /* a lathe keeps the default */
+			return sor_uv(prims, p, lx);
+		return x.xy;
+	default: return x.xy;
+	}
+}
+
 /* The surface at a hit: normals in world space (geometric, and shading, which
  * smooth triangles interpolate), and the material and object, which a mesh's
  * triangle may take from its instance. */

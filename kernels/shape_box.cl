@@ -32,6 +32,22 @@ inline float3 box_normal(global const dev_prim *prims, global const dev_prim *p,
 	return intersect_normal_to_world(p, n);
 }
 
+/* POV-Ray's uv: the six faces unfolded as a cross, a quarter of u and a third
+ * of v each, none mirrored seen from outside; the point from the box's
+ * corner at its least x, y, z, a fraction of each side. */
+inline float2 box_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	float3 q = box_local(prims, p, x), a = fabs(q), f = 0.5f * (q + 1.0f);
+	if (a.x >= a.y && a.x >= a.z)
+		return q.x < 0.0f ? (float2)(f.z / 4.0f, (1.0f + f.y) / 3.0f)
+		                  : (float2)(0.75f - f.z / 4.0f, (1.0f + f.y) / 3.0f);
+	if (a.y >= a.z)
+		return q.y < 0.0f ? (float2)(0.25f + f.x / 4.0f, f.z / 3.0f)
+		                  : (float2)(0.25f + f.x / 4.0f, 1.0f - f.z / 3.0f);
+	return q.z < 0.0f ? (float2)(1.0f - f.x / 4.0f, (1.0f + f.y) / 3.0f)
+	                  : (float2)(0.25f + f.x / 4.0f, (1.0f + f.y) / 3.0f);
+}
+
 inline bool box_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 a = fabs(box_local(prims, p, x));

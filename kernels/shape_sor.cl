@@ -175,6 +175,39 @@ inline float3 sor_normal(global const dev_prim *prims, global const dev_prim *p,
 	return intersect_normal_to_world(p, nb);
 }
 
+/* A sor's uv, POV-Ray's: u the turn around y from +x toward +z; v on the
+ * curve of the piece nearest the point (as sor_normal finds it), its share of
+ * the pieces below it and of its own height; on the base disc its radius's
+ * share minus 1, on the cap 2 minus it. A lathe's (from its spline's
+ * parameter) is not kept: its point's x and y, shape.cl's default. */
+inline float2 sor_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	float3 q = intersect_to_local(p, x);
+	int n = as_int(sor_rec(prims, p, 0).w), curves = 0;
+	float r = sqrt(q.x * q.x + q.z * q.z), bestd = INFINITY, v = 0.0f;
+	for (int i = 0; i < n; i++)
+		curves += !(as_int(sor_rec(prims, p, 3 + 2 * i).w) & 1);
+	for (int i = 0; i < n; i++) {
+		float4 cf = sor_rec(prims, p, 2 + 2 * i), hh = sor_rec(prims, p, 3 + 2 * i);
+		float d, vi;
+		if (as_int(hh.w) & 1) {
+			float rl = sqrt(fmax(cf.x, 0.0f)), rh = sqrt(fmax(cf.y, 0.0f));
+			d = sqrt((q.y - hh.x) * (q.y - hh.x) + fmax(fmax(rl - r, r - rh), 0.0f) * fmax(fmax(rl - r, r - rh), 0.0f));
+			vi = hh.z < 0.0f ? r / rh - 1.0f : 2.0f - r / rh;
+		} else {
+			float y = clamp(q.y, hh.x, hh.y), u = y - hh.z;
+			float f = ((cf.x * u + cf.y) * u + cf.z) * u + cf.w;
+			d = fabs(sqrt(fmax(f, 0.0f)) - r) + fabs(q.y - y);
+			vi = ((q.y - hh.x) / (hh.y - hh.x) + (float)i) / (float)curves;
+		}
+		if (d < bestd) {
+			bestd = d;
+			v = vi;
+		}
+	}
+	return (float2)(sphere_uv_about((float3)(q.x, 0.0f, q.z)).x, v);
+}
+
 inline bool sor_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 q = intersect_to_local(p, x);

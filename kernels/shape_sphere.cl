@@ -23,6 +23,30 @@ inline float3 sphere_normal(global const dev_prim *prims, global const dev_prim 
 	return normalize(x - p->a.xyz);
 }
 
+/* POV-Ray's uv of a point q about a sphere's centre in its own space: u the
+ * turn from +x toward +z around y, v from the south pole (0) to the north (1). */
+inline float2 sphere_uv_about(float3 q)
+{
+	float len = length(q);
+	if (len == 0.0f)
+		return (float2)(0.0f);
+	q /= len;
+	float v = 0.5f + asin(clamp(q.y, -1.0f, 1.0f)) / M_PI_F, u = 0.0f;
+	float xz = q.x * q.x + q.z * q.z;
+	if (xz > 1e-10f) {   /* at the poles any u will do: POV-Ray's 0 */
+		float theta = q.z == 0.0f ? (q.x > 0.0f ? 0.0f : M_PI_F) : acos(clamp(q.x / sqrt(xz), -1.0f, 1.0f));
+		if (q.z < 0.0f)
+			theta = 2.0f * M_PI_F - theta;
+		u = theta / (2.0f * M_PI_F);
+	}
+	return (float2)(u, v);
+}
+
+inline float2 sphere_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	return sphere_uv_about(x - p->a.xyz);
+}
+
 inline bool sphere_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 v = x - p->a.xyz;
@@ -42,6 +66,12 @@ inline float ellipsoid_intersect(float3 o, float3 d, global const dev_prim *prim
 	float q = b > 0.0f ? -b - s : -b + s;   /* no cancellation (Numerical Recipes) */
 	float t0 = q / a, t1 = q != 0.0f ? (dot(oo, oo) - 1.0f) / q : t0;
 	return intersect_pick(fmin(t0, t1), fmax(t0, t1), tmin, tmax);
+}
+
+/* An ellipsoid's uv is its unit sphere's: the sphere's uv in its own space. */
+inline float2 ellipsoid_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	return sphere_uv_about(intersect_to_local(p, x));
 }
 
 inline float3 ellipsoid_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)

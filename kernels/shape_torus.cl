@@ -68,6 +68,17 @@ inline float3 torus_shading_normal(global const dev_prim *p, float3 x)
 	return intersect_normal_to_world(p, q - m);
 }
 
+/* POV-Ray's uv: u the turn around y (from -x, clockwise seen from +y), v the
+ * turn around the tube from its inner side; the angles do not depend on the
+ * radii, so the torus of major radius 1 gives them. */
+inline float2 torus_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
+{
+	float3 q = intersect_to_local(p, x);
+	float u = 1.0f - (atan2(q.z, q.x) + M_PI_F) / (2.0f * M_PI_F);
+	float r = sqrt(q.x * q.x + q.z * q.z) - 1.0f;
+	return (float2)(u, (atan2(q.y, r) + M_PI_F) / (2.0f * M_PI_F));
+}
+
 inline bool torus_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float k = intersect_data(prims, p).x;

@@ -90,6 +90,26 @@ inline bool smooth_triangle_inside(global const dev_prim *prims, global const de
 	return false;
 }
 
+/* x's barycentric weights in the triangle p: of b (x), of c (y). */
+inline float2 triangle_weights(global const dev_prim *p, float3 x)
+{
+	float3 e1 = p->b.xyz - p->a.xyz, e2 = p->c.xyz - p->a.xyz, w = x - p->a.xyz;
+	float d00 = dot(e1, e1), d01 = dot(e1, e2), d11 = dot(e2, e2);
+	float d20 = dot(w, e1), d21 = dot(w, e2), den = d00 * d11 - d01 * d01;
+	return den != 0.0f ? (float2)((d11 * d20 - d01 * d21) / den, (d00 * d21 - d01 * d20) / den) : (float2)(0.0f);
+}
+
+/* A mesh triangle's uv at x: its corners' uv (after its normals, when the
+ * first normal's w says they are there) interpolated as POV-Ray's
+ * Mesh::UVCoord does; a triangle without uv, <0, 0>, as POV-Ray's default. */
+inline float2 triangle_uv(global const dev_prim *p, global const float4 *n, float3 x)
+{
+	if (p->type != PRIM_SMOOTH_TRIANGLE || n[0].w != 1.0f)
+		return (float2)(0.0f);
+	float2 b = triangle_weights(p, x);
+	return (1.0f - b.x - b.y) * n[3].xy + b.x * n[4].xy + b.y * n[5].xy;
+}
+
 /* Barycentric interpolation of a smooth triangle's three normals at x. */
 inline float3 triangle_smooth_normal(global const dev_prim *p, global const float4 *n, float3 x)
 {

@@ -98,7 +98,10 @@ enum { PRISM_OPEN = 1, PRISM_FLAT = 2, PRISM_CONIC = 4 };
  * Triangle: a, b, c = its corners, as given: neighbours must see bit-identical
  *   shared corners for the watertight test;
  *   link: index into the emitter table when it emits (top level only), else -1.
- * Smooth triangle: as a triangle; link: its three normals in the normals buffer.
+ * Smooth triangle: as a triangle; link: its three normals in the normals buffer
+ *   (normals[3 * link ...]); when the first normal's w is 1, its corners' uv
+ *   follow as three more (xy), for uv_mapping (a mesh's triangles with uv are
+ *   all smooth: a flat one's normals are its face's).
  * Sphere: a.xyz = centre, a.w = radius; link as for a triangle.
  * Plane: a.xyz = unit normal, a.w = distance along it; planes are unbounded, so
  *   they sit after the top level's primitives and every ray tests them all.
@@ -218,6 +221,9 @@ enum {                       /* ORDER: the names in src/eval_pattern.c */
 	PATTERN_AVERAGE,     /* no value: every map entry, weighted by its value (texture.cl) */
 	PATTERN_SLOPE,       /* of the shading normal, and of the altitude (pattern.cl) */
 	PATTERN_MANDEL, PATTERN_JULIA, PATTERN_MAGNET,   /* kernels/pattern_fractal.cl */
+	PATTERN_IMAGE_PATTERN,   /* an image's grey (or alpha) as the value: image.cl */
+	PATTERN_BUMP_MAP,    /* a normal only, from an image's greys: image.cl */
+	PATTERN_MATERIAL_MAP,   /* a texture's: an image's material numbers pick textures: image.cl */
 	PATTERN_COUNT
 };
 /* POV-Ray's wave types, applied to a continuous pattern's value. */
@@ -284,6 +290,12 @@ typedef struct {
  *              1 spherical, 2 cylindrical, 5 torus), z interpolate (0 none,
  *              2 bilinear, 4 normalized distance), w 1 for once;
  *              params[1].x filter all, y transmit all; no map
+ *   image_pattern, bump_map: params[0] as image_map's; image_pattern's
+ *              params[1].x 1 for use_alpha, y 1 when the image has an alpha
+ *              channel; bump_map's bump_size its amount
+ *   material_map: params[0] as image_map's, the image's texels' x its
+ *              material numbers (lower_texture.c); its map, the textures at
+ *              0, 1, 2...
  *   function:  params[0].x the scene's function (scene.functions)
  *   slope:     params[0].xyz the slope's unit direction, params[1].xyz the
  *              altitude's, each times its share of their summed lengths;
@@ -307,8 +319,10 @@ typedef struct {
  * and after them).
  * PATTERN_NORMAL_MAP: a normal's map entries are normals (normal_map, checker
  * normal { } normal { }, average): an entry's pigment is its normal's
- * dev_pattern, or -1 for none (texture_normal). */
-enum { PATTERN_NO_BUMP_SCALE = 1, PATTERN_NORMAL_MAP = 2 };
+ * dev_pattern, or -1 for none (texture_normal).
+ * PATTERN_UV: uv_mapping: the point the rows map is the hit's <u, v, 0>
+ * (shape_uv), not its place in space. */
+enum { PATTERN_NO_BUMP_SCALE = 1, PATTERN_NORMAL_MAP = 2, PATTERN_UV = 4 };
 
 /* An entry of a pattern's map, 32 bytes: a colour, or a nested pigment (a
  * pigment_map, or checker pigment { } pigment { }) when pigment >= 0; in a
@@ -468,8 +482,9 @@ typedef struct {
  * transmit), so shadow rays look at what they meet instead of stopping at the first.
  * SCENE_SKY_LEGACY: the sky_sphere blends its layers as POV-Ray before 3.7 (a
  * scene whose #version is older).
- * SCENE_MEDIA: some interior has media, so shadow rays follow the interiors they cross. */
-enum { SCENE_SHADOWS_PASS = 1, SCENE_SKY_LEGACY = 2, SCENE_MEDIA = 4 };
+ * SCENE_MEDIA: some interior has media, so shadow rays follow the interiors they cross.
+ * SCENE_UV: some pattern is uv_mapped, so shading points find their uv. */
+enum { SCENE_SHADOWS_PASS = 1, SCENE_SKY_LEGACY = 2, SCENE_MEDIA = 4, SCENE_UV = 8 };
 
 /* The scene's buffers, read by every kernel that renders, in the kernels'
  * argument order (after them: params, film, counters, aov). One list for the

@@ -13,6 +13,7 @@ typedef struct {
 	float3 ng, ns;     /* geometric and shading normals, turned to face the ray (the
 	                    * shading one before its normal pattern's tilt) */
 	float3 n0;         /* the shading normal before any normal pattern's tilt */
+	float2 uv;         /* the surface's uv (shape_uv), where a pattern is uv_mapped (SCENE_UV) */
 	float3 d;          /* the ray's direction */
 	float t;           /* its distance along the ray */
 	float eps;         /* how far rays leaving the surface start off it */
@@ -30,7 +31,7 @@ typedef struct {
 	float filter, transmit;
 } pigment_colour;
 
-float3 texture_normal(const scene_data *sc, int normal, float3 x, float3 n);
+float3 texture_normal(const scene_data *sc, int normal, float3 x, float2 uv, float3 n);
 
 inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float3 o, float3 d)
 {
@@ -38,6 +39,8 @@ inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float
 	sp.x = o + hit.t * d;
 	intersect_surface s = intersect_surface_at(sc->prims, sc->normals, hit.prim, hit.inst, hit.flip, sp.x);
 	sp.object_x = s.object_x;
+	sp.uv = sc->p->scene_flags & SCENE_UV ? shape_uv(sc->prims, sc->normals, hit.prim, hit.inst, s.object_x, sp.x)
+	                                      : (float2)(0.0f);
 	sp.entering = dot(s.ng, d) < 0.0f;
 	/* surfaces are two-sided, as in POV-Ray: both normals turn to face the ray */
 	sp.ng = sp.entering ? s.ng : -s.ng;
@@ -60,7 +63,7 @@ inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float
 	/* the normal's pattern tilts the shading normal (a mesh's own textures'
 	 * normals are not applied yet: lower_texture.c says so) */
 	if (sp.m->normal >= 0 && !(sp.m->flags & (MATERIAL_LOCAL | MATERIAL_TEXTURE_MAP)))
-		sp.ns = texture_normal(sc, sp.m->normal, sp.x, sp.ns);
+		sp.ns = texture_normal(sc, sp.m->normal, sp.x, sp.uv, sp.ns);
 	return sp;
 }
 
@@ -72,7 +75,14 @@ inline void texture_use(const scene_data *sc, shading_point *sp, int material)
 	sp->m = &sc->materials[material];
 	sp->ns = sp->n0;
 	if (sp->m->normal >= 0 && !(sp->m->flags & MATERIAL_LOCAL))
-		sp->ns = texture_normal(sc, sp->m->normal, sp->x, sp->ns);
+		sp->ns = texture_normal(sc, sp->m->normal, sp->x, sp->uv, sp->ns);
+}
+
+/* The point a pattern's rows map: p, or the surface's <u, v, 0> for a
+ * uv_mapped one. */
+inline float3 texture_at(global const dev_pattern *pt, float3 p, float2 uv)
+{
+	return pt->flags & PATTERN_UV ? (float3)(uv, 0.0f) : p;
 }
 
 /* A point of world space (or of the mesh's, for a mesh's own textures) in a
@@ -81,6 +91,54 @@ inline float3 texture_pattern_point(global const dev_pattern *pt, float3 p)
 {
 	return (float3)(dot(pt->rows[0].xyz, p) + pt->rows[0].w, dot(pt->rows[1].xyz, p) + pt->rows[1].w,
 	                dot(pt->rows[2].xyz, p) + pt->rows[2].w);
+}
+
+/* An image_map pt at p (its space, warped): the texel or POV-Ray's
+ * interpolation of four (kernels/image.cl), then filter all and transmit all.
+ * Off a once image: clear (white, transmit 1). */
+inline pigment_colour texture_image(const scene_data *sc, global const dev_pattern *pt, float3 p)
+{
+	pigment_colour out = { (float3)(1.0f), 0.0f, 1.0f };
+	float x, y;
+	if (!image_pos(sc, pt, p, &x, &y))
+		return out;
+	float4 c = image_at(sc, pt, x, y);
+	out.rgb = c.xyz;
+	out.filter = pt->params[1].x;
+	out.transmit = 1.0f - c.w + pt->params[1].y;
+	return out;
+}
+
+/* A pattern's value at q (its space, before its warps): pattern_value, or an
+ * image_pattern's, which reads the image (frequency, phase and wave after it,
+ * as POV-Ray's Evaluate_TPat). */
+inline float texture_value(const scene_data *sc, global const dev_pattern *pt, float3 q, float3 n, float3 d)
+{
+	if (pt->kind == PATTERN_IMAGE_PATTERN)
+		return pattern_wave(pt, image_value(sc, pt, pattern_warp_point(pt, sc->warps, q)));
+	if (pt->kind == PATTERN_MATERIAL_MAP)   /* the number of a map entry */
+		return image_material(sc, pt, pattern_warp_point(pt, sc->warps, q));
+	return pattern_value(sc, pt, q, n, d);
+}
+
+/* pattern_perturb, or the tilt of a pattern that reads an image: a
+ * bump_map's, or an image_pattern's slope at POV-Ray's pyramid of points
+ * (pattern_perturb's for every pattern without a normal of its own). */
+inline float3 texture_perturb(const scene_data *sc, global const dev_pattern *pt, float3 x, float3 n)
+{
+	if (pt->kind != PATTERN_BUMP_MAP && pt->kind != PATTERN_IMAGE_PATTERN)
+		return pattern_perturb(sc, pt, x, n);
+	float3 v = normal_warp_in(pt, sc->warps, n);
+	float3 t = pattern_warp_point(pt, sc->warps, texture_pattern_point(pt, x));
+	if (pt->kind == PATTERN_BUMP_MAP)
+		return normal_warp_out(pt, sc->warps, image_bump(sc, pt, t, v));
+	float accuracy = pt->normal.x, k = pt->bump_size * -5.0f * (0.02f / accuracy);
+	for (int i = 0; i < 4; i++) {
+		float3 dir = normal_pyramid[i].xyz;
+		float val = pattern_wave(pt, image_value(sc, pt, t + accuracy * dir));
+		v += k * normal_slope_map(sc->maps + pt->map_first, pt->map_count, val) * dir;
+	}
+	return normal_warp_out(pt, sc->warps, v);
 }
 
 /* POV-Ray's blend map search: the entries around v, and how far v is from the
@@ -119,23 +177,23 @@ inline float texture_map_weights(global const dev_map_entry *e, int n)
  * (average) by every entry: POV-Ray's Perturb_Normal and Do_Average_Normals,
  * one level deep; each entry's normal is placed by every transformation around
  * it, as nested pigments are. */
-float3 texture_normal(const scene_data *sc, int normal, float3 x, float3 n)
+float3 texture_normal(const scene_data *sc, int normal, float3 x, float2 uv, float3 n)
 {
 	global const dev_pattern *pt = &sc->patterns[normal];
 	if (!(pt->flags & PATTERN_NORMAL_MAP))
-		return pattern_perturb(sc, pt, x, n);
+		return texture_perturb(sc, pt, texture_at(pt, x, uv), n);
 	global const dev_map_entry *e = sc->maps + pt->map_first;
 	float3 sum = (float3)(0.0f);
 	if (pt->kind == PATTERN_AVERAGE) {
 		float total = texture_map_weights(e, pt->map_count);
 		for (int i = 0; i < pt->map_count; i++) {
-			float3 ni = e[i].pigment >= 0 ? pattern_perturb(sc, &sc->patterns[e[i].pigment], x, n)
-			                              : n;
+			global const dev_pattern *c = &sc->patterns[max(e[i].pigment, 0)];
+			float3 ni = e[i].pigment >= 0 ? texture_perturb(sc, c, texture_at(c, x, uv), n) : n;
 			sum += e[i].value / total * ni;
 		}
 		return length(sum) > 0.0f ? normalize(sum) : n;
 	}
-	float v = pattern_value(sc, pt, texture_pattern_point(pt, x), n, -n);
+	float v = texture_value(sc, pt, texture_pattern_point(pt, texture_at(pt, x, uv)), n, -n);
 	int b;
 	float f;
 	int a = texture_map_search(e, pt->map_count, v, &b, &f);
@@ -145,117 +203,10 @@ float3 texture_normal(const scene_data *sc, int normal, float3 x, float3 n)
 		if (wt[k] <= 0.0f)
 			continue;
 		int child = e[idx[k]].pigment;
-		sum += wt[k] * (child >= 0 ? pattern_perturb(sc, &sc->patterns[child], x, n) : n);
+		global const dev_pattern *c = &sc->patterns[max(child, 0)];
+		sum += wt[k] * (child >= 0 ? texture_perturb(sc, c, texture_at(c, x, uv), n) : n);
 	}
 	return length(sum) > 0.0f ? normalize(sum) : n;
-}
-
-/* ---- image_map: POV-Ray 3.7's (imageutil.cpp), in float ---- */
-
-/* POV-Ray's wrap: v into [0, n). */
-inline float texture_wrap(float v, float n)
-{
-	float t = fmod(v, n);
-	if (t < 0.0f)
-		t += n;
-	return t >= n ? 0.0f : t;
-}
-
-/* The angle of (c, z) from +x in the x-z plane, in turns (POV-Ray's theta / 2 pi). */
-inline float texture_turns(float c, float z)
-{
-	float theta = z == 0.0f ? (c > 0.0f ? 0.0f : PATTERN_PI) : acos(clamp(c, -1.0f, 1.0f));
-	if (z < 0.0f)
-		theta = 2.0f * PATTERN_PI - theta;
-	return theta / (2.0f * PATTERN_PI);
-}
-
-/* One texel: POV-Ray's no_interpolation (once: the nearest edge texel, else wrapped). */
-inline float4 texture_texel(const scene_data *sc, global const dev_image *im, float x, float y, int once)
-{
-	int w = im->width, h = im->height;
-	int ix = once ? (x < 0.0f ? 0 : x >= (float)w ? w - 1 : (int)x) : (int)texture_wrap(x, (float)w);
-	int iy = once ? (y < 0.0f ? 0 : y >= (float)h ? h - 1 : (int)y) : (int)texture_wrap(y, (float)h);
-	return sc->texels[im->first + clamp(iy, 0, h - 1) * w + clamp(ix, 0, w - 1)];
-}
-
-/* The image_map pt at p (its space, warped): the point to the image by its
- * map_type, the texel or POV-Ray's interpolation of four, then filter all and
- * transmit all. Off a once image: clear (white, transmit 1). */
-inline pigment_colour texture_image(const scene_data *sc, global const dev_pattern *pt, float3 p)
-{
-	pigment_colour out = { (float3)(1.0f), 0.0f, 1.0f };
-	global const dev_image *im = &sc->images[(int)pt->params[0].x];
-	int type = (int)pt->params[0].y, interp = (int)pt->params[0].z, once = pt->params[0].w != 0.0f;
-	float w = (float)im->width, h = (float)im->height, u, v;
-	float len = length(p), len_xz = sqrt(p.x * p.x + p.z * p.z);
-	if (type == 0) {          /* planar: x, y in [0, 1] */
-		if (once && (p.x < 0.0f || p.x > 1.0f || p.y < 0.0f || p.y > 1.0f))
-			return out;
-		u = fmod(p.x * w, w);
-		v = fmod(p.y * h, h);
-	} else if (type == 1) {   /* spherical */
-		if (len == 0.0f)
-			return out;
-		u = (len_xz == 0.0f ? 0.0f : texture_turns(p.x / len_xz, p.z)) * w;
-		v = (0.5f + asin(clamp(p.y / len, -1.0f, 1.0f)) / PATTERN_PI) * h;
-	} else if (type == 2) {   /* cylindrical: y in [0, 1] */
-		if (once && (p.y < 0.0f || p.y > 1.0f))
-			return out;
-		if (len == 0.0f || len_xz == 0.0f)
-			return out;
-		v = fmod(p.y * h, h);
-		u = texture_turns(p.x / len_xz, p.z) * w;
-	} else {                  /* torus, major radius 1 */
-		if (len_xz == 0.0f)
-			return out;
-		float theta = -texture_turns(p.x / len_xz, p.z);
-		float x = len_xz - 1.0f, r = sqrt(x * x + p.y * p.y);
-		float phi = acos(clamp(-x / r, -1.0f, 1.0f));
-		if (p.y > 0.0f)
-			phi = 2.0f * PATTERN_PI - phi;
-		u = -theta * w;
-		v = phi / (2.0f * PATTERN_PI) * h;
-	}
-	/* POV-Ray adds 1e-10 texels, which in double puts a point that rounding
-	 * left a hair before an edge of the image (a box's face at 0) after it;
-	 * float's rounding needs 2e-6 of the image */
-	u += 2e-6f * w;
-	v += 2e-6f * h;
-	if (once && (u >= w || v >= h || u < 0.0f || v < 0.0f))
-		return out;
-	float x = texture_wrap(u, w), y = texture_wrap(-v, h);   /* the image's rows go down */
-	float4 c;
-	if (interp == 0) {
-		c = texture_texel(sc, im, x, y, once);
-	} else {
-		x += 0.5f;
-		y += 0.5f;
-		float fx = floor(x), fy = floor(y), a = x - fx, b = y - fy, f[4];
-		if (interp == 2) {        /* bilinear */
-			f[0] = a * b;
-			f[1] = (1.0f - a) * b;
-			f[2] = a * (1.0f - b);
-			f[3] = (1.0f - a) * (1.0f - b);
-		} else {                  /* normalized distance */
-			f[0] = 1.0f / ((1.0f - a) * (1.0f - a) + (1.0f - b) * (1.0f - b));
-			f[1] = 1.0f / (a * a + (1.0f - b) * (1.0f - b));
-			f[2] = 1.0f / ((1.0f - a) * (1.0f - a) + b * b);
-			f[3] = 1.0f / (a * a + b * b);
-			float sum = f[0] + f[1] + f[2] + f[3];
-			for (int k = 0; k < 4; k++)
-				f[k] = isinf(sum) ? (isinf(f[k]) ? 1.0f : 0.0f) : f[k] / sum;
-		}
-		c = f[0] * texture_texel(sc, im, fx, fy, once) + f[1] * texture_texel(sc, im, fx - 1.0f, fy, once) +
-		    f[2] * texture_texel(sc, im, fx, fy - 1.0f, once) +
-		    f[3] * texture_texel(sc, im, fx - 1.0f, fy - 1.0f, once);
-	}
-	if ((im->flags & IMAGE_PREMULTIPLIED) && c.w > 1e-10f)
-		c.xyz /= c.w;
-	out.rgb = c.xyz;
-	out.filter = pt->params[1].x;
-	out.transmit = 1.0f - c.w + pt->params[1].y;
-	return out;
 }
 
 #define TEXTURE_STACK 8   /* nested pigments waiting; lower.c keeps maps shallower */
@@ -268,7 +219,7 @@ inline pigment_colour texture_image(const scene_data *sc, global const dev_patte
  * which runs no function pattern, for the scene's functions that call a
  * pigment function (function_pattern.cl). */
 #define TEXTURE_PIGMENT_TREE(NAME, VALUE) \
-pigment_colour NAME(const scene_data *sc, int root, float3 p, float3 n, float3 d) \
+pigment_colour NAME(const scene_data *sc, int root, float3 p, float2 uv, float3 n, float3 d) \
 { \
 	int stack[TEXTURE_STACK]; \
 	float weight[TEXTURE_STACK]; \
@@ -297,7 +248,7 @@ pigment_colour NAME(const scene_data *sc, int root, float3 p, float3 n, float3 d
 			continue; \
 		} \
 		if (pt->kind != PATTERN_SOLID) { \
-			float3 q = texture_pattern_point(pt, p); \
+			float3 q = texture_pattern_point(pt, texture_at(pt, p, uv)); \
 			if (pt->kind == PATTERN_IMAGE_MAP) {   /* a colour of its own, no map */ \
 				pigment_colour c = texture_image(sc, pt, pattern_warp_point(pt, sc->warps, q)); \
 				sum += w * (float4)(c.rgb, c.filter); \
@@ -329,7 +280,7 @@ pigment_colour NAME(const scene_data *sc, int root, float3 p, float3 n, float3 d
 	return out; \
 }
 
-TEXTURE_PIGMENT_TREE(texture_pigment_tree, pattern_value)
+TEXTURE_PIGMENT_TREE(texture_pigment_tree, texture_value)
 
 /* The pigment at the shading point: the solid colour, or its pattern's tree. */
 inline pigment_colour texture_pigment(const scene_data *sc, const shading_point *sp)
@@ -339,7 +290,7 @@ inline pigment_colour texture_pigment(const scene_data *sc, const shading_point 
 	if (m->pattern < 0)
 		return out;
 	float3 p = m->flags & MATERIAL_LOCAL ? sp->object_x : sp->x;
-	return texture_pigment_tree(sc, m->pattern, p, sp->ns, sp->d);
+	return texture_pigment_tree(sc, m->pattern, p, sp->uv, sp->ns, sp->d);
 }
 
 /* ---- patterns of whole textures, and layers ---- */
@@ -387,8 +338,8 @@ inline texture_blend texture_blend_at(const scene_data *sc, const shading_point 
 			}
 			continue;
 		}
-		float3 q = texture_pattern_point(pt, m->flags & MATERIAL_LOCAL ? sp->object_x : sp->x);
-		float v = pattern_value(sc, pt, q, sp->n0, sp->d);
+		float3 q = texture_pattern_point(pt, texture_at(pt, m->flags & MATERIAL_LOCAL ? sp->object_x : sp->x, sp->uv));
+		float v = texture_value(sc, pt, q, sp->n0, sp->d);
 		int c;
 		float f;
 		int a = texture_map_search(e, pt->map_count, v, &c, &f);
@@ -499,6 +450,7 @@ inline float3 texture_sky(const scene_data *sc, float3 d, bool alpha_ray)
 	float3 col = (float3)(0.0f), through = (float3)(1.0f);
 	shading_point sp;
 	sp.x = sp.object_x = d;
+	sp.uv = (float2)(0.0f);
 	sp.ng = sp.ns = -d;
 	sp.d = d;
 	/* POV-Ray 3.6's: a layer's opacity scaled by the filters and transmits
@@ -538,6 +490,7 @@ inline float texture_sky_transm(const scene_data *sc, float3 d)
 	float3 through = (float3)(1.0f);
 	shading_point sp;
 	sp.x = sp.object_x = d;
+	sp.uv = (float2)(0.0f);
 	sp.ng = sp.ns = -d;
 	sp.d = d;
 	for (int i = p->sky + p->sky_layers - 1; p->sky >= 0 && i >= p->sky; i--) {

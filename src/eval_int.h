@@ -45,6 +45,7 @@ struct objval {
 	bool compound;
 	bool has_mat;
 	scene_material mat;
+	bool uv;                  /* uv_mapping written (before the texture): its textures are uv_mapped */
 	const char *unsupported;  /* a POV-Ray object eclat cannot render: its name */
 	src_loc unsupported_loc;
 	src_loc loc;
@@ -271,13 +272,18 @@ const ast_node *eval_slope_word(struct eval *e, const ast_node *item);
  * form eclat does not have (point_at), warned about. */
 int eval_pattern_slope(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg);
 
-/* The warning for uv_mapping, once where the scene writes it. */
-void eval_uv_mapping_warning(struct eval *e, const ast_node *item);
 
 /* image_map { ... }: pg (an image_map pattern) gets its image, read into the
  * scene's images once per file and gamma, its options and a one-entry map of
  * its average colour. -1 after an error. */
 int eval_image_map(struct eval *e, const ast_node *b, scene_pigment *pg);
+int eval_image_pattern(struct eval *e, const ast_node *b, scene_pigment *pg);
+int eval_bump_map(struct eval *e, const ast_node *b, scene_pigment *pg);
+/* material_map { IMAGE... TEXTURE... }: the image into pg; texture is called
+ * with ctx for each item that is no image item (0: taken, 1: not valid, -1:
+ * an error reported). */
+int eval_material_map(struct eval *e, const ast_node *b, scene_pigment *pg,
+                      int (*texture)(struct eval *, const ast_node *, void *), void *ctx);
 
 /* ---- #fopen, #read, #write, #fclose (eval_fileio.c) ---- */
 void eval_file_io(struct eval *e, const ast_node *d);

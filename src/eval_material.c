@@ -64,6 +64,8 @@ void eval_apply_value(const value *v, scene_material *m)
 		m->normal = v->mat.normal;
 		m->texture_map = v->mat.texture_map;
 		m->layers = v->mat.layers;
+		m->uv = v->mat.uv;
+		m->uv_xf = v->mat.uv_xf;
 		break;
 	case V_NORMAL: m->normal = v->mat.normal; break;
 	case V_INTERIOR: copy_interior(m, &v->mat); break;
@@ -384,18 +386,10 @@ static bool is_pattern(const ast_node *item)
 	}
 }
 
-/* uv_mapping, which eclat does not have: the pattern stays in 3D space. */
-void eval_uv_mapping_warning(struct eval *e, const ast_node *item)
-{
-	eval_warn_once(e, item->loc, "uv_mapping", "'uv_mapping' is not supported yet; the texture is mapped "
-	               "in space as if it were not there");
-}
-
 /* Items that shape a pattern: nothing to eclat, which averages it. */
 static bool is_pattern_modifier(struct eval *e, const ast_node *item)
 {
-	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING)
-		eval_uv_mapping_warning(e, item);
+	(void)e;
 	if (item->kind == AST_ARG)
 		switch (item->kw) {
 		case KW_TURBULENCE: case KW_OCTAVES: case KW_OMEGA: case KW_LAMBDA: case KW_FREQUENCY:
@@ -436,7 +430,16 @@ struct pattern {
 	int map_pigment;         /* the map's entries (map_pigment), or -1 */
 	scene_material map_mat;  /* a texture_map's finish */
 	bool map_finish;         /* the map is a texture_map */
+	bool uv;                 /* uv_mapping was written */
 };
+
+/* Whether item is uv_mapping; the scene learns that it has some. */
+static bool is_uv_mapping(struct eval *e, const ast_node *item)
+{
+	bool uv = item->kind == AST_FLAG && item->kw == KW_UV_MAPPING;
+	e->s->uv_mapped |= uv;
+	return uv;
+}
 
 /* The map of the pigment being made: its map's, its list's, the inherited
  * pigment's, or POV-Ray's default. */
@@ -473,6 +476,7 @@ static void pattern_result(struct eval *e, struct pattern *p, double c[5], int *
 	if (p->kind > 0) {
 		if (!(p->inherited && !p->has_map && !p->n_list))
 			pattern_map(e, p);
+		p->pg.uv |= p->uv;
 		*pigment = scene_add_pigment(e->s, &p->pg);
 		p->pg.map = NULL;
 	}
@@ -506,7 +510,7 @@ static void pattern_result(struct eval *e, struct pattern *p, double c[5], int *
 static void start_pattern(struct pattern *p, const ast_node *item, const char *name)
 {
 	free(p->pg.map);
-	*p = (struct pattern){ .at = item, .kind = eval_pattern_kind(name), .map_pigment = -1 };
+	*p = (struct pattern){ .at = item, .kind = eval_pattern_kind(name), .map_pigment = -1, .uv = p->uv };
 	snprintf(p->name, sizeof p->name, "%s", name);
 	eval_pattern_defaults(&p->pg, p->kind > 0 ? p->kind : PATTERN_SOLID, item->loc);
 }
@@ -593,6 +597,88 @@ static int pattern_word(struct eval *e, struct cursor *c, const ast_node *item, 
 	return err ? -1 : 0;
 }
 
+/* image_pattern { ... }, which starts the pattern; 1 when item is not one. */
+static int image_pattern_block(struct eval *e, const ast_node *item, struct pattern *p)
+{
+	if (item->kind != AST_BLOCK || item->kw != KW_UNKNOWN || strcmp(item->str, AST_WORD_IMAGE_PATTERN) != 0)
+		return 1;
+	start_pattern(p, item, AST_WORD_IMAGE_PATTERN);
+	return eval_image_pattern(e, item, &p->pg) ? -1 : 0;
+}
+
+/* A material_map's textures, as its map: entry i, the texture for material
+ * number i. */
+struct material_list {
+	scene_map_entry *map;
+	int n;
+	scene_material first;
+};
+
+static int material_map_texture(struct eval *e, const ast_node *item, void *ctx)
+{
+	struct material_list *l = ctx;
+	if (item->kind != AST_BLOCK || item->kw != KW_TEXTURE)
+		return 1;
+	value v;
+	if (eval_material_value(e, item, &v))
+		return -1;
+	if (l->n == 0)
+		l->first = v.mat;
+	l->map = eval_xrealloc(l->map, (l->n + 1) * sizeof *l->map);
+	l->map[l->n] = (scene_map_entry){ .value = l->n, .pigment = -1, .texture = scene_add_texture(e->s, &v.mat) };
+	for (int k = 0; k < 5; k++)
+		l->map[l->n].colour[k] = v.mat.pigment[k];
+	l->n++;
+	eval_value_free(&v);
+	return 0;
+}
+
+/* material_map { [FORMAT] "File" [map_type N] [interpolate N] [once]
+ * TEXTURE... }: a pattern of whole textures whose value is the image's
+ * material number; 1 when item is not one. */
+static int material_map_block(struct eval *e, const ast_node *item, struct pattern *p)
+{
+	if (item->kind != AST_BLOCK || item->kw != KW_UNKNOWN || strcmp(item->str, AST_WORD_MATERIAL_MAP) != 0)
+		return 1;
+	start_pattern(p, item, AST_WORD_MATERIAL_MAP);
+	struct material_list l = { 0 };
+	if (eval_material_map(e, item, &p->pg, material_map_texture, &l)) {
+		free(l.map);
+		return -1;
+	}
+	if (l.n == 0) {
+		eval_error(e, item->loc, "a material_map needs a texture");
+		return -1;
+	}
+	scene_pigment holder = p->pg;   /* the map, as a texture_map's */
+	holder.map = l.map;
+	holder.n_map = l.n;
+	p->map_pigment = scene_add_pigment(e->s, &holder);
+	p->has_map = p->map_finish = true;
+	p->map_mat = l.first;
+	for (int k = 0; k < 5; k++) {
+		double sum = 0;
+		for (int i = 0; i < l.n; i++)
+			sum += l.map[i].colour[k];
+		p->map[k] = sum / l.n;
+	}
+	return 0;
+}
+
+/* bump_map outside a normal, material_map outside a texture: POV-Ray's
+ * error (where is what item may stand in); 1 when item is neither. */
+static int misplaced_image(struct eval *e, const ast_node *item, const char *where)
+{
+	if (item->kind != AST_BLOCK || item->kw != KW_UNKNOWN)
+		return 1;
+	bool bump = strcmp(item->str, AST_WORD_BUMP_MAP) == 0, mat = strcmp(item->str, AST_WORD_MATERIAL_MAP) == 0;
+	if ((!bump || strcmp(where, "a normal") == 0) && (!mat || strcmp(where, "a texture") == 0))
+		return 1;
+	eval_error(e, item->loc, "%s is only allowed in %s, not in %s", item->str, bump ? "a normal" : "a texture",
+	           where);
+	return -1;
+}
+
 /* ---- pigment ---- */
 
 /* An expression in a pigment: a colour or a declared pigment, or a colour of the
@@ -641,6 +727,10 @@ static int pigment_value(struct eval *e, const ast_node *item, struct pattern *p
 static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p,
                         scene_material *m)
 {
+	if (is_uv_mapping(e, item)) {   /* POV-Ray's UV_MAP_PATTERN around the rest of the pigment */
+		p->uv = true;
+		return 0;
+	}
 	int rc = pattern_start(e, c, item, p);
 	if (rc <= 0)
 		return rc;
@@ -677,6 +767,8 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 		return -1;   /* a pigment's transformations move its pattern only */
 	if (rc != 0 || is_pattern_modifier(e, item))
 		return rc < 0 ? -1 : 0;
+	if ((rc = image_pattern_block(e, item, p)) <= 0 || (rc = misplaced_image(e, item, "a pigment")) <= 0)
+		return rc;
 	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_IMAGE_MAP) == 0) {
 		start_pattern(p, item, AST_WORD_IMAGE_MAP);
 		if (eval_image_map(e, item, &p->pg))
@@ -1055,6 +1147,10 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 {
 	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_TILES) == 0)
 		return tiles(e, item, p, m);
+	if (is_uv_mapping(e, item)) {   /* the rest of the texture at <u, v, 0> */
+		m->uv = SCENE_UV_TEXTURE;
+		return 0;
+	}
 	value v;
 	int skip = pattern_word(e, c, item, p);
 	if (skip <= 0)
@@ -1070,6 +1166,9 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	if (item->kind == AST_BLOCK && (item->kw == KW_PIGMENT || item->kw == KW_FINISH || item->kw == KW_NORMAL))
 		return eval_material_block(e, item, m);
 	if (p->at && p->kind > 0 && (skip = eval_pattern_modifier(e, c, item, &p->pg)) <= 0)
+		return skip;
+	if ((skip = image_pattern_block(e, item, p)) <= 0 || (skip = material_map_block(e, item, p)) <= 0 ||
+	    (skip = misplaced_image(e, item, "a texture")) <= 0)
 		return skip;
 	if ((item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str) &&
 	     strcmp(eval_pov_word(item->str), "other") != 0) || (item->kind == AST_BLOCK && item->kw == KW_OBJECT)) {
@@ -1150,6 +1249,8 @@ static int texture_block(struct eval *e, const ast_node *b, scene_material *m)
 	}
 	if (p.at)
 		texture_pattern(e, &p, m);
+	if (m->uv == SCENE_UV_TEXTURE)   /* transformations after the texture do not move it */
+		m->uv_xf = m->tex_xf;
 	free(p.pg.map);
 	return 0;
 }
@@ -1196,8 +1297,8 @@ static int normal_item(struct eval *e, struct cursor *c, const ast_node *item, s
 	scene_pigment *pg = &p->pg;
 	const char *w = item->kind == AST_IDENT && !eval_lookup(e, item->str) ? item->str : NULL;
 	int err = 0;
-	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING) {
-		eval_uv_mapping_warning(e, item);
+	if (is_uv_mapping(e, item)) {
+		p->uv = true;
 		return 0;
 	}
 	if (eval_pattern_is_fractal(pg->kind) && pg->params[0][0] == 0)   /* mandel 50 [Amount]: its arguments first */
@@ -1354,6 +1455,19 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
 		value v;
+		if (is_uv_mapping(e, item)) {   /* a declared normal may follow it */
+			p.uv = true;
+			continue;
+		}
+		if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_BUMP_MAP) == 0) {
+			start_pattern(&p, item, AST_WORD_BUMP_MAP);
+			p.pg.bump_size = 0.5;   /* its bump_size, or the amount after it, may change it */
+			p.pg.accuracy = 0.02;
+			amount = false;
+			rc = eval_bump_map(e, item, &p.pg);
+			first = false;
+			continue;
+		}
 		if (first && AST_IS_EXPRESSION(item->kind) && !eval_pov_word_item(e, item) &&
 		    (item->kind != AST_IDENT || eval_lookup(e, item->str))) {   /* a declared normal */
 			if ((rc = eval_expect_kind(e, item, V_NORMAL, &v)) == 0 && v.mat.normal >= 0) {
@@ -1377,6 +1491,12 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		} else if (p.at && p.kind > 0 && item->kind == AST_BLOCK && item->kw == KW_UNKNOWN &&
 		           strcmp(item->str, AST_WORD_SLOPE_MAP) == 0) {
 			rc = slope_map(e, item, &p.pg);
+		} else if ((rc = misplaced_image(e, item, "a normal")) <= 0) {
+			;
+		} else if ((rc = image_pattern_block(e, item, &p)) <= 0) {
+			amount = false;
+			p.pg.bump_size = 0.5;
+			p.pg.accuracy = 0.02;
 		} else if ((rc = pattern_word(e, &c, item, &p)) <= 0) {
 			;   /* a pattern eclat does not have (warned below), or another POV-Ray word (warned) */
 		} else if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
@@ -1411,6 +1531,7 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		p.kind = -1;
 	if (p.at && p.kind < 0 && p.name[0])
 		eval_warn_once(e, p.at->loc, p.name, "pattern '%s' is not supported yet in a normal; ignored", p.name);
+	p.pg.uv |= p.uv;
 	if (p.at && p.kind > 0)
 		m->normal = scene_add_pigment(e->s, &p.pg);
 	else

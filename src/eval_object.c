@@ -347,18 +347,48 @@ static int flag_item(struct eval *e, struct cursor *c, const ast_node *item, str
 
 /* pigment, finish, normal, interior modify the object's texture; a texture or a
  * material replaces it, or is layered on the one it has (eval_apply_texture). */
+/* The object's uv_mapping on m: placed by the transformations m has now,
+ * not by the object's after it. */
+static void object_uv(scene_material *m)
+{
+	m->uv = SCENE_UV_OBJECT;
+	m->uv_xf = m->tex_xf;
+}
+
 static int material_modifier(struct eval *e, const ast_node *item, struct objval *o)
 {
 	bool textured;
 	scene_material *m = target(e, o, &textured);
-	if (item->kw != KW_TEXTURE && item->kw != KW_MATERIAL)
-		return eval_material_block(e, item, m);
+	if (item->kw != KW_TEXTURE && item->kw != KW_MATERIAL) {
+		int rc = eval_material_block(e, item, m);
+		if (o->uv && item->kw != KW_INTERIOR)
+			object_uv(m);
+		return rc;
+	}
 	value v;
 	if (eval_material_value(e, item, &v))
 		return -1;
 	eval_apply_texture(e, item->loc, m, textured, &v.mat);
 	if (item->kw == KW_MATERIAL)
 		eval_apply_value(&(value){ .kind = V_INTERIOR, .mat = v.mat }, m);
+	if (o->uv)
+		object_uv(m);
+	return 0;
+}
+
+/* uv_mapping among an object's modifiers: the textures written after it see
+ * the surface's <u, v, 0>; after one, POV-Ray's error. */
+static int object_uv_mapping(struct eval *e, const ast_node *item, struct objval *o)
+{
+	bool textured = o->has_mat;
+	for (int i = 0; !o->compound && i < o->n_objs; i++)
+		textured |= !o->objs[i].clip && o->objs[i].textured;
+	if (textured) {
+		eval_error(e, item->loc, "uv_mapping must be written before the texture");
+		return -1;
+	}
+	o->uv = true;
+	e->s->uv_mapped = true;
 	return 0;
 }
 
@@ -490,10 +520,8 @@ static int object_modifier(struct eval *e, struct cursor *c, const ast_node *ite
 		return interior_texture(e, item, o);
 	if (item->kind == AST_FLAG && (rc = flag_item(e, c, item, o)) <= 0)
 		return rc;
-	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING) {
-		eval_uv_mapping_warning(e, item);
-		return 0;
-	}
+	if (item->kind == AST_FLAG && item->kw == KW_UV_MAPPING)
+		return object_uv_mapping(e, item, o);
 	if ((rc = shape_flag(e, item, o)) <= 0)
 		return rc;
 	if ((rc = eval_skip_pov_word(e, c, item)) <= 0)

@@ -547,13 +547,37 @@ static void image_decode(scene_image *im, const image_data *d)
 
 /* The image at name (looked for as #include looks), with gamma G (0: the
  * file's), read once per path and gamma. -1 after an error at loc. */
-static int image_load(struct eval *e, const char *name, double gamma, int premul, src_loc loc)
+/* How an image is read: its colours (image_map); its values as they are
+ * (bump_map, image_pattern); its material numbers (material_map). */
+enum { USE_COLOUR, USE_DATA, USE_NUMBER };
+
+/* POV-Ray's material numbers: a colormapped PNG's palette indices, any
+ * other image's red * 255 (as POV-Ray truncates it), in the red channel. */
+static void image_numbers(struct eval *e, const char *path, scene_image *im)
+{
+	image_limits lim = { IMAGE_MAX_TEXELS, e->opt->mesh_time_limit, eval_memory_left(e) };
+	unsigned char *index = NULL;
+	int w, h;
+	bool indexed = image_png_indices(path, &lim, &index, &w, &h) && w == im->width && h == im->height;
+	long n = (long)im->width * im->height;
+	for (long i = 0; i < n; i++) {
+		float *c = &im->rgba[4 * i];
+		c[0] = indexed ? index[i] : (float)(int)((double)c[0] * 255.0 + 1e-4);   /* 1e-4: 8 bits exactly */
+		c[1] = c[2] = 0;
+		c[3] = 1;
+	}
+	free(index);
+	im->premultiplied = false;
+}
+
+static int image_load(struct eval *e, const char *name, double gamma, int premul, int how, src_loc loc)
 {
 	scene *s = e->s;
 	char *path = eval_find_file(e, loc.file, name);
 	const char *use = path ? path : name;
 	char key[4200];
-	snprintf(key, sizeof key, "%s\t%g\t%d", use, gamma, premul);
+	snprintf(key, sizeof key, "%s\t%g\t%d%s", use, gamma, premul,
+	         how == USE_DATA ? "\tdata" : how == USE_NUMBER ? "\tnumber" : "");
 	for (int i = 0; i < s->n_images; i++)
 		if (strcmp(s->images[i].key, key) == 0) {
 			free(path);
@@ -561,7 +585,8 @@ static int image_load(struct eval *e, const char *name, double gamma, int premul
 		}
 	image_data d;
 	char why[512];
-	if (eval_access(e, use, false, loc, "an image_map")) {
+	if (eval_access(e, use, false, loc, how == USE_COLOUR ? "an image_map" : how == USE_DATA ? "a bump_map or image_pattern"
+	                                                                           : "a material_map")) {
 		free(path);
 		return -1;
 	}
@@ -571,12 +596,17 @@ static int image_load(struct eval *e, const char *name, double gamma, int premul
 		free(path);
 		return -1;
 	}
-	free(path);
 	eval_memory_claim(e, loc, (double)d.width * d.height * 4 * sizeof *d.rgba, "the image");   /* fits: checked */
 	scene_image im = { .key = eval_xstrdup(key), .rgba = d.rgba, .width = d.width, .height = d.height,
 	                   .premultiplied = premul >= 0 ? premul != 0 : d.premultiplied != 0, .loc = loc };
 	image_decode(&im, &d);
-	if (gamma > 0) {
+	im.data = how != USE_COLOUR;
+	if (im.data)   /* POV-Ray reads a bump_map's, image_pattern's or material_map's values as they are */
+		im.decode = SCENE_DECODE_NONE;
+	if (how == USE_NUMBER)
+		image_numbers(e, use, &im);
+	free(path);
+	if (gamma > 0 && how != USE_NUMBER) {
 		im.decode = SCENE_DECODE_POWER;
 		im.gamma = (float)gamma;
 		im.gamma_given = true;
@@ -592,7 +622,7 @@ static int image_load(struct eval *e, const char *name, double gamma, int premul
 }
 
 /* What an image_map's item is waiting for. */
-enum { IM_ANY, IM_FILE, IM_MAP_TYPE, IM_INTERPOLATE, IM_GAMMA, IM_PREMUL, IM_FT, IM_FT_VALUE };
+enum { IM_ANY, IM_FILE, IM_MAP_TYPE, IM_INTERPOLATE, IM_GAMMA, IM_PREMUL, IM_FT, IM_FT_VALUE, IM_BUMP_SIZE };
 
 struct image_map_read {
 	int want;                 /* IM_ */
@@ -602,7 +632,10 @@ struct image_map_read {
 	src_loc file_loc;
 	double gamma;             /* 0: the file's */
 	int premul;               /* -1: the file's */
-	scene_pigment *pg;
+	bool alpha;               /* use_alpha (image_pattern) */
+	scene_pigment *pg;        /* kind: PATTERN_IMAGE_MAP, _IMAGE_PATTERN, _BUMP_MAP or _MATERIAL_MAP */
+	int (*other)(struct eval *, const ast_node *, void *);   /* material_map's textures */
+	void *ctx;
 };
 
 static int image_map_item(struct eval *e, const ast_node *n, struct image_map_read *r);
@@ -624,7 +657,7 @@ static int image_map_component(struct eval *e, const ast_node *n, struct image_m
 
 static int image_map_item(struct eval *e, const ast_node *n, struct image_map_read *r)
 {
-	if (n->kind == AST_COLOR && (n->kw == KW_FILTER || n->kw == KW_TRANSMIT))
+	if (n->kind == AST_COLOR && (n->kw == KW_FILTER || n->kw == KW_TRANSMIT) && r->pg->kind == PATTERN_IMAGE_MAP)
 		return image_map_component(e, n, r);
 	const char *name = word(e, n);
 	double v;
@@ -640,9 +673,25 @@ static int image_map_item(struct eval *e, const ast_node *n, struct image_map_re
 					r->want = wants[i];
 					return 0;
 				}
-			if (strcmp(name, AST_WORD_USE_COLOR) == 0 || strcmp(name, AST_WORD_USE_COLOUR) == 0 ||
-			    strcmp(name, AST_WORD_USE_INDEX) == 0)
-				return 0;   /* which of colour and index: a pigment's image_map uses the colour */
+			if (strcmp(name, AST_WORD_USE_COLOR) == 0 || strcmp(name, AST_WORD_USE_COLOUR) == 0) {
+				r->alpha = false;
+				return 0;
+			}
+			if (strcmp(name, AST_WORD_USE_INDEX) == 0) {   /* eclat keeps no palette indices */
+				if (r->pg->kind != PATTERN_IMAGE_MAP)
+					eval_warn_once(e, n->loc, "use_index", "use_index: eclat keeps no palette "
+					               "indices; the colours' grey is used");
+				r->alpha = false;
+				return 0;
+			}
+			if (strcmp(name, AST_WORD_USE_ALPHA) == 0 && r->pg->kind == PATTERN_IMAGE_PATTERN) {
+				r->alpha = true;
+				return 0;
+			}
+			if (strcmp(name, AST_WORD_BUMP_SIZE) == 0 && r->pg->kind == PATTERN_BUMP_MAP) {
+				r->want = IM_BUMP_SIZE;
+				return 0;
+			}
 		}
 		if (r->want == IM_ANY && n->kind == AST_FLAG && n->kw == KW_ONCE && r->file) {
 			r->pg->params[0][3] = 1;
@@ -662,7 +711,17 @@ static int image_map_item(struct eval *e, const ast_node *n, struct image_map_re
 			r->file_loc = n->loc;
 			return eval_expect_string(e, n, &r->file);
 		}
-		return eval_not_valid(e, n, "an image_map");
+		if (r->other && r->want == IM_ANY) {
+			int rc = r->other(e, n, r->ctx);
+			if (rc <= 0)
+				return rc;
+		}
+		return eval_not_valid(e, n, r->pg->kind == PATTERN_MATERIAL_MAP ? "a material_map" : r->pg->kind == PATTERN_BUMP_MAP ? "a bump_map"
+		                          : r->pg->kind == PATTERN_IMAGE_PATTERN ? "an image_pattern" : "an image_map");
+	case IM_BUMP_SIZE:
+		if (eval_expect_float(e, n, &r->pg->bump_size))
+			return -1;
+		break;
 	case IM_MAP_TYPE:
 		if (eval_expect_float(e, n, &v))
 			return -1;
@@ -721,12 +780,17 @@ static int image_map_item(struct eval *e, const ast_node *n, struct image_map_re
 	return 0;
 }
 
-/* image_map { [FORMAT] "File" [gamma G] [premultiplied B] [map_type N]
- * [interpolate N] [once] [filter all F] [transmit all T] }: pg becomes the
- * image's pattern, with a one-entry map of its average colour. */
-int eval_image_map(struct eval *e, const ast_node *b, scene_pigment *pg)
+/* An image's block into pg, whose kind says which: image_map { [FORMAT]
+ * "File" [gamma G] [premultiplied B] [map_type N] [interpolate N] [once]
+ * [filter all F] [transmit all T] }, image_pattern { ... [use_alpha] },
+ * bump_map { ... [bump_size B] } (and use_color, use_index). An image_map's
+ * pg gets a one-entry map of its average colour. */
+static int image_block(struct eval *e, const ast_node *b, scene_pigment *pg,
+                       int (*other)(struct eval *, const ast_node *, void *), void *ctx)
 {
-	struct image_map_read r = { .premul = -1, .pg = pg };
+	struct image_map_read r = { .premul = -1, .pg = pg, .other = other, .ctx = ctx };
+	const char *what = pg->kind == PATTERN_BUMP_MAP ? "bump_map" : pg->kind == PATTERN_IMAGE_PATTERN ? "image_pattern"
+	                 : pg->kind == PATTERN_MATERIAL_MAP ? "material_map" : "image_map";
 	pg->params[0][0] = -1;
 	struct cursor c;
 	int err = 0, rc = 0;
@@ -736,19 +800,26 @@ int eval_image_map(struct eval *e, const ast_node *b, scene_pigment *pg)
 		rc = image_map_item(e, item, &r);
 	eval_cursor_free(&c);
 	if (!rc && !err && r.want != IM_ANY) {
-		eval_error(e, b->loc, "the image_map ends before a value it needs");
+		eval_error(e, b->loc, "the %s ends before a value it needs", what);
 		rc = -1;
 	}
 	if (!rc && !err && !r.file) {
-		eval_error(e, b->loc, "an image_map needs a file name");
+		eval_error(e, b->loc, "%s %s needs a file name", what[1] == 'm' ? "an" : "a", what);
 		rc = -1;
 	}
-	int at = rc || err ? -1 : image_load(e, r.file, r.gamma, r.premul, r.file_loc);
+	int how = pg->kind == PATTERN_IMAGE_MAP ? USE_COLOUR : pg->kind == PATTERN_MATERIAL_MAP ? USE_NUMBER : USE_DATA;
+	int at = rc || err ? -1 : image_load(e, r.file, r.gamma, r.premul, how, r.file_loc);
 	free(r.file);
 	if (at < 0)
 		return -1;
 	pg->params[0][0] = at;
 	const scene_image *im = &e->s->images[at];
+	if (pg->kind != PATTERN_IMAGE_MAP) {
+		pg->frequency = 0;   /* POV-Ray's: its value is the image's */
+		pg->params[1][0] = r.alpha;
+		pg->params[1][1] = im->average[3] < 1;   /* some alpha: use_alpha reads it, else red */
+		return 0;
+	}
 	pg->map = eval_xrealloc(pg->map, sizeof *pg->map);
 	pg->map[0] = (scene_map_entry){ .colour = { im->average[0], im->average[1], im->average[2],
 	                                            (float)pg->params[1][0],
@@ -756,4 +827,31 @@ int eval_image_map(struct eval *e, const ast_node *b, scene_pigment *pg)
 	                                .pigment = -1 };
 	pg->n_map = 1;
 	return 0;
+}
+
+int eval_image_map(struct eval *e, const ast_node *b, scene_pigment *pg)
+{
+	return image_block(e, b, pg, NULL, NULL);
+}
+
+/* image_pattern { ... } in a pigment, texture or normal: pg's pattern, whose
+ * map comes later. */
+int eval_image_pattern(struct eval *e, const ast_node *b, scene_pigment *pg)
+{
+	pg->kind = PATTERN_IMAGE_PATTERN;
+	return image_block(e, b, pg, NULL, NULL);
+}
+
+/* bump_map { ... } in a normal; its bump_size, if any, is pg's amount. */
+int eval_bump_map(struct eval *e, const ast_node *b, scene_pigment *pg)
+{
+	pg->kind = PATTERN_BUMP_MAP;
+	return image_block(e, b, pg, NULL, NULL);
+}
+
+int eval_material_map(struct eval *e, const ast_node *b, scene_pigment *pg,
+                      int (*texture)(struct eval *, const ast_node *, void *), void *ctx)
+{
+	pg->kind = PATTERN_MATERIAL_MAP;
+	return image_block(e, b, pg, texture, ctx);
 }

@@ -243,20 +243,27 @@ int lower_local_rows_about(const xform *local_to_world, const double centre[3], 
 	return 0;
 }
 
-/* Three shading normals; returns the index of the first, for a smooth triangle's link. */
-static int add_normals(struct lowering *lw, const double n[3][3])
+/* Three shading normals, and the corners' uv after them when there are uv
+ * (the first normal's w says so: shape_triangle.cl's triangle_uv); returns
+ * the index of the first three, for a smooth triangle's link. */
+static int add_normals(struct lowering *lw, const double n[3][3], const double (*uv)[2])
 {
-	for (int k = 0; k < 3; k++) {
+	int first = lw->n_normals / 3;
+	for (int k = 0; k < (uv ? 6 : 3); k++) {
 		if (lw->n_normals == lw->cap_normals)
 			lw->normals = grow(lw->normals, &lw->cap_normals, sizeof *lw->normals);
-		lw->normals[lw->n_normals++] = f4(n[k], 0);
+		lw->normals[lw->n_normals++] = k < 3 ? f4(n[k], k == 0 && uv ? 1 : 0)
+		                                     : (float4){ (float)uv[k - 3][0], (float)uv[k - 3][1], 0, 0 };
 	}
-	return lw->n_normals / 3 - 1;
+	return first;
 }
 
-/* A triangle into list, unless it has no area; normals (or NULL) make it smooth. */
-static void add_triangle_to(struct lowering *lw, struct prim_list *list, const double v[3][3],
-                            const double (*normals)[3], int material, int object, src_loc loc)
+/* A triangle into list, unless it has no area; normals (or NULL) make it
+ * smooth; uv (or NULL), its corners' uv, make it smooth too (a flat one's
+ * normals are its face's). */
+static void add_triangle_uv_to(struct lowering *lw, struct prim_list *list, const double v[3][3],
+                               const double (*normals)[3], const double (*uv)[2], int material, int object,
+                               src_loc loc)
 {
 	double e1[3], e2[3];
 	for (int k = 0; k < 3; k++) {
@@ -272,14 +279,21 @@ static void add_triangle_to(struct lowering *lw, struct prim_list *list, const d
 	}
 	dev_prim p = { .a = f4(v[0], 0), .b = f4(v[1], 0), .c = f4(v[2], 0), .type = PRIM_TRIANGLE,
 	               .material = material, .object = object, .link = -1 };
-	if (normals) {
+	double face[3][3] = { { n[0], n[1], n[2] }, { n[0], n[1], n[2] }, { n[0], n[1], n[2] } };
+	if (normals || uv) {
 		p.type = PRIM_SMOOTH_TRIANGLE;
-		p.link = add_normals(lw, normals);
+		p.link = add_normals(lw, normals ? normals : (const double (*)[3])face, uv);
 	}
 	if (list == &lw->top)
 		push_prim_box(list, p, NULL);
 	else
 		push_prim(list, p);
+}
+
+static void add_triangle_to(struct lowering *lw, struct prim_list *list, const double v[3][3],
+                            const double (*normals)[3], int material, int object, src_loc loc)
+{
+	add_triangle_uv_to(lw, list, v, normals, NULL, material, object, loc);
 }
 
 void lower_add_triangle(struct lowering *lw, const double v[3][3], const double (*normals)[3], int material,
@@ -449,8 +463,14 @@ static int lower_mesh_once(struct lowering *lw, const scene *s, int index)
 		for (int k = 0; k < 3 && smooth; k++)
 			memcpy(n[k], m->nrm[m->face_nrm[f][k]], sizeof n[k]);
 		int fm = m->face_mat && m->face_mat[f] >= 0 && m->face_mat[f] < m->n_mats ? first_mat + m->face_mat[f] : -1;
+		/* a mesh's uv only where a texture is uv_mapped: they cost three normals a face */
+		double uv[3][2];
+		int with_uv = s->uv_mapped && m->uv && m->face_uv;
+		for (int k = 0; k < 3 && with_uv; k++)
+			memcpy(uv[k], m->uv[m->face_uv[f][k]], sizeof uv[k]);
 		/* object: the face, for tests and debugging; surfaces take the instance's */
-		add_triangle_to(lw, &lm->prims, v, smooth ? (const double (*)[3])n : NULL, fm, f, m->loc);
+		add_triangle_uv_to(lw, &lm->prims, v, smooth ? (const double (*)[3])n : NULL,
+		                   with_uv ? (const double (*)[2])uv : NULL, fm, f, m->loc);
 	}
 	lm->stats = (lower_bvh_stats){ .mesh = index, .loc = m->loc };
 	if (lm->prims.n == 0) {   /* degenerate geometry: warn and skip, as for a triangle */
@@ -996,7 +1016,7 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	for (int i = 0; i < s->n_objects; i++)
 		shadows_pass |= (s->objects[i].flags & OBJ_NO_SHADOW) != 0;
 	out->params.scene_flags = (shadows_pass ? SCENE_SHADOWS_PASS : 0) | (s->sky_legacy ? SCENE_SKY_LEGACY : 0) |
-	                          (lw.textures.n_media ? SCENE_MEDIA : 0);
+	                          (lw.textures.n_media ? SCENE_MEDIA : 0) | (lw.textures.uses_uv ? SCENE_UV : 0);
 	out->normals = lw.normals;
 	out->n_normals = lw.n_normals;
 	if (lower_camera(s, &out->params) || lower_fogs(s, out) ||

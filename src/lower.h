@@ -66,6 +66,7 @@ typedef struct {
 	float4 *texels;           /* theirs, in the working gamma */
 	long n_texels;
 	int see_through;          /* some colour has filter or transmit */
+	int uses_uv;              /* some pattern is uv_mapped (SCENE_UV) */
 	dev_material *subs;       /* the textures of texture_maps and the lower layers, until appended */
 	int n_subs, cap_subs;
 	dev_media *media;         /* the interiors' and the atmosphere's media (lower_media.c) */

@@ -108,7 +108,7 @@ static void lower_images(lower_textures *lt, const scene *s)
 			for (int j = 0; j < 3 && transcode; j++) {
 				float v = im->premultiplied && a > 0 ? rgb[j] / a : rgb[j];
 				v = decode(im, v);
-				if (g > 0 && g != 1)
+				if (g > 0 && g != 1 && !im->data)
 					v = v > 0 ? powf(v, 1 / g) : v;
 				rgb[j] = im->premultiplied && a > 0 ? v * a : v;
 			}
@@ -124,6 +124,7 @@ static void lower_images(lower_textures *lt, const scene *s)
 struct surface {
 	const scene_material *interior;
 	int local;
+	bool uv;   /* the object's uv_mapping: every texture of it is uv_mapped */
 };
 
 static int lower_layers(lower_textures *lt, const scene *s, const struct surface *sf, int t, const xform *outer,
@@ -137,9 +138,16 @@ static int lower_layers(lower_textures *lt, const scene *s, const struct surface
  * its entries' textures become materials in lt->subs, placed by every
  * transformation of the pattern (POV-Ray evaluates them at the pattern's point). */
 static int flatten(lower_textures *lt, const scene *s, int node, const xform *to_world, int depth,
-                   const struct surface *sf)
+                   const struct surface *sf, bool uv)
 {
 	const scene_pigment *pg = &s->pigments[node];
+	xform identity = scene_xform_identity();
+	if (pg->uv) {   /* POV-Ray ignores what is around a uv_mapped pigment */
+		uv = true;
+		to_world = &identity;
+	}
+	if (uv)
+		lt->uses_uv = 1;
 	const scene_warp *w = pg->warps;
 	int n_warps = pg->n_warps;
 	xform front = *to_world, inner = *to_world;   /* inner: every transformation, for nested pigments */
@@ -157,7 +165,8 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 	dev_pattern d = {
 		.rows = { row(&inv, 0), row(&inv, 1), row(&inv, 2) },
 		.kind = pg->kind, .wave = pg->wave, .noise_generator = scene_noise_generator(s, pg),
-		.flags = (pg->normal_map ? PATTERN_NORMAL_MAP : 0) | (pg->no_bump_scale ? PATTERN_NO_BUMP_SCALE : 0),
+		.flags = (pg->normal_map ? PATTERN_NORMAL_MAP : 0) | (pg->no_bump_scale ? PATTERN_NO_BUMP_SCALE : 0) |
+		         (uv ? PATTERN_UV : 0),
 		.frequency = (float)pg->frequency, .phase = (float)pg->phase, .wave_exponent = (float)pg->wave_exponent,
 		.bump_size = (float)pg->bump_size, .normal = { (float)pg->accuracy, (float)pg->altitude[0], (float)pg->altitude[1], 0 },
 		.params = { f4v(pg->params[0]), f4v(pg->params[1]) },
@@ -178,13 +187,18 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 	int first = lt->n_maps;
 	lt->n_maps += pg->n_map;
 	lt->maps = grow_to(lt->maps, &lt->cap_maps, lt->n_maps, sizeof *lt->maps);
+	struct surface sub = { 0 };   /* a uv_mapped pattern's textures are uv_mapped */
+	if (sf) {
+		sub = *sf;
+		sub.uv |= uv;
+	}
 	for (int i = 0; i < pg->n_map; i++) {
 		const scene_map_entry *e = &pg->map[i];
 		dev_map_entry de = entry_colour(e->colour, e->value);
 		if (sf)
-			de.material = lower_layers(lt, s, sf, e->texture, &inner, -1, depth + 1);
+			de.material = lower_layers(lt, s, &sub, e->texture, &inner, -1, depth + 1);
 		else if (e->pigment >= 0 && depth + 1 < NEST_MAX)
-			de.pigment = flatten(lt, s, e->pigment, &inner, depth + 1, NULL);
+			de.pigment = flatten(lt, s, e->pigment, &inner, depth + 1, NULL, uv);
 		else if (e->pigment >= 0)
 			diag_warning(pg->loc, "pigments nested more than %d deep in maps: the deeper ones are "
 			             "their average colour", NEST_MAX);
@@ -192,6 +206,8 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 		if (!sf && (e->colour[3] != 0 || e->colour[4] != 0))
 			lt->see_through = 1;
 	}
+	if (pg->kind == PATTERN_IMAGE_PATTERN || pg->kind == PATTERN_BUMP_MAP || pg->kind == PATTERN_MATERIAL_MAP)
+		lower_images(lt, s);
 	if (pg->kind == PATTERN_IMAGE_MAP) {
 		/* its one map entry is its average; texture_image reads the image */
 		lower_images(lt, s);
@@ -201,6 +217,15 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 	}
 	lt->patterns[at] = d;
 	return at;
+}
+
+/* Whether m's patterns are uv_mapped, by itself or by its object; a
+ * texture { uv_mapping } is placed by its own transformations only. */
+static bool material_uv(const struct surface *sf, const scene_material *m, const xform **to_world)
+{
+	if (m->uv != SCENE_UV_NONE)
+		*to_world = &m->uv_xf;
+	return m->uv != SCENE_UV_NONE || sf->uv;
 }
 
 /* One texture's material (no layers, no pattern of textures), placed by
@@ -232,11 +257,12 @@ static dev_material lower_plain(lower_textures *lt, const scene *s, const struct
 	if (p[3] != 0 || p[4] != 0)
 		lt->see_through = 1;
 	d.media = lower_media(lt, s, in->media, to_world, &d.n_media);
+	bool uv = material_uv(sf, m, &to_world);
 	if (m->pattern >= 0 && m->pattern < s->n_pigments)
-		d.pattern = flatten(lt, s, m->pattern, to_world, 0, NULL);
+		d.pattern = flatten(lt, s, m->pattern, to_world, 0, NULL, uv);
 	/* the kernels do not perturb the normals of a mesh's own textures yet */
 	if (m->normal >= 0 && m->normal < s->n_pigments && !local)
-		d.normal = flatten(lt, s, m->normal, to_world, 0, NULL);
+		d.normal = flatten(lt, s, m->normal, to_world, 0, NULL, uv);
 	return d;
 }
 
@@ -249,7 +275,7 @@ static int add_sub(lower_textures *lt)
 int lower_texture_pigment(lower_textures *lt, const scene *s, int pigment)
 {
 	xform identity = scene_xform_identity();
-	return flatten(lt, s, pigment, &identity, 0, NULL);
+	return flatten(lt, s, pigment, &identity, 0, NULL, false);
 }
 
 int lower_texture_density(lower_textures *lt, const scene *s, int pattern, const float rgb[3], const xform *to_world)
@@ -258,7 +284,7 @@ int lower_texture_density(lower_textures *lt, const scene *s, int pattern, const
 	for (int k = 0; k < 3; k++)
 		m.pigment[k] = rgb[k];
 	m.pattern = pattern;
-	struct surface sf = { &m, 0 };
+	struct surface sf = { &m, 0, false };
 	dev_material d = lower_plain(lt, s, &sf, &m, to_world);
 	int at = add_sub(lt);
 	lt->subs[at] = d;
@@ -280,7 +306,8 @@ static dev_material lower_one(lower_textures *lt, const scene *s, const struct s
 		return d;
 	}
 	d.flags |= MATERIAL_TEXTURE_MAP;
-	d.pattern = flatten(lt, s, m->texture_map, to_world, depth, sf);
+	bool uv = material_uv(sf, m, &to_world);
+	d.pattern = flatten(lt, s, m->texture_map, to_world, depth, sf, uv);
 	return d;
 }
 
@@ -307,7 +334,7 @@ static int lower_layers(lower_textures *lt, const scene *s, const struct surface
 
 dev_material lower_texture(lower_textures *lt, const scene *s, const scene_material *m, int local)
 {
-	struct surface sf = { m, local };
+	struct surface sf = { m, local, m->uv == SCENE_UV_OBJECT };
 	if (m->layers < 0)
 		return lower_one(lt, s, &sf, m, &m->tex_xf, 0);
 	int top = lower_layers(lt, s, &sf, m->layers, &m->tex_xf, -1, 0);
@@ -316,7 +343,7 @@ dev_material lower_texture(lower_textures *lt, const scene *s, const scene_mater
 
 dev_material lower_interior_texture(lower_textures *lt, const scene *s, const scene_material *m)
 {
-	struct surface sf = { m, 0 };   /* the object's interior, as its outer side's */
+	struct surface sf = { m, 0, m->uv == SCENE_UV_OBJECT };   /* the object's interior, as its outer side's */
 	const scene_material *t = &s->textures[m->interior_texture - 1];
 	xform to_world = scene_xform_then(&t->tex_xf, &m->interior_xf);
 	if (t->layers < 0)

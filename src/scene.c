@@ -629,7 +629,8 @@ static const char *const pattern_names[] = {
 	"planar", "quilted", "radial", "ripples", "spherical", "spiral1", "spiral2", "spotted", "square",
 	"triangular", "waves", "wood", "wrinkles", "image_map", "function",
 	"average", "slope",
-	"mandel", "julia", "magnet",
+	"mandel", "julia", "magnet", "image_pattern", "bump_map",
+	"material_map",
 };
 _Static_assert(sizeof pattern_names / sizeof *pattern_names == PATTERN_COUNT, "a name for each pattern");
 
@@ -683,6 +684,8 @@ static void dump_pigment(FILE *out, const scene *s, int index, const scene_pigme
 		num(out, params[i]);
 	}
 	fprintf(out, " wave %d noise_generator %d", pg->wave, scene_noise_generator(s, pg));
+	if (pg->uv)
+		fputs(" uv_mapping", out);
 	if (pg->bump_size != 0 || pg->accuracy != 0) {
 		fnum(out, "bump_size", pg->bump_size);
 		fnum(out, "accuracy", pg->accuracy);

@@ -59,6 +59,8 @@ typedef struct {
 	double bump_size, accuracy;  /* a normal's: its amount (0.5) and accuracy (0.02) */
 	double altitude[2];      /* slope's altitude range: low, width (0: none) */
 	bool no_bump_scale;      /* a normal's transformations scale its bumps */
+	bool uv;                 /* uv_mapping: its point is the surface's <u, v, 0>, moved by
+	                          * its own transformations only, and so are its map's pigments */
 	bool normal_map;         /* a normal's map entries are normals (pigment: the normal's
 	                          * pattern, or -1: none), not its slope_map */
 	scene_warp warps[SCENE_MAX_WARPS];  /* POV-Ray's list: the first applies first; the
@@ -82,9 +84,18 @@ typedef struct {
 	float gamma;             /* SCENE_DECODE_POWER's */
 	bool gamma_given;        /* gamma written: decoded even with gamma correction off */
 	bool premultiplied;      /* rgb is multiplied by alpha */
+	bool data;               /* a bump_map's, image_pattern's or material_map's: decoded
+	                          * only by a gamma written, never into the working gamma
+	                          * (POV-Ray's); a material_map's red is its material numbers */
 	float average[4];        /* rgb and alpha, as the file has them */
 	src_loc loc;
 } scene_image;
+
+/* uv_mapping of a whole texture: none; texture { uv_mapping ... }; the
+ * object's uv_mapping (before its texture: its layers are uv_mapped too).
+ * Either way the patterns see <u, v, 0> moved by the texture's own
+ * transformations only (uv_xf), not by the object's after it, as in POV-Ray. */
+enum { SCENE_UV_NONE = 0, SCENE_UV_TEXTURE, SCENE_UV_OBJECT };
 
 /* A POV-Ray texture and interior, with POV-Ray 3.7's defaults
  * (scene_default_material). The path tracer turns these into a physically based
@@ -97,6 +108,8 @@ typedef struct {
 	int normal;              /* the normal's pattern (scene.pigments), or -1: none */
 	xform tex_xf;            /* the texture's space to world (to the mesh's space for a
 	                          * mesh's own textures): the transformations written after it */
+	int uv;                  /* SCENE_UV_: whether its patterns are uv_mapped, and how placed */
+	xform uv_xf;             /* with uv: the texture's own transformations */
 	/* A pattern of whole textures, or layered textures: then pigment[] is their
 	 * average and the finish the first's (or the top layer's), for what needs one
 	 * texture; tex_xf places the pattern and its textures, or the layers. */
@@ -475,6 +488,7 @@ typedef struct {
 	scene_material *sky_layers;  /* the sky_sphere's pigments as written (the last on top),
 	                              * its transformations in tex_xf, its emission in emission */
 	int n_sky_layers;
+	bool uv_mapped;       /* some texture is uv_mapped: a rotated sphere keeps its rotation */
 	bool sky_legacy;      /* the scene's #version is before 3.7: the sky_sphere's layers
 	                       * blend as POV-Ray 3.6 blends them */
 	scene_fog *fogs;      /* in the order written; they combine as POV-Ray combines them */

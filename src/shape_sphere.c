@@ -66,6 +66,17 @@ static double uniform_scale(const xform *t)
 	return len[0];
 }
 
+/* Whether t turns (or mirrors) what it moves: its linear part is not a
+ * positive multiple of the identity. */
+static bool rotated(const xform *t)
+{
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++)
+			if (i != j ? t->m[i][j] != 0 : t->m[i][i] != t->m[0][0] || !(t->m[0][0] > 0))
+				return true;
+	return false;
+}
+
 static int lower(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id)
 {
 	if (!(o->radius > 0) || !isfinite(o->radius)) {
@@ -75,7 +86,7 @@ static int lower(struct lowering *lw, const scene *s, const scene_object *o, int
 	double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
 	bounds(s, o, lo, hi);
 	double scale = uniform_scale(&o->xf), c[3];
-	if (scale > 0) {
+	if (scale > 0 && !(s->uv_mapped && rotated(&o->xf))) {   /* a sphere's uv turns with it */
 		scene_xform_point(&o->xf, o->p[0], c);
 		dev_prim p = { .a = { (float)c[0], (float)c[1], (float)c[2], (float)(o->radius * scale) },
 		               .type = PRIM_SPHERE, .link = -1 };
