@@ -166,6 +166,7 @@ inline uint path_tests(const uint *counts)
 	return counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA];
 }
 
+#if !defined(KERNELS_SOME) || defined(KERNELS_PATH)   /* lower_kernel_options: the kernels a render launches */
 kernel void render_pass(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, global long4 *film,
                         global uint *counters, global float4 *aov)
 {
@@ -192,3 +193,4 @@ kernel void render_pass(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, g
 	film[pixel] = acc;
 	film_add_counts(counters, counts);
 }
+#endif

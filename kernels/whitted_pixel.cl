@@ -187,6 +187,7 @@ inline void whitted_aa_write(const scene_data *sc, global long4 *film, global fl
  * the image's pixels with the row above and the column left of it, which
  * POV-Ray traces for the first blocks; for method 2, the top left corner of
  * pixel (i, first_row + j). Each image pixel's AOVs come from its point. */
+#if !defined(KERNELS_SOME) || defined(KERNELS_WHITTED_AA1) || defined(KERNELS_WHITTED_AA2)   /* lower_kernel_options: the kernels a render launches */
 kernel void whitted_aa_grid(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, global long4 *film,
                             global uint *counters, global float4 *aov, global float4 *grid, int first_row, int rows,
                             int method)
@@ -206,6 +207,7 @@ kernel void whitted_aa_grid(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *
 		film_add_aov(aov, py * p->width + px, &first, 0);
 	film_add_counts(counters, counts);
 }
+#endif
 
 /* POV-Ray's SupersampleOnePixel: the pixel's colour and depth x depth more
  * traces on a grid across it, each jittered, averaged. */
@@ -232,6 +234,7 @@ inline float4 whitted_aa_supersample(const scene_data *sc, real x, real y, float
  * the threshold is supersampled, and so is that neighbour unless it was
  * already; the neighbours outside the block keep their single trace and are
  * never supersampled. scratch holds the block's colours and flags. */
+#if !defined(KERNELS_SOME) || defined(KERNELS_WHITTED_AA1)   /* lower_kernel_options: the kernels a render launches */
 kernel void whitted_aa_m1(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, global long4 *film,
                           global uint *counters, global float4 *aov, global float4 *grid, int first_row, int rows,
                           float4 aa)
@@ -274,6 +277,7 @@ kernel void whitted_aa_m1(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p,
 			whitted_aa_write(&sc, film, aov, (first_row + y) * p->width + x, cur[y * p->width + x]);
 	film_add_counts(counters, counts);
 }
+#endif
 
 /* A square of method 2's subdivision: its centre and half side in POV-Ray's
  * pixel coordinates, the levels it may still be cut, its corners' colours
@@ -301,6 +305,7 @@ inline float4 whitted_aa_point(const scene_data *sc, real x, real y, float4 aa, 
  * with jitter; an uncut square is the mean of its corners. A point two
  * squares share is traced by each, at the same place with the same jitter, so
  * it is the colour POV-Ray keeps in its buffer. */
+#if !defined(KERNELS_SOME) || defined(KERNELS_WHITTED_AA2)   /* lower_kernel_options: the kernels a render launches */
 kernel void whitted_aa_m2(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, global long4 *film,
                           global uint *counters, global float4 *aov, global float4 *grid, int first_row, int rows,
                           float4 aa)
@@ -343,8 +348,10 @@ kernel void whitted_aa_m2(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p,
 	whitted_aa_write(&sc, film, aov, (first_row + y) * p->width + x, sum);
 	film_add_counts(counters, counts);
 }
+#endif
 
 /* Without anti-aliasing (-A): one trace at each pixel's centre, as povray -A. */
+#if !defined(KERNELS_SOME) || defined(KERNELS_WHITTED)   /* lower_kernel_options: the kernels a render launches */
 kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, global long4 *film,
                            global uint *counters, global float4 *aov)
 {
@@ -368,3 +375,4 @@ kernel void render_whitted(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p
 	film[pixel] = acc;
 	film_add_counts(counters, counts);
 }
+#endif

@@ -964,16 +964,20 @@ static int widen_trees(lower_result *out)
 
 const char *lower_kernel_options(const lower_result *lr)
 {
-	if (lr->functions)
-		return lr->layout == LOWER_LAYOUT_WIDE ? "-cl-std=CL1.2 -DBVH_WIDE=1 -DSCENE_FUNCTIONS=1"
-		                                        : "-cl-std=CL1.2 -DSCENE_FUNCTIONS=1";
-	return lr->layout == LOWER_LAYOUT_WIDE ? "-cl-std=CL1.2 -DBVH_WIDE=1" : "-cl-std=CL1.2";
+	static _Thread_local char buf[192];
+	int k = lr->kernels;
+	snprintf(buf, sizeof buf, "-cl-std=CL1.2%s%s%s%s%s%s%s", lr->layout == LOWER_LAYOUT_WIDE ? " -DBVH_WIDE=1" : "",
+	         lr->functions ? " -DSCENE_FUNCTIONS=1" : "", k ? " -DKERNELS_SOME=1" : "",
+	         k & LOWER_KERNELS_PATH ? " -DKERNELS_PATH=1" : "", k & LOWER_KERNELS_WHITTED ? " -DKERNELS_WHITTED=1" : "",
+	         k & LOWER_KERNELS_WHITTED_AA1 ? " -DKERNELS_WHITTED_AA1=1" : "",
+	         k & LOWER_KERNELS_WHITTED_AA2 ? " -DKERNELS_WHITTED_AA2=1" : "");
+	return buf;
 }
 
 int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 {
 	memset(out, 0, sizeof *out);
-	static const lower_options defaults = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_DEFAULT, 0, 0, 0, NULL };
+	static const lower_options defaults = { LOWER_BVH_SAH, 24, LOWER_LAYOUT_DEFAULT, 0, 0, 0, NULL, 0 };
 	struct lowering lw = { .opt = opt ? opt : &defaults, .s = s };
 	lw.target = &lw.top;
 	lw.meshes = calloc(s->n_meshes + 1, sizeof *lw.meshes);
@@ -1032,6 +1036,7 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	if (rc == 0)
 		rc = check_depths(out);
 	out->layout = lw.opt->layout;
+	out->kernels = lw.opt->kernels;
 	out->dev_nodes = out->nodes;
 	out->dev_node_bytes = (size_t)out->n_nodes * sizeof *out->nodes;
 	if (rc == 0 && out->layout == LOWER_LAYOUT_WIDE)

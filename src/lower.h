@@ -28,7 +28,14 @@ typedef struct {
 	int skip_unsupported;  /* --skip-unsupported: what lowering cannot do is left out with a warning */
 	int width, height;  /* the image's, for a mesh_camera's rays */
 	struct lower_cache *cache;  /* meshes' BVHs kept between calls (an animation's frames), or NULL */
+	int kernels;        /* the entry points a render launches (LOWER_KERNELS_); 0: all of them */
 } lower_options;
+
+/* Each integrator's kernel inlines the whole of its tracing and shading, and
+ * PoCL compiles every kernel of a program: a render builds only those it
+ * launches (lower_kernel_options), a build a quarter as long. */
+enum { LOWER_KERNELS_PATH = 1, LOWER_KERNELS_WHITTED = 2, LOWER_KERNELS_WHITTED_AA1 = 4,
+       LOWER_KERNELS_WHITTED_AA2 = 8 };
 
 /* The BVHs of meshes, kept from one lower_scene to the next (lower_cache.c):
  * a mesh whose triangles are those of a mesh of the previous call gets a copy
@@ -78,6 +85,7 @@ typedef struct {
 	bvh_node *nodes;          /* the top level's, then each mesh's */
 	int n_nodes;
 	int layout;               /* the kernels' node layout, from lower_options */
+	int kernels;              /* the entry points to build, from lower_options */
 	bvh_wnode *wnodes;        /* the wide layout's nodes, the top level's root first; else NULL */
 	int n_wnodes;
 	const void *dev_nodes;    /* what the kernels' node buffer holds: nodes or wnodes */

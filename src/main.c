@@ -761,8 +761,13 @@ static int render_scene(const struct options *o, const scene *s, const char *out
                         const split_inputs *in, render_keep *keep, const struct frame_info *fi)
 {
 	lower_result lr;
+	int aa = o->integrator == INTEGRATOR_WHITTED && o->pov.antialias == 1 ? o->pov.aa_method : 0;
 	lower_options lo = { o->bvh, o->median_depth, o->bvh_layout, o->skip_unsupported, o->width, o->height,
-	                     fi->frames > 1 ? render_keep_cache(keep) : NULL };
+	                     fi->frames > 1 ? render_keep_cache(keep) : NULL,
+	                     o->integrator != INTEGRATOR_WHITTED ? LOWER_KERNELS_PATH
+	                     : aa == 2                          ? LOWER_KERNELS_WHITTED_AA2
+	                     : aa == 1                          ? LOWER_KERNELS_WHITTED_AA1
+	                                                        : LOWER_KERNELS_WHITTED };
 	int failed = lower_scene(s, &lo, &lr);
 	if (!failed && o->stats)
 		print_bvh_stats(s, &lr);

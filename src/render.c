@@ -358,8 +358,11 @@ static int run_passes(struct pass_loop *pl, film *f)
 static int setup(struct pass_loop *pl, cl_program prog, lower_result *lr)
 {
 	cl_int err;
-	/* the integrators' kernels take the same buffers */
-	const char *name = pl->params.integrator == INTEGRATOR_WHITTED ? "render_whitted" : "render_pass";
+	/* the integrators' kernels take the same buffers first, and a program
+	 * holds only those its render launches (LOWER_KERNELS_) */
+	const char *name = pl->params.integrator != INTEGRATOR_WHITTED ? "render_pass"
+	                   : pl->rs->aa_method > 0                     ? "whitted_aa_grid"
+	                                                               : "render_whitted";
 	pl->k = clCreateKernel(prog, name, &err);
 	if (!pl->k)
 		return device_fail("clCreateKernel", err);
