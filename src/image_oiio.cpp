@@ -21,11 +21,11 @@
 using namespace OIIO;
 
 /* Files are read in forked children (src/loader.c). A thread pool that
- * OpenEXR or OpenImageIO made in the parent (OpenImageIO makes OpenEXR's as
- * soon as it looks at an .exr name) is in a child without its threads, and a
- * read there waits for them forever: both libraries work in the calling
- * thread, set before either makes a pool. */
-static const bool one_thread = OIIO::attribute("threads", 1) && OIIO::attribute("exr_threads", -1);
+ * OpenEXR made in the parent (OpenImageIO makes it as soon as it looks at an
+ * .exr name) is in a child without its threads, and a read there waits for
+ * them forever: OpenEXR works in the calling thread, set before it makes a
+ * pool. */
+static const bool exr_without_threads = OIIO::attribute("exr_threads", -1);
 
 static bool is_linear_format(const std::string &path)
 {
