@@ -504,9 +504,8 @@ static int math2(struct eval *e, const ast_node *n, double a, double b, double *
 	}
 }
 
-/* (int) of a double as x86 does it: NaN and out of range give INT_MIN. POV-Ray's
- * seed() and bitwise functions cast so, and its random sequences depend on it. */
-static int c_int(double f)
+/* POV-Ray's seed() and bitwise functions cast so, and its random sequences depend on it. */
+int eval_int_of(double f)
 {
 	if (!(f > (double)INT_MIN - 1 && f < (double)INT_MAX + 1))
 		return INT_MIN;
@@ -523,14 +522,14 @@ static int variadic(struct eval *e, const ast_node *n, double *r)
 	if (floats(e, n, a, k))
 		return -1;
 	*r = a[0];
-	int bits = c_int(a[0]);
+	int bits = eval_int_of(a[0]);
 	for (int i = 1; i < k; i++) {
 		if (n->kw == KW_MAX && a[i] > *r)
 			*r = a[i];
 		if (n->kw == KW_MIN && a[i] < *r)
 			*r = a[i];
-		bits = n->kw == KW_BITWISE_AND ? bits & c_int(a[i]) : n->kw == KW_BITWISE_OR ? bits | c_int(a[i])
-		     : bits ^ c_int(a[i]);
+		bits = n->kw == KW_BITWISE_AND ? bits & eval_int_of(a[i]) : n->kw == KW_BITWISE_OR ? bits | eval_int_of(a[i])
+		     : bits ^ eval_int_of(a[i]);
 	}
 	if (n->kw != KW_MAX && n->kw != KW_MIN)
 		*r = bits;
@@ -557,11 +556,11 @@ static int rng(struct eval *e, const ast_node *n, double *r)
 	struct rng *g = &e->rng;
 	if (n->kw == KW_SEED) {
 		g->state = eval_xrealloc(g->state, (g->n + 1) * sizeof *g->state);
-		g->state[g->n] = (unsigned)c_int(a);
+		g->state[g->n] = (unsigned)eval_int_of(a);
 		*r = g->n++;
 		return 0;
 	}
-	int i = c_int(a);
+	int i = eval_int_of(a);
 	if (i < 0 || i >= g->n) {
 		eval_error(e, n->kids[0]->loc, "rand() needs a stream made by seed(), not %g", a);
 		return -1;
@@ -684,8 +683,8 @@ static int width_prec(struct eval *e, const ast_node *n, int at, int *w, int *p)
 	double a[2];
 	if (eval_expect_float(e, n->kids[at], &a[0]) || eval_expect_float(e, n->kids[at + 1], &a[1]))
 		return -1;
-	*w = c_int(a[0]);
-	*p = c_int(a[1]);
+	*w = eval_int_of(a[0]);
+	*p = eval_int_of(a[1]);
 	if (*w > 200 || *w < -200)
 		*w = *w > 0 ? 200 : -200;
 	return 0;

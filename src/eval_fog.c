@@ -57,7 +57,7 @@ static int fog_turbulence(struct eval *e, const ast_node *item, scene_fog *f)
 	case KW_OCTAVES:
 		if (eval_expect_float(e, item->kids[0], &x))
 			return -1;
-		f->octaves = x < 1 ? 1 : x > 10 ? 10 : (int)x;
+		f->octaves = x < 1 ? 1 : x > 10 ? 10 : eval_int_of(x);
 		return 0;
 	case KW_OMEGA:
 		return eval_expect_float(e, item->kids[0], &f->omega);
@@ -81,10 +81,10 @@ static int fog_arg(struct eval *e, const ast_node *item, scene_fog *f)
 	case KW_FOG_TYPE:
 		if (eval_expect_float(e, item->kids[0], &x))
 			return -1;
-		f->type = (int)x;
+		f->type = eval_int_of(x);
 		if (f->type != SCENE_FOG_CONSTANT && f->type != SCENE_FOG_GROUND)   /* POV-Ray's constant fog */
-			eval_warning(e, item->kids[0]->loc, "unknown fog_type %d (1: constant, 2: ground); "
-			             "a constant fog is made, as POV-Ray does", f->type);
+			eval_warning(e, item->kids[0]->loc, "unknown fog_type %g (1: constant, 2: ground); "
+			             "a constant fog is made, as POV-Ray does", x);
 		return 0;
 	default:
 		return 1;

@@ -110,7 +110,7 @@ static int magnet(struct eval *e, struct cursor *c, const ast_node *first, scene
 			           "invalid magnet pattern: expected 'mandel' or 'julia' after its type");
 		return -1;
 	}
-	if ((int)type != 1 && (int)type != 2) {
+	if (eval_int_of(type) != 1 && eval_int_of(type) != 2) {
 		eval_error(e, first->loc, "invalid magnet-%s pattern type %g: valid types are 1 and 2", name, type);
 		return -1;
 	}
@@ -147,10 +147,10 @@ static int exponent(struct eval *e, const ast_node *item, scene_pigment *pg)
 	}
 	if (eval_expect_float(e, item->kids[0], &v))
 		return -1;
-	int n = (int)v;
+	int n = eval_int_of(v);
 	if (n < 2 || n > FRACTAL_MAX_EXPONENT) {
-		eval_warning(e, item->loc, "invalid %s pattern exponent %d: supported exponents are 2 to %d; "
-		             "using 2", scene_pattern_name(pg->kind), n, FRACTAL_MAX_EXPONENT);
+		eval_warning(e, item->loc, "invalid %s pattern exponent %g: supported exponents are 2 to %d; "
+		             "using 2", scene_pattern_name(pg->kind), v, FRACTAL_MAX_EXPONENT);
 		n = 2;
 	}
 	pg->params[0][1] = n;
@@ -166,7 +166,7 @@ static int colouring(struct eval *e, struct cursor *c, const ast_node *at, const
 	int max = interior ? 6 : 8;
 	if (type_node ? eval_expect_float(e, type_node, &type) : next_float(e, c, at->loc, "a type", &type))
 		return -1;
-	if (type < 0 || (int)type > max) {
+	if (!(type >= 0 && type < max + 1)) {
 		eval_error(e, at->loc, "invalid fractal pattern %s type %g: valid types are 0 to %d", which, type, max);
 		return -1;
 	}

@@ -300,6 +300,10 @@ int eval_expr(struct eval *e, const ast_node *n, value *out);
 int eval_component(struct eval *e, const ast_node *n, value *base, value *out);
 int eval_expect_float(struct eval *e, const ast_node *n, double *f);
 int eval_expect_int(struct eval *e, const ast_node *n, int *i);
+/* (int)f as POV-Ray gets it on x86: NaN and values out of int's range give INT_MIN
+ * (a plain C cast is undefined there). Every float a scene gives that becomes an
+ * int goes through this or a range check first. */
+int eval_int_of(double f);
 int eval_expect_vector(struct eval *e, const ast_node *n, double out[3]);
 int eval_expect_color(struct eval *e, const ast_node *n, double out[5]);
 int eval_expect_string(struct eval *e, const ast_node *n, char **out);

@@ -71,10 +71,10 @@ static int media_scattering(struct eval *e, const ast_node *b, scene_media *m)
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
 		if (n == 0 && AST_IS_EXPRESSION(item->kind)) {
 			if ((rc = eval_expect_float(e, item, &x)) == 0) {
-				m->type = (int)x;
+				m->type = eval_int_of(x);
 				if (m->type < SCENE_SCATTER_ISOTROPIC || m->type > SCENE_SCATTER_HG)   /* POV-Ray's isotropic */
-					eval_warning(e, item->loc, "unknown scattering type %d (1 to 5); isotropic scattering "
-					             "is used, as POV-Ray does", m->type);
+					eval_warning(e, item->loc, "unknown scattering type %g (1 to 5); isotropic scattering "
+					             "is used, as POV-Ray does", x);
 			}
 		} else if (n == 1 && AST_IS_EXPRESSION(item->kind)) {
 			rc = media_colour(e, item, "scattering", m->scattering);

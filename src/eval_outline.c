@@ -719,7 +719,7 @@ static int text_args(struct eval *e, struct cursor *c, const ast_node *b, scene_
 		double n;
 		if (next_float(e, c, b, "a font number after internal", &n))
 			return -1;
-		font = eval_xstrdup(internal_font((int)n));
+		font = eval_xstrdup(internal_font(eval_int_of(n)));
 	} else {
 		if (!err)
 			eval_error(e, item ? item->loc : b->loc, "text needs ttf \"Font\" or internal N first");

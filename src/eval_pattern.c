@@ -734,14 +734,15 @@ static int image_map_item(struct eval *e, const ast_node *n, struct image_map_re
 	case IM_INTERPOLATE:
 		if (eval_expect_float(e, n, &v))
 			return -1;
-		if ((int)v != 2 && (int)v != 3 && (int)v != 4) {
+		int k = eval_int_of(v);
+		if (k != 2 && k != 3 && k != 4) {
 			eval_error(e, n->loc, "interpolate is 2 (bilinear), 3 (bicubic) or 4 (normalized distance)");
 			return -1;
 		}
-		if ((int)v == 3)
+		if (k == 3)
 			eval_warn_once(e, n->loc, "interpolate 3", "interpolate 3 (bicubic) is not supported yet; "
 			               "using 2 (bilinear)");
-		r->pg->params[0][2] = (int)v == 3 ? 2 : (int)v;
+		r->pg->params[0][2] = k == 3 ? 2 : k;
 		break;
 	case IM_GAMMA:
 		if (eval_expect_float(e, n, &r->gamma))
@@ -754,7 +755,7 @@ static int image_map_item(struct eval *e, const ast_node *n, struct image_map_re
 	case IM_PREMUL:
 		if (eval_expect_float(e, n, &v))
 			return -1;
-		r->premul = (int)v != 0;
+		r->premul = eval_int_of(v) != 0;
 		break;
 	case IM_FT:
 		if (name && strcmp(name, AST_WORD_ALL) == 0) {

@@ -245,7 +245,7 @@ static int camera_cylinder(struct eval *e, struct cursor *c, const ast_node *ite
 	}
 	if (eval_expect_float(e, v, &n))
 		return -1;
-	if ((int)n < 1 || (int)n > 4 || !(n > -1e9 && n < 1e9)) {
+	if (eval_int_of(n) < 1 || eval_int_of(n) > 4) {
 		eval_error(e, v->loc, "invalid cylinder camera type %g: the types are 1 to 4", n);
 		return -1;
 	}
