@@ -7,14 +7,14 @@
  * blur focuses each ray at that direction times a fixed length. */
 
 /* cos and sin of the angle of (x, y), with angle 0 at the centre. */
-inline float2 camera_polar(float x, float y, float rad)
+static inline float2 camera_polar(float x, float y, float rad)
 {
 	return rad > 0.0f ? (float2)(x, y) / rad : (float2)(1.0f, 0.0f);
 }
 
 /* The ray at angle theta from direction, turned by phi from right towards up:
  * the fisheye and omnimax cameras' rays. */
-inline float3 camera_sphere(float3 r, float3 u, float3 d, float2 phi, float theta)
+static inline float3 camera_sphere(float3 r, float3 u, float3 d, float2 phi, float theta)
 {
 	float st = sin(theta);
 	return (phi.x * st) * r + (phi.y * st) * u + cos(theta) * d;
@@ -22,7 +22,7 @@ inline float3 camera_sphere(float3 r, float3 u, float3 d, float2 phi, float thet
 
 /* The fisheye: the circle of radius 1 in units of |right| and |up| about the
  * image's centre sees the angle right.w across; outside it, no ray. */
-inline bool camera_fisheye(global const dev_params *p, float x, float y, float lr, float lu,
+static inline bool camera_fisheye(global const dev_params *p, float x, float y, float lr, float lu,
                            float3 r, float3 u, float3 d, float3 *dir)
 {
 	x *= 2.0f * lr;
@@ -37,7 +37,7 @@ inline bool camera_fisheye(global const dev_params *p, float x, float y, float l
 /* The omnimax projection (a polynomial fit of the dome's lens), its circle
  * moved to the image's top when the image is wider than tall, and nothing
  * more than 45 degrees below the axis. */
-inline bool camera_omnimax(float x, float y, float lr, float lu, float3 r, float3 u, float3 d, float3 *dir)
+static inline bool camera_omnimax(float x, float y, float lr, float lu, float3 r, float3 u, float3 d, float3 *dir)
 {
 	const float wide = 1.283458f;
 	float aspect = lr / lu;
@@ -66,7 +66,7 @@ inline bool camera_omnimax(float x, float y, float lr, float lu, float3 r, float
 /* The panoramic camera (Graphics Gems III): 180 degrees across, from -right on
  * the left edge through direction to right, and up tan(180 y degrees); its
  * vectors keep their lengths. */
-inline float3 camera_panoramic(global const dev_params *p, float x, float y)
+static inline float3 camera_panoramic(global const dev_params *p, float x, float y)
 {
 	float a = (0.5f - x) * M_PI_F, b = M_PI_F * y;
 	float ty = tan(b);
@@ -77,7 +77,7 @@ inline float3 camera_panoramic(global const dev_params *p, float x, float y)
 
 /* v turned by angle a about the unit axis k, as POV-Ray's
  * Compute_Axis_Rotation_Transform turns points. */
-inline float3 camera_rotate(float3 v, float3 k, float a)
+static inline float3 camera_rotate(float3 v, float3 k, float a)
 {
 	float c = cos(a), s = sin(a);
 	return c * v + s * cross(k, v) + ((1.0f - c) * dot(k, v)) * k;
@@ -85,7 +85,7 @@ inline float3 camera_rotate(float3 v, float3 k, float a)
 
 /* The spherical camera: latitude y times the vertical angle (up.w) about
  * right, then longitude x times the horizontal angle (right.w) about up. */
-inline float3 camera_spherical(global const dev_params *p, float x, float y)
+static inline float3 camera_spherical(global const dev_params *p, float x, float y)
 {
 	float3 r = normalize(p->cam_right.xyz), u = normalize(p->cam_up.xyz);
 	float3 v = camera_rotate(p->cam_direction.xyz, r, -y * p->cam_up.w);
@@ -94,7 +94,7 @@ inline float3 camera_spherical(global const dev_params *p, float x, float y)
 
 /* The types that turn their rays: unit right, up and direction, the lengths
  * of right and up as the image's proportions, the angle in right.w. */
-inline bool camera_bent(global const dev_params *p, int type, float x, float y, float3 *o, float3 *dir)
+static inline bool camera_bent(global const dev_params *p, int type, float x, float y, float3 *o, float3 *dir)
 {
 	float lr = length(p->cam_right.xyz), lu = length(p->cam_up.xyz), angle = p->cam_right.w;
 	float3 r = p->cam_right.xyz / lr, u = p->cam_up.xyz / lu, d = normalize(p->cam_direction.xyz);
@@ -127,7 +127,7 @@ inline bool camera_bent(global const dev_params *p, int type, float x, float y, 
 
 /* The ray of the image point (px + jx, py + jy) in pixels from the top left:
  * false where the camera makes none. dir is not normalized. */
-inline bool camera_ray(global const dev_params *p, int px, int py, float jx, float jy, float3 *o, float3 *dir)
+static inline bool camera_ray(global const dev_params *p, int px, int py, float jx, float jy, float3 *o, float3 *dir)
 {
 	float x = ((float)px + jx) / (float)p->width - 0.5f;
 	float y = 0.5f - ((float)py + jy) / (float)p->height;
@@ -159,7 +159,7 @@ inline bool camera_ray(global const dev_params *p, int px, int py, float jx, flo
  * POV-Ray moves the eye by aperture / 2 times a point of its sample grid,
  * which lies in a disc of radius 1/2: the lens's radius is aperture / 4.
  * Returns the origin and makes dir a unit vector. */
-inline float3 camera_lens(global const dev_params *p, float3 o, float3 *dir, float2 disc)
+static inline float3 camera_lens(global const dev_params *p, float3 o, float3 *dir, float2 disc)
 {
 	float dl = length(p->cam_direction.xyz);
 	if (p->lens.x > 0.0f && dl > 0.0f) {

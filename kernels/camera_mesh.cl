@@ -2,7 +2,7 @@
  * mesh_camera reads the rays lower_camera_mesh.c made for each pixel; the
  * other types are camera.cl's. With several rays a pixel, a sample's
  * sub-pixel place picks its ray, so the samples share the rays out evenly. */
-inline bool camera_view(const scene_data *sc, int px, int py, float jx, float jy, float3 *o, float3 *dir)
+static inline bool camera_view(const scene_data *sc, int px, int py, float jx, float jy, float3 *o, float3 *dir)
 {
 	global const dev_params *p = sc->p;
 	if ((int)p->lens.z != CAMERA_MESH)

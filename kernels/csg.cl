@@ -14,7 +14,7 @@
  * the CSG's inside is on the leaf's outside there. The stacks are bits, the
  * top in bit 0: v1 with the point inside leaf k, v0 with it outside, has for
  * the entries that hold leaf k. */
-inline bool csg_classify(global const dev_prim *prims, global const dev_prim *csg, int k, float3 x, bool *flip)
+static inline bool csg_classify(global const dev_prim *prims, global const dev_prim *csg, int k, float3 x, bool *flip)
 {
 	int first = as_int(csg->a.x), n = as_int(csg->a.y), n_ops = as_int(csg->a.w);
 	global const dev_prim *prog = &prims[as_int(csg->a.z)];
@@ -56,7 +56,7 @@ inline bool csg_classify(global const dev_prim *prims, global const dev_prim *cs
 
 /* The nearest point of the CSG's surface in (tmin, tmax), or tmax; *leaf is the
  * leaf's primitive there. */
-inline float csg_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *csg,
+static inline float csg_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *csg,
                            float tmin, float tmax, int *leaf, bool *flip)
 {
 	int first = as_int(csg->a.x), n = csg->link;   /* the leaves after these are clipped_by's */

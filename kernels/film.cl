@@ -10,14 +10,14 @@ typedef struct {
 	int object;    /* -1: nothing */
 } first_hit;
 
-inline float3 film_finite(float3 l)
+static inline float3 film_finite(float3 l)
 {
 	return isfinite(l.x) && isfinite(l.y) && isfinite(l.z) ? l : (float3)(0.0f);
 }
 
 /* The aov buffer's sums (shared.h, AOV_FLOAT4S): albedo, normal and depth of
  * the samples that hit, and the object of the pixel's sample 0. */
-inline void film_add_aov(global float4 *aov, int pixel, const first_hit *f, int sample)
+static inline void film_add_aov(global float4 *aov, int pixel, const first_hit *f, int sample)
 {
 	global float4 *a = aov + AOV_FLOAT4S * pixel;
 	if (f->object >= 0) {
@@ -36,7 +36,7 @@ inline void film_add_aov(global float4 *aov, int pixel, const first_hit *f, int 
  * +-FILM_SAMPLE_MAX, so 2^15 samples of it still fit in 63 bits. */
 #define FILM_SAMPLE_MAX 1048576.0f
 
-inline long4 film_fixed(float3 l, uint tests)
+static inline long4 film_fixed(float3 l, uint tests)
 {
 	float3 c = clamp(l, -FILM_SAMPLE_MAX, FILM_SAMPLE_MAX) * (float)(1 << FILM_FRACTION_BITS);
 	return (long4)(convert_long3_rte(c), (long)tests);
@@ -44,13 +44,13 @@ inline long4 film_fixed(float3 l, uint tests)
 
 /* The background's share of a sample (POV-Ray's transmittance, 1 - alpha),
  * summed where the aov buffer has room: a[2].z. */
-inline void film_add_transm(global float4 *aov, int pixel, float transm)
+static inline void film_add_transm(global float4 *aov, int pixel, float transm)
 {
 	aov[AOV_FLOAT4S * pixel + 2].z += clamp(transm, 0.0f, 1.0f);
 }
 
 /* The work item's ray and test counters into the pass's. */
-inline void film_add_counts(global uint *counters, const uint *counts)
+static inline void film_add_counts(global uint *counters, const uint *counts)
 {
 	for (int i = 0; i < COUNT_N; i++)
 		atomic_add(&counters[i], counts[i]);

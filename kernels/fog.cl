@@ -21,7 +21,7 @@ typedef struct {
 /* Turbulence shrinks the distance through the fog, less so when the segment
  * is long (ComputeConstantFogColour, ComputeGroundFogColour); mid is the
  * segment's middle. */
-inline float fog_turbulence(global const dev_fog *f, float3 mid, float width)
+static inline float fog_turbulence(global const dev_fog *f, float3 mid, float width)
 {
 	float k = exp(-width / f->distance);
 	if (k == 0.0f)   /* the far, and the rays that leave the scene: no noise at 1e10 */
@@ -34,7 +34,7 @@ inline float fog_turbulence(global const dev_fog *f, float3 mid, float width)
  * (in fog_alt units above fog_offset): 1 below 0, 1 / (1 + h^2) above, whose
  * integral is atan(h). atan(a) - atan(b) is atan((a - b) / (1 + ab)) for
  * a, b > 0, which keeps nearly level rays from cancelling away their digits. */
-inline float fog_ground_density(float start, float delta)
+static inline float fog_ground_density(float start, float delta)
 {
 	float end = start + delta;
 	if (start <= 0.0f && end <= 0.0f)
@@ -49,7 +49,7 @@ inline float fog_ground_density(float start, float delta)
 }
 
 /* The transmittance of one fog over (o, o + width * d), d of unit length. */
-inline float fog_transmittance(global const dev_fog *f, float3 o, float3 d, float width)
+static inline float fog_transmittance(global const dev_fog *f, float3 o, float3 d, float width)
 {
 	float density = 1.0f;
 	if (f->type == FOG_GROUND) {
@@ -62,7 +62,7 @@ inline float fog_transmittance(global const dev_fog *f, float3 o, float3 d, floa
 }
 
 /* Every fog over a segment of length t (INFINITY: a ray that leaves the scene). */
-inline fog_effect fog_segment(const scene_data *sc, float3 o, float3 d, float t, bool shadow)
+static inline fog_effect fog_segment(const scene_data *sc, float3 o, float3 d, float t, bool shadow)
 {
 	fog_effect e = { (float3)(1.0f), (float3)(0.0f) };
 	float width = fmin(t, FOG_HUGE);
@@ -80,7 +80,7 @@ inline fog_effect fog_segment(const scene_data *sc, float3 o, float3 d, float t,
 /* What is left of a light's colour after the fogs between x and the light,
  * dist along dir: POV-Ray fogs shadow rays only toward a light_source with
  * media_attenuation, and only outside solid objects (solids: those around x). */
-inline float3 fog_shadow(const scene_data *sc, global const dev_light *l, float3 x, float3 dir, float dist,
+static inline float3 fog_shadow(const scene_data *sc, global const dev_light *l, float3 x, float3 dir, float dist,
                          int solids)
 {
 	if (!l->media_attenuation || solids > 0 || sc->p->n_fogs == 0)

@@ -12,17 +12,17 @@ typedef struct scene_data scene_data;
 
 /* Function f of the scene (scene.functions) at (x, y, z), its first three
  * parameters (the others 0), in double where the device has it. */
-real scene_function_at(const scene_data *sc, int f, real x, real y, real z);
+static real scene_function_at(const scene_data *sc, int f, real x, real y, real z);
 
 #ifndef SCENE_FUNCTIONS
-real scene_function_at(const scene_data *sc, int f, real x, real y, real z)
+static real scene_function_at(const scene_data *sc, int f, real x, real y, real z)
 {
 	return (real)0;
 }
 #endif
 
 /* As a pattern sees it: at a point of the pattern's space. */
-inline float scene_function_pattern(const scene_data *sc, int f, float3 p)
+static inline float scene_function_pattern(const scene_data *sc, int f, float3 p)
 {
 	return (float)scene_function_at(sc, f, (real)p.x, (real)p.y, (real)p.z);
 }

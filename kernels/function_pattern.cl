@@ -13,7 +13,7 @@
 /* What aoi and slope see here: POV-Ray gives the function no surface. */
 #define FUNCTION_NO_NORMAL ((float3)(0.0f, 0.0f, 1.0f))
 
-inline float function_pattern_value(const scene_data *sc, global const dev_pattern *pt, float3 q, float3 n, float3 d)
+static inline float function_pattern_value(const scene_data *sc, global const dev_pattern *pt, float3 q, float3 n, float3 d)
 {
 	return pattern_plain(pt, sc->warps, pattern_warp_point(pt, sc->warps, q), n, d);
 }
@@ -21,7 +21,7 @@ inline float function_pattern_value(const scene_data *sc, global const dev_patte
 TEXTURE_PIGMENT_TREE(function_pigment_tree, function_pattern_value)
 
 /* A pattern function's value at p: its pattern's, through its warps. */
-real function_pattern(const scene_data *sc, int root, real x, real y, real z)
+static real function_pattern(const scene_data *sc, int root, real x, real y, real z)
 {
 	global const dev_pattern *pt = &sc->patterns[root];
 	float3 q = texture_pattern_point(pt, (float3)((float)x, (float)y, (float)z));
@@ -30,7 +30,7 @@ real function_pattern(const scene_data *sc, int root, real x, real y, real z)
 
 /* One channel of a pigment function's colour at p: red, green, blue, filter,
  * transmit, or (5) its grey, POV-Ray's weights of the channels. */
-real function_pigment(const scene_data *sc, int root, int channel, real x, real y, real z)
+static real function_pigment(const scene_data *sc, int root, int channel, real x, real y, real z)
 {
 	pigment_colour c = function_pigment_tree(sc, root, (float3)((float)x, (float)y, (float)z), (float2)(0.0f),
 	                                         FUNCTION_NO_NORMAL, -FUNCTION_NO_NORMAL);

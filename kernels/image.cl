@@ -10,7 +10,7 @@
  * Exported: image_pos, image_at, image_value, image_bump, image_material. */
 
 /* POV-Ray's wrap: v into [0, n). */
-inline float image_wrap(float v, float n)
+static inline float image_wrap(float v, float n)
 {
 	float t = fmod(v, n);
 	if (t < 0.0f)
@@ -19,7 +19,7 @@ inline float image_wrap(float v, float n)
 }
 
 /* The angle of (c, z) from +x in the x-z plane, in turns (POV-Ray's theta / 2 pi). */
-inline float image_turns(float c, float z)
+static inline float image_turns(float c, float z)
 {
 	float theta = z == 0.0f ? (c > 0.0f ? 0.0f : PATTERN_PI) : acos(clamp(c, -1.0f, 1.0f));
 	if (z < 0.0f)
@@ -28,7 +28,7 @@ inline float image_turns(float c, float z)
 }
 
 /* One texel: POV-Ray's no_interpolation (once: the nearest edge texel, else wrapped). */
-inline float4 image_texel(const scene_data *sc, global const dev_image *im, float x, float y, int once)
+static inline float4 image_texel(const scene_data *sc, global const dev_image *im, float x, float y, int once)
 {
 	int w = im->width, h = im->height;
 	int ix = once ? (x < 0.0f ? 0 : x >= (float)w ? w - 1 : (int)x) : (int)image_wrap(x, (float)w);
@@ -39,7 +39,7 @@ inline float4 image_texel(const scene_data *sc, global const dev_image *im, floa
 /* Where p (the pattern's space, warped) falls on pt's image, in texels, x to
  * the right and y down from the top row (POV-Ray's map_pos); false off a once
  * image, or where the map_type has no point. */
-bool image_pos(const scene_data *sc, global const dev_pattern *pt, float3 p, float *x, float *y)
+static bool image_pos(const scene_data *sc, global const dev_pattern *pt, float3 p, float *x, float *y)
 {
 	global const dev_image *im = &sc->images[(int)pt->params[0].x];
 	int type = (int)pt->params[0].y, once = pt->params[0].w != 0.0f;
@@ -88,7 +88,7 @@ bool image_pos(const scene_data *sc, global const dev_pattern *pt, float3 p, flo
 /* The colour at texel position (x, y): the texel, or POV-Ray's interpolation
  * of four (2 bilinear, 4 normalized distance), unmultiplied by alpha where
  * the image is premultiplied. */
-float4 image_at(const scene_data *sc, global const dev_pattern *pt, float x, float y)
+static float4 image_at(const scene_data *sc, global const dev_pattern *pt, float x, float y)
 {
 	global const dev_image *im = &sc->images[(int)pt->params[0].x];
 	int interp = (int)pt->params[0].z, once = pt->params[0].w != 0.0f;
@@ -123,7 +123,7 @@ float4 image_at(const scene_data *sc, global const dev_pattern *pt, float x, flo
 }
 
 /* POV-Ray's grey of a colour. */
-inline float image_grey(float4 c)
+static inline float image_grey(float4 c)
 {
 	return 0.297f * c.x + 0.589f * c.y + 0.114f * c.z;
 }
@@ -131,7 +131,7 @@ inline float image_grey(float4 c)
 /* image_pattern's value at p (warped): the grey of the colour there, or with
  * use_alpha (params[1].x) its transparency (its red without an alpha
  * channel: params[1].y 0), in [0, 1]; 0 off a once image. */
-float image_value(const scene_data *sc, global const dev_pattern *pt, float3 p)
+static float image_value(const scene_data *sc, global const dev_pattern *pt, float3 p)
 {
 	float x, y;
 	if (!image_pos(sc, pt, p, &x, &y))
@@ -145,7 +145,7 @@ float image_value(const scene_data *sc, global const dev_pattern *pt, float3 p)
  * bump_map takes the greys at the texel and at its neighbours down-left and
  * down-right as heights times the bump_size, and sets n to the normal of the
  * triangle they make, in a frame around n. Off a once image, n unchanged. */
-float3 image_bump(const scene_data *sc, global const dev_pattern *pt, float3 t, float3 n)
+static float3 image_bump(const scene_data *sc, global const dev_pattern *pt, float3 t, float3 n)
 {
 	global const dev_image *im = &sc->images[(int)pt->params[0].x];
 	float x, y, w = (float)im->width, h = (float)im->height, amount = pt->bump_size;
@@ -178,7 +178,7 @@ float3 image_bump(const scene_data *sc, global const dev_pattern *pt, float3 t, 
  * x: palette indices, or red * 255), folded into the textures as POV-Ray's
  * material_map does (a number past the count taken modulo it, the count itself
  * the last); 0 off a once image. */
-float image_material(const scene_data *sc, global const dev_pattern *pt, float3 p)
+static float image_material(const scene_data *sc, global const dev_pattern *pt, float3 p)
 {
 	float x, y;
 	if (!image_pos(sc, pt, p, &x, &y))

@@ -24,12 +24,12 @@
 
 /* The objects a ray of this bounce may not see: POV-Ray's no_image for the
  * camera's, no_reflection after a reflection. */
-inline int path_skip(int depth, bool reflected)
+static inline int path_skip(int depth, bool reflected)
 {
 	return depth == 0 ? OBJECT_NO_IMAGE : reflected ? OBJECT_NO_REFLECTION : 0;
 }
 
-inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, first_hit *first, float *transm)
+static inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, first_hit *first, float *transm)
 {
 	global const dev_params *p = sc->p;
 	float3 o, d;
@@ -161,7 +161,7 @@ inline float3 path_radiance(const scene_data *sc, int px, int py, uint key, firs
 
 /* The camera rays' node and primitive tests so far: the heat map's measure, as in
  * the reference paper's figure (--stats counts every kind of ray). */
-inline uint path_tests(const uint *counts)
+static inline uint path_tests(const uint *counts)
 {
 	return counts[COUNT_NODES + RAY_CAMERA] + counts[COUNT_PRIMS + RAY_CAMERA];
 }

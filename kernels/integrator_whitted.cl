@@ -63,25 +63,25 @@ typedef struct {
 	media_stack media; /* the interiors with media around it, for its shadow rays */
 } whitted_point;
 
-inline float whitted_max3(float3 c)
+static inline float whitted_max3(float3 c)
 {
 	return fmax(c.x, fmax(c.y, c.z));
 }
 
 /* POV-Ray's greyscale weights. */
-inline float whitted_grey(float3 c)
+static inline float whitted_grey(float3 c)
 {
 	return 0.297f * c.x + 0.589f * c.y + 0.114f * c.z;
 }
 
-inline float3 whitted_pow3(float3 c, float e)
+static inline float3 whitted_pow3(float3 c, float e)
 {
 	return e == 1.0f ? c : pow(c, (float3)(e));
 }
 
 /* POV-Ray's empirical Fresnel curve of "metallic": 0 at normal incidence, 1 at
  * grazing; metallic tints by the pigment where it is small. */
-inline float3 whitted_metallic_tint(float metallic, float cos_angle, float3 pigment)
+static inline float3 whitted_metallic_tint(float metallic, float cos_angle, float3 pigment)
 {
 	float x = fabs(acos(clamp(cos_angle, -1.0f, 1.0f))) / M_PI_2_F;
 	float f = clamp(0.014567225f / ((x - 1.12f) * (x - 1.12f)) - 0.011612903f, 0.0f, 1.0f);
@@ -90,7 +90,7 @@ inline float3 whitted_metallic_tint(float metallic, float cos_angle, float3 pigm
 
 /* The position of grid light (u, v) of an area light, and its axes when oriented
  * (TraceAreaLightSubsetShadowRay, without jitter). */
-inline float3 whitted_grid_point(global const dev_light *l, int size1, int size2, int u, int v, float3 a1, float3 a2)
+static inline float3 whitted_grid_point(global const dev_light *l, int size1, int size2, int u, int v, float3 a1, float3 a2)
 {
 	float ju = (float)u, jv = (float)v;
 	if (l->axis2.w > 0.0f) {   /* circular */
@@ -110,7 +110,7 @@ inline float3 whitted_grid_point(global const dev_light *l, int size1, int size2
 /* A shadow ray: through the media of the interiors it crosses when the scene
  * has any (POV-Ray's shadow rays carry the ray's interiors; area lights' start
  * outside them). */
-inline float3 whitted_shadow_in(const scene_data *sc, media_stack s, float3 x, float3 l, float tmin, float tmax,
+static inline float3 whitted_shadow_in(const scene_data *sc, media_stack s, float3 x, float3 l, float tmin, float tmax,
                                 float3 colour)
 {
 	if (sc->p->scene_flags & SCENE_MEDIA)
@@ -118,13 +118,13 @@ inline float3 whitted_shadow_in(const scene_data *sc, media_stack s, float3 x, f
 	return visibility_shadow(sc, x, l, tmin, tmax, colour);
 }
 
-inline float3 whitted_shadow(const scene_data *sc, float3 x, float3 l, float tmin, float tmax, float3 colour)
+static inline float3 whitted_shadow(const scene_data *sc, float3 x, float3 l, float tmin, float tmax, float3 colour)
 {
 	return whitted_shadow_in(sc, media_none(), x, l, tmin, tmax, colour);
 }
 
 /* The light of one grid point that reaches x. */
-inline float3 whitted_grid_sample(const scene_data *sc, global const dev_light *l, int s1, int s2, int u, int v,
+static inline float3 whitted_grid_sample(const scene_data *sc, global const dev_light *l, int s1, int s2, int u, int v,
                                   float3 a1, float3 a2, float3 x, float3 colour, float eps, int solids)
 {
 	float3 to = whitted_grid_point(l, s1, s2, u, v, a1, a2) - x;
@@ -137,7 +137,7 @@ inline float3 whitted_grid_sample(const scene_data *sc, global const dev_light *
 /* An area light's shadow: POV-Ray samples the grid's corners and splits a region
  * in four while its corners differ (or down to the adaptive level), averaging
  * the four quarters; the grid is size1 x size2 lights, unjittered. */
-inline float3 whitted_area_shadow(const scene_data *sc, global const dev_light *l, float3 x, float3 to_light,
+static inline float3 whitted_area_shadow(const scene_data *sc, global const dev_light *l, float3 x, float3 to_light,
                                   float3 colour, float eps, int solids)
 {
 	int s1 = (int)l->grid.x, s2 = (int)l->grid.y;
@@ -184,7 +184,7 @@ inline float3 whitted_area_shadow(const scene_data *sc, global const dev_light *
 }
 
 /* POV-Ray's diffuse term: pigment * light * |N.L|^brilliance * diffuse * opacity. */
-inline float3 whitted_diffuse(global const dev_material *f, float3 pigment, float3 n, float3 l, float3 light,
+static inline float3 whitted_diffuse(global const dev_material *f, float3 pigment, float3 n, float3 l, float3 light,
                               float opacity)
 {
 	float c = fabs(dot(n, l));
@@ -194,7 +194,7 @@ inline float3 whitted_diffuse(global const dev_material *f, float3 pigment, floa
 
 /* phong: the light direction against the mirror direction of the eye ray,
  * to the power phong_size; metallic tints it by the pigment. */
-inline float3 whitted_phong(global const dev_material *f, float3 pigment, float3 n, float3 d, float3 l, float3 light)
+static inline float3 whitted_phong(global const dev_material *f, float3 pigment, float3 n, float3 d, float3 l, float3 light)
 {
 	float3 r = d - 2.0f * dot(d, n) * n;
 	float c = dot(r, l);
@@ -206,7 +206,7 @@ inline float3 whitted_phong(global const dev_material *f, float3 pigment, float3
 }
 
 /* specular: the half vector against the normal, to the power 1/roughness. */
-inline float3 whitted_specular(global const dev_material *f, float3 pigment, float3 n, float3 d, float3 l,
+static inline float3 whitted_specular(global const dev_material *f, float3 pigment, float3 n, float3 d, float3 l,
                                float3 light)
 {
 	float3 h = 0.5f * (l - d);
@@ -223,7 +223,7 @@ inline float3 whitted_specular(global const dev_material *f, float3 pigment, flo
 
 /* The direction to a light, the distance its shadow ray goes, and its colour
  * after fade and spotlight (ComputeOneLightRay). */
-inline float3 whitted_light_ray(global const dev_light *l, float3 x, float3 *dir, float *dist)
+static inline float3 whitted_light_ray(global const dev_light *l, float3 x, float3 *dir, float *dist)
 {
 	float3 to = l->position.xyz - x;
 	if (l->kind == LIGHT_KIND_PARALLEL) {
@@ -240,7 +240,7 @@ inline float3 whitted_light_ray(global const dev_light *l, float3 x, float3 *dir
 }
 
 /* The sum of every light_source's diffuse and highlights at a point (ComputeDiffuseLight). */
-inline float3 whitted_lights(const scene_data *sc, global const dev_material *f, float3 pigment,
+static inline float3 whitted_lights(const scene_data *sc, global const dev_material *f, float3 pigment,
                              const whitted_point *pt, float opacity)
 {
 	float3 sum = (float3)(0.0f);
@@ -279,7 +279,7 @@ inline float3 whitted_lights(const scene_data *sc, global const dev_material *f,
 /* How much the surface reflects at this angle, and the reflected ray's weight
  * (ComputeReflectivity, then reflection's metallic). ior_ratio: the ior on the
  * far side over the near side's. */
-inline float3 whitted_reflectivity(global const dev_material *f, float3 pigment, float cos_i, float ior_ratio,
+static inline float3 whitted_reflectivity(global const dev_material *f, float3 pigment, float cos_i, float ior_ratio,
                                    float *weight)
 {
 	float3 lo = f->reflection.xyz, hi = f->reflection_max.xyz, r;
@@ -305,7 +305,7 @@ inline float3 whitted_reflectivity(global const dev_material *f, float3 pigment,
 	return r;
 }
 
-inline whitted_ray whitted_child(float3 o, float3 d, float3 mult, float exponent, float weight, int level, int kind,
+static inline whitted_ray whitted_child(float3 o, float3 d, float3 mult, float exponent, float weight, int level, int kind,
                                  int solids, media_stack media)
 {
 	whitted_ray r = { o, d, mult, exponent, weight, level, kind, solids, media, 0.0f };
@@ -314,7 +314,7 @@ inline whitted_ray whitted_child(float3 o, float3 d, float3 mult, float exponent
 
 /* Adds a child ray to fr: one along the same ray with the same exponent gets
  * its multiplier added (the parent adds mult * colour^exponent, so they sum). */
-inline void whitted_add_child(whitted_frame *fr, whitted_ray r)
+static inline void whitted_add_child(whitted_frame *fr, whitted_ray r)
 {
 	if (r.mult.x == 0.0f && r.mult.y == 0.0f && r.mult.z == 0.0f)
 		return;
@@ -339,7 +339,7 @@ inline void whitted_add_child(whitted_frame *fr, whitted_ray r)
  * seen through the layers above (filcol), and its reflection; the layers stop
  * where too little shows through (adc_bailout); the refracted ray goes along
  * the top layer's normal through all of them. */
-inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_point sp, int material, float w,
+static inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_point sp, int material, float w,
                             whitted_ray ray, int level, float t_hit, first_hit *first)
 {
 	global const dev_params *p = sc->p;
@@ -432,7 +432,7 @@ inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shading_poi
 }
 
 /* Traces one ray: its surface's own colour, and the rays it spawns as children. */
-inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_hit *first)
+static inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_hit *first)
 {
 	whitted_frame fr;
 	fr.ray = ray;
@@ -467,7 +467,7 @@ inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_
 
 /* The colour of a camera ray: POV-Ray's recursion, as a walk over a stack of
  * frames; a finished frame adds its colour to its parent's. */
-inline float3 whitted_radiance(const scene_data *sc, whitted_ray camera, first_hit *first, float *transm)
+static inline float3 whitted_radiance(const scene_data *sc, whitted_ray camera, first_hit *first, float *transm)
 {
 	global const dev_params *p = sc->p;
 	whitted_frame stack[WHITTED_FRAMES];

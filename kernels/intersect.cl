@@ -31,21 +31,21 @@ typedef float3 real3;
 #endif
 
 /* intersect_to_local and intersect_dir_to_local in that precision. */
-inline real3 intersect_to_local_real(global const dev_prim *p, float3 x)
+static inline real3 intersect_to_local_real(global const dev_prim *p, float3 x)
 {
 	real3 v = convert_real3(x);
 	return (real3)(dot(convert_real3(p->a.xyz), v) + p->a.w, dot(convert_real3(p->b.xyz), v) + p->b.w,
 	               dot(convert_real3(p->c.xyz), v) + p->c.w);
 }
 
-inline real3 intersect_dir_to_local_real(global const dev_prim *p, float3 d)
+static inline real3 intersect_dir_to_local_real(global const dev_prim *p, float3 d)
 {
 	real3 v = convert_real3(d);
 	return (real3)(dot(convert_real3(p->a.xyz), v), dot(convert_real3(p->b.xyz), v), dot(convert_real3(p->c.xyz), v));
 }
 
 /* The component k (0, 1, 2) of v. */
-inline float intersect_axis(float3 v, int k)
+static inline float intersect_axis(float3 v, int k)
 {
 	return k == 0 ? v.x : k == 1 ? v.y : v.z;
 }
@@ -53,7 +53,7 @@ inline float intersect_axis(float3 v, int k)
 /* A point in the space of a shape that has one (an ellipsoid's unit sphere, a
  * box's cube...) or of an instance (its mesh's): the rows a, b, c are the map
  * from world space. */
-inline float3 intersect_to_local(global const dev_prim *p, float3 x)
+static inline float3 intersect_to_local(global const dev_prim *p, float3 x)
 {
 	return (float3)(dot(p->a.xyz, x) + p->a.w, dot(p->b.xyz, x) + p->b.w, dot(p->c.xyz, x) + p->c.w);
 }
@@ -61,33 +61,33 @@ inline float3 intersect_to_local(global const dev_prim *p, float3 x)
 /* The same about a centre c, for a shape whose rows' w is the map's value at c
  * (lower_local_rows_about): only x - c is rounded, which keeps a shape far
  * from the origin as precise as one near it. */
-inline float3 intersect_to_local_about(global const dev_prim *p, float3 c, float3 x)
+static inline float3 intersect_to_local_about(global const dev_prim *p, float3 c, float3 x)
 {
 	float3 v = x - c;
 	return (float3)(dot(p->a.xyz, v) + p->a.w, dot(p->b.xyz, v) + p->b.w, dot(p->c.xyz, v) + p->c.w);
 }
 
 /* A direction into that space: not unit length there, so t keeps its meaning. */
-inline float3 intersect_dir_to_local(global const dev_prim *p, float3 d)
+static inline float3 intersect_dir_to_local(global const dev_prim *p, float3 d)
 {
 	return (float3)(dot(p->a.xyz, d), dot(p->b.xyz, d), dot(p->c.xyz, d));
 }
 
 /* A normal in that space to world space: normals map by the transpose of the
  * world-to-local map. */
-inline float3 intersect_normal_to_world(global const dev_prim *p, float3 n)
+static inline float3 intersect_normal_to_world(global const dev_prim *p, float3 n)
 {
 	return normalize(n.x * p->a.xyz + n.y * p->b.xyz + n.z * p->c.xyz);
 }
 
 /* A shape's own numbers: the a of its PRIM_DATA record. */
-inline float4 intersect_data(global const dev_prim *prims, global const dev_prim *p)
+static inline float4 intersect_data(global const dev_prim *prims, global const dev_prim *p)
 {
 	return prims[p->link].a;
 }
 
 /* The nearer of two roots lo <= hi that lies in (tmin, tmax), else tmax. */
-inline float intersect_pick(float lo, float hi, float tmin, float tmax)
+static inline float intersect_pick(float lo, float hi, float tmin, float tmax)
 {
 	if (lo > tmin && lo < tmax)
 		return lo;

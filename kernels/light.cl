@@ -12,7 +12,7 @@
 
 /* Concentric map of the square to the unit disc (Shirley and Chiu), for circular
  * area lights and the lens. */
-inline float2 light_square_to_disc(float u, float v)
+static inline float2 light_square_to_disc(float u, float v)
 {
 	float a = 2.0f * u - 1.0f, b = 2.0f * v - 1.0f;
 	if (a == 0.0f && b == 0.0f)
@@ -29,7 +29,7 @@ inline float2 light_square_to_disc(float u, float v)
 }
 
 /* POV-Ray's fade: 2 / (1 + (d / fade_distance) ^ fade_power). */
-inline float light_fade(global const dev_light *l, float dist)
+static inline float light_fade(global const dev_light *l, float dist)
 {
 	float fd = l->position.w, fp = l->color.w;
 	return fd > 0.0f && fp > 0.0f ? 2.0f / (1.0f + pow(dist / fd, fp)) : 1.0f;
@@ -37,7 +37,7 @@ inline float light_fade(global const dev_light *l, float dist)
 
 /* POV-Ray's spotlight: full inside radius, a smooth step to zero at falloff,
  * sharpened by cos^tightness. */
-inline float light_spot(global const dev_light *l, float3 to_surface)
+static inline float light_spot(global const dev_light *l, float3 to_surface)
 {
 	float c = dot(to_surface, l->spot.xyz);
 	if (c < l->cos_falloff)
@@ -52,7 +52,7 @@ inline float light_spot(global const dev_light *l, float3 to_surface)
 
 /* The sum over all light_sources of their contribution at x (normal n, facing
  * wo); solids: the solid objects around x, for fog_shadow. */
-inline float3 light_pov(const scene_data *sc, const bsdf *m, const material_lobes *lobes,
+static inline float3 light_pov(const scene_data *sc, const bsdf *m, const material_lobes *lobes,
                         float3 x, float3 ng, float3 n, float3 wo, uint key, uint dim, int solids, media_stack ms)
 {
 	float3 sum = (float3)(0.0f);
@@ -93,7 +93,7 @@ inline float3 light_pov(const scene_data *sc, const bsdf *m, const material_lobe
 }
 
 /* The index of the emitter whose cdf interval holds u. */
-inline int light_choose(global const dev_emitter *em, int n, float u)
+static inline int light_choose(global const dev_emitter *em, int n, float u)
 {
 	int lo = 0, hi = n - 1;
 	while (lo < hi) {
@@ -108,7 +108,7 @@ inline int light_choose(global const dev_emitter *em, int n, float u)
 
 /* The solid-angle pdf of sampling direction wi from x toward the emissive
  * primitive prim, hit at distance t: what MIS needs for rays that hit emitters. */
-inline float light_pdf(global const dev_emitter *em, global const dev_prim *prim, float3 x,
+static inline float light_pdf(global const dev_emitter *em, global const dev_prim *prim, float3 x,
                        float3 wi, float t)
 {
 	global const dev_emitter *e = &em[prim->link];
@@ -129,7 +129,7 @@ inline float light_pdf(global const dev_emitter *em, global const dev_prim *prim
 
 /* The radiance an emissive primitive sends from pos, reached along wi after
  * dist: its finish's emission times its pigment there. */
-inline float3 light_emitted(const scene_data *sc, int prim, float3 pos, float3 wi, float dist)
+static inline float3 light_emitted(const scene_data *sc, int prim, float3 pos, float3 wi, float dist)
 {
 	global const dev_material *m = &sc->materials[sc->prims[prim].material];
 	if (m->pattern < 0 && m->below < 0)
@@ -139,14 +139,14 @@ inline float3 light_emitted(const scene_data *sc, int prim, float3 pos, float3 w
 	return texture_emitted(sc, &sp);
 }
 
-inline float light_power_heuristic(float a, float b)
+static inline float light_power_heuristic(float a, float b)
 {
 	return a * a / (a * a + b * b);
 }
 
 /* A point pos on one emissive primitive chosen by power, seen from x along
  * wi (the sphere's visible cap when x is outside it), or NULL. */
-inline global const dev_emitter *light_emitter_sample(const scene_data *sc, float3 x, uint key, uint dim, float3 *wi,
+static inline global const dev_emitter *light_emitter_sample(const scene_data *sc, float3 x, uint key, uint dim, float3 *wi,
                                                       float3 *pos)
 {
 	global const dev_emitter *em = sc->emitters;
@@ -178,7 +178,7 @@ inline global const dev_emitter *light_emitter_sample(const scene_data *sc, floa
 }
 
 /* One sample of one emissive primitive, weighted against BSDF sampling. */
-inline float3 light_emitters(const scene_data *sc, const bsdf *m, const material_lobes *lobes, float3 x,
+static inline float3 light_emitters(const scene_data *sc, const bsdf *m, const material_lobes *lobes, float3 x,
                              float3 ng, float3 n, float3 wo, uint key, uint dim, media_stack ms, int solids)
 {
 	global const dev_params *p = sc->p;

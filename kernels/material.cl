@@ -23,7 +23,7 @@ typedef struct {
 /* POV-Ray's roughness is a Blinn exponent's reciprocal, phong_size a Phong
  * exponent (about a quarter of Blinn's); a Blinn exponent e matches GGX with
  * alpha = sqrt(2 / (e + 2)) (Walter et al. 2007). */
-inline float material_alpha_from_blinn(float e)
+static inline float material_alpha_from_blinn(float e)
 {
 	return clamp(sqrt(2.0f / (e + 2.0f)), 0.01f, 1.0f);
 }
@@ -33,7 +33,7 @@ inline float material_alpha_from_blinn(float e)
  * is diffuse, filter and transmit are transmission tinted by the pigment's
  * filter share, reflection is a mirror or GGX layer tinted by metallic, and
  * phong or specular a clear coat. */
-inline bsdf material_bsdf(global const dev_material *m, float3 rgb, float filter, float transmit)
+static inline bsdf material_bsdf(global const dev_material *m, float3 rgb, float filter, float transmit)
 {
 	bsdf d;
 	float t = clamp(filter + transmit, 0.0f, 1.0f);
@@ -61,7 +61,7 @@ inline bsdf material_bsdf(global const dev_material *m, float3 rgb, float filter
 
 /* An orthonormal basis around n without branches on a special axis
  * (Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 2017). */
-inline void material_basis(float3 n, float3 *t, float3 *b)
+static inline void material_basis(float3 n, float3 *t, float3 *b)
 {
 	float s = n.z >= 0.0f ? 1.0f : -1.0f;
 	float a = -1.0f / (s + n.z);
@@ -71,7 +71,7 @@ inline void material_basis(float3 n, float3 *t, float3 *b)
 }
 
 /* A direction about n with density cos(theta) / pi. */
-inline float3 material_sample_cosine(float3 n, float u1, float u2)
+static inline float3 material_sample_cosine(float3 n, float u1, float u2)
 {
 	float3 t, b;
 	material_basis(n, &t, &b);
@@ -79,14 +79,14 @@ inline float3 material_sample_cosine(float3 n, float u1, float u2)
 	return normalize(r * cos(phi) * t + r * sin(phi) * b + sqrt(fmax(0.0f, 1.0f - u1)) * n);
 }
 
-inline float material_luminance(float3 c)
+static inline float material_luminance(float3 c)
 {
 	return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }
 
 /* Unpolarised Fresnel reflectance of a dielectric interface; cos_i > 0 is on the
  * incident side and eta = n_transmitted / n_incident. 1 under total internal reflection. */
-inline float material_fresnel(float cos_i, float eta)
+static inline float material_fresnel(float cos_i, float eta)
 {
 	float sin2_t = (1.0f - cos_i * cos_i) / (eta * eta);
 	if (sin2_t >= 1.0f)
@@ -97,7 +97,7 @@ inline float material_fresnel(float cos_i, float eta)
 	return 0.5f * (rs * rs + rp * rp);
 }
 
-inline float material_schlick(float cos_i, float f0)
+static inline float material_schlick(float cos_i, float f0)
 {
 	float m = 1.0f - cos_i, m2 = m * m;
 	return f0 + (1.0f - f0) * m2 * m2 * m;
@@ -105,7 +105,7 @@ inline float material_schlick(float cos_i, float f0)
 
 /* GGX reflection without Fresnel: returns f * cos(theta_i) and its pdf when
  * sampled by material_ggx_sample (the distribution of normals times n.h). */
-inline float material_ggx_eval(float3 n, float3 wo, float3 wi, float alpha, float *pdf)
+static inline float material_ggx_eval(float3 n, float3 wo, float3 wi, float alpha, float *pdf)
 {
 	float no = dot(n, wo), ni = dot(n, wi);
 	*pdf = 0.0f;
@@ -121,7 +121,7 @@ inline float material_ggx_eval(float3 n, float3 wo, float3 wi, float alpha, floa
 	return d * g1o * g1i / (4.0f * no);
 }
 
-inline float3 material_ggx_sample(float3 n, float3 wo, float alpha, float u1, float u2)
+static inline float3 material_ggx_sample(float3 n, float3 wo, float alpha, float u1, float u2)
 {
 	float3 t, b;
 	material_basis(n, &t, &b);
@@ -138,7 +138,7 @@ typedef struct {
 	float p_coat, p_refl, p_trans, p_diff;
 } material_lobes;
 
-inline material_lobes material_lobes_at(const bsdf *m, float cos_o, bool entering)
+static inline material_lobes material_lobes_at(const bsdf *m, float cos_o, bool entering)
 {
 	material_lobes l;
 	float wc = m->coat.x * material_schlick(cos_o, m->coat.z);
@@ -168,7 +168,7 @@ inline material_lobes material_lobes_at(const bsdf *m, float cos_o, bool enterin
 
 /* f * cos(theta_i) of the lobes that are not a single direction (diffuse, coat,
  * rough reflection), and the pdf of sampling wi by material_sample. */
-inline float3 material_eval(const bsdf *m, const material_lobes *l, float3 n,
+static inline float3 material_eval(const bsdf *m, const material_lobes *l, float3 n,
                             float3 wo, float3 wi, float *pdf)
 {
 	float ni = dot(n, wi);
@@ -198,14 +198,14 @@ typedef struct {
 
 /* Refraction of wo (pointing away from the surface, n on its side) with
  * eta = n_transmitted / n_incident; the caller has ruled out total reflection. */
-inline float3 material_refract(float3 wo, float3 n, float cos_o, float eta)
+static inline float3 material_refract(float3 wo, float3 n, float cos_o, float eta)
 {
 	float cos_t = sqrt(fmax(0.0f, 1.0f - (1.0f - cos_o * cos_o) / (eta * eta)));
 	return normalize(-wo / eta + (cos_o / eta - cos_t) * n);
 }
 
 /* Chooses a layer by u.x, then a direction with u.y, u.z. weight 0: absorbed. */
-inline material_sample_t material_sample(const bsdf *m, const material_lobes *l,
+static inline material_sample_t material_sample(const bsdf *m, const material_lobes *l,
                                          float3 n, float3 wo, bool entering, float3 u)
 {
 	material_sample_t s = { (float3)(0.0f), (float3)(0.0f), 0.0f, 0 };

@@ -20,7 +20,7 @@ typedef struct {
 	int n;
 } media_stack;
 
-inline media_stack media_none(void)
+static inline media_stack media_none(void)
 {
 	media_stack s;
 	s.n = 0;
@@ -28,7 +28,7 @@ inline media_stack media_none(void)
 }
 
 /* Through a surface of material m: enters its interior's media, or leaves them. */
-inline media_stack media_cross(media_stack s, global const dev_material *m)
+static inline media_stack media_cross(media_stack s, global const dev_material *m)
 {
 	if (m->n_media <= 0)
 		return s;
@@ -55,7 +55,7 @@ typedef struct {
 	int n;
 } media_list;
 
-inline media_list media_gather(const media_stack *s)
+static inline media_list media_gather(const media_stack *s)
 {
 	media_list l;
 	l.n = 0;
@@ -65,7 +65,7 @@ inline media_list media_gather(const media_stack *s)
 	return l;
 }
 
-inline media_list media_atmosphere(const scene_data *sc)
+static inline media_list media_atmosphere(const scene_data *sc)
 {
 	media_list l;
 	l.n = 0;
@@ -75,7 +75,7 @@ inline media_list media_atmosphere(const scene_data *sc)
 }
 
 /* A media's density at x: the product of its densities' colours there. */
-inline float3 media_density(const scene_data *sc, global const dev_media *md, float3 x)
+static inline float3 media_density(const scene_data *sc, global const dev_media *md, float3 x)
 {
 	float3 rho = md->density_rgb.xyz;
 	for (int k = 0; k < MEDIA_DENSITIES && md->density[k] >= 0; k++) {
@@ -90,7 +90,7 @@ inline float3 media_density(const scene_data *sc, global const dev_media *md, fl
 	return fmax(rho, 0.0f);   /* a map's negative entries would make light out of nothing */
 }
 
-inline bool media_constant(const scene_data *sc, const media_list *l)
+static inline bool media_constant(const scene_data *sc, const media_list *l)
 {
 	for (int i = 0; i < l->n; i++)
 		if (sc->media[l->m[i]].density[0] >= 0)
@@ -102,7 +102,7 @@ typedef struct {
 	float3 extinction, emission, scattering;
 } media_coeffs;
 
-inline media_coeffs media_coefficients(const scene_data *sc, const media_list *l, float3 x)
+static inline media_coeffs media_coefficients(const scene_data *sc, const media_list *l, float3 x)
 {
 	media_coeffs c = { (float3)(0.0f), (float3)(0.0f), (float3)(0.0f) };
 	for (int i = 0; i < l->n; i++) {
@@ -118,7 +118,7 @@ inline media_coeffs media_coefficients(const scene_data *sc, const media_list *l
 /* POV-Ray's phase functions, averaged over the media: cos_a is the cosine
  * between the direction to the light and the ray's direction (1: the light
  * comes from straight ahead). Isotropic is 1. */
-inline float media_phase(const scene_data *sc, const media_list *l, float cos_a)
+static inline float media_phase(const scene_data *sc, const media_list *l, float cos_a)
 {
 	float k = 0.0f;
 	for (int i = 0; i < l->n; i++) {
@@ -140,7 +140,7 @@ inline float media_phase(const scene_data *sc, const media_list *l, float cos_a)
  * media's intervals, each by its method with nothing emitted (method 3:
  * samples / 2 + 1 sub-intervals of 1 / (that + 1), each the mean of its ends
  * and middle, nothing emitted to refine; methods 1 and 2: stratified). */
-inline float3 media_optical_depth(const scene_data *sc, const media_list *l, float3 o, float3 d, float t)
+static inline float3 media_optical_depth(const scene_data *sc, const media_list *l, float3 o, float3 d, float t)
 {
 	if (l->n == 0 || t <= 0.0f)
 		return (float3)(0.0f);
@@ -180,7 +180,7 @@ inline float3 media_optical_depth(const scene_data *sc, const media_list *l, flo
 /* What of colour, a light's, reaches o from along dir in (tmin, tmax) for a
  * ray inside the interiors of s: visibility_shadow's surfaces, and the media
  * of the hollow interiors it passes through (POV-Ray's ComputeShadowTexture). */
-inline float3 media_shadow(const scene_data *sc, media_stack s, float3 o, float3 dir, float tmin, float tmax,
+static inline float3 media_shadow(const scene_data *sc, media_stack s, float3 o, float3 dir, float tmin, float tmax,
                            float3 colour)
 {
 	sc->counts[COUNT_RAYS + RAY_SHADOW]++;
@@ -215,7 +215,7 @@ inline float3 media_shadow(const scene_data *sc, media_stack s, float3 o, float3
  * from x to infinity crosses an odd number of times. The host counts the solid
  * objects around the camera by their inside tests (lower_fog.c); media
  * containers are any closed surface, so the device counts crossings. */
-inline media_stack media_around(const scene_data *sc, float3 x)
+static inline media_stack media_around(const scene_data *sc, float3 x)
 {
 	media_stack s = media_none();
 	if (!(sc->p->scene_flags & SCENE_MEDIA))
@@ -237,7 +237,7 @@ inline media_stack media_around(const scene_data *sc, float3 x)
  * (dist along dir), in the Whitted integrator: POV-Ray dims shadow rays by the
  * atmosphere only toward a light with media_attenuation (and media_interaction),
  * outside solid objects, as it fogs them. */
-inline float3 media_atmosphere_shadow(const scene_data *sc, global const dev_light *l, float3 x, float3 dir, float dist,
+static inline float3 media_atmosphere_shadow(const scene_data *sc, global const dev_light *l, float3 x, float3 dir, float dist,
                                       int solids)
 {
 	if (!l->media_attenuation || l->no_media_interaction || solids > 0 || sc->p->n_atmosphere == 0)
@@ -250,7 +250,7 @@ inline float3 media_atmosphere_shadow(const scene_data *sc, global const dev_lig
 
 /* The media acting on a path segment: its interiors' and the atmosphere's,
  * none inside a solid object (POV-Ray computes media for hollow rays only). */
-inline media_list media_list_at(const scene_data *sc, const media_stack *s, int solids)
+static inline media_list media_list_at(const scene_data *sc, const media_stack *s, int solids)
 {
 	media_list l;
 	l.n = 0;
@@ -264,13 +264,13 @@ inline media_list media_list_at(const scene_data *sc, const media_stack *s, int 
 
 /* The path tracer's extinction is absorption + scattering: POV-Ray's
  * extinction factor would make or lose light. */
-inline float3 media_sigma_t(global const dev_media *md)
+static inline float3 media_sigma_t(global const dev_media *md)
 {
 	return md->absorption.xyz + md->scattering.xyz;
 }
 
 /* A bound on the extinction of every channel along any ray through l. */
-inline float media_majorant(const scene_data *sc, const media_list *l)
+static inline float media_majorant(const scene_data *sc, const media_list *l)
 {
 	float m = 0.0f;
 	for (int i = 0; i < l->n; i++) {
@@ -283,7 +283,7 @@ inline float media_majorant(const scene_data *sc, const media_list *l)
 
 /* Uniform numbers after the dimension dim of a sample, as many as a walk
  * through media needs: a chain of hashes from rng_uniform's. */
-inline float media_next(uint *state)
+static inline float media_next(uint *state)
 {
 	*state = rng_hash(*state ^ 0x68e31da4U);
 	return (float)(*state >> 8) * (1.0f / 16777216.0f);
@@ -294,7 +294,7 @@ inline float media_next(uint *state)
 /* The transmittance of l over (o, o + t d): exact for constant densities,
  * else ratio tracking against the majorant (unbiased; the product of
  * 1 - sigma_t / majorant at the tentative collisions). */
-inline float3 media_transmittance(const scene_data *sc, const media_list *l, float3 o, float3 d, float t, uint key,
+static inline float3 media_transmittance(const scene_data *sc, const media_list *l, float3 o, float3 d, float t, uint key,
                                   uint dim)
 {
 	if (l->n == 0 || !(t > 0.0f))
@@ -328,7 +328,7 @@ inline float3 media_transmittance(const scene_data *sc, const media_list *l, flo
 /* What of colour, a light_source's, reaches x along dir in (tmin, tmax) for
  * the path tracer: visibility_shadow's surfaces, and the media of the hollow
  * interiors it passes through and the atmosphere's. */
-inline float3 media_shadow_path(const scene_data *sc, media_stack s, int solids, float3 o, float3 dir, float tmin,
+static inline float3 media_shadow_path(const scene_data *sc, media_stack s, int solids, float3 o, float3 dir, float tmin,
                                 float tmax, float3 colour, uint key, uint dim)
 {
 	if (!(sc->p->scene_flags & SCENE_MEDIA))

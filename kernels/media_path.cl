@@ -24,7 +24,7 @@
 
 /* One media's normalized phase function; cos_a: the direction sampled or to
  * the light against the ray's direction (1: straight on). */
-inline float media_phase_one(global const dev_media *md, float cos_a)
+static inline float media_phase_one(global const dev_media *md, float cos_a)
 {
 	float g = md->absorption.w, u;
 	switch (md->type) {
@@ -42,14 +42,14 @@ inline float media_phase_one(global const dev_media *md, float cos_a)
 
 /* How one media samples its directions: Henyey-Greenstein exactly, the
  * others uniformly over the sphere. */
-inline float media_phase_pdf_one(global const dev_media *md, float cos_a)
+static inline float media_phase_pdf_one(global const dev_media *md, float cos_a)
 {
 	return md->type == MEDIA_HG ? media_phase_one(md, cos_a) : MEDIA_INV_4PI;
 }
 
 /* What the media at x scatter toward -d from direction wi, per channel
  * (sum of sigma_s * phase), and the pdf of sampling wi by media_phase_sample. */
-inline float3 media_scatter_eval(const scene_data *sc, const media_list *l, float3 x, float3 d, float3 wi, float *pdf)
+static inline float3 media_scatter_eval(const scene_data *sc, const media_list *l, float3 x, float3 d, float3 wi, float *pdf)
 {
 	float3 f = (float3)(0.0f);
 	float wsum = 0.0f, p = 0.0f, c = dot(wi, d);
@@ -67,7 +67,7 @@ inline float3 media_scatter_eval(const scene_data *sc, const media_list *l, floa
 
 /* A direction from the mixture of the media's phase functions at x: a media
  * chosen by its mean scattering, then its phase (u.x chooses, u.yz the direction). */
-inline float3 media_phase_sample(const scene_data *sc, const media_list *l, float3 x, float3 d, float3 u)
+static inline float3 media_phase_sample(const scene_data *sc, const media_list *l, float3 x, float3 d, float3 u)
 {
 	float wsum = 0.0f, w[MEDIA_LIST];
 	for (int i = 0; i < l->n; i++) {
@@ -106,7 +106,7 @@ typedef struct {
 
 /* Delta tracking over (o, o + tmax d) through l: adds what the media emit to
  * *radiance, weighs *beta, and says where the path goes on. */
-inline media_walk media_track(const scene_data *sc, const media_list *l, float3 o, float3 d, float tmax, float3 *beta,
+static inline media_walk media_track(const scene_data *sc, const media_list *l, float3 o, float3 d, float tmax, float3 *beta,
                               float3 *radiance, uint key, uint dim)
 {
 	media_walk w = { tmax, 0 };
@@ -155,7 +155,7 @@ inline media_walk media_track(const scene_data *sc, const media_list *l, float3 
 /* Next-event estimation at a scattering vertex x (beta already divided by
  * the event's probability): every light_source, and one emissive primitive
  * weighted against phase sampling. */
-inline float3 media_vertex_lights(const scene_data *sc, const media_list *l, media_stack ms, int solids, float3 x,
+static inline float3 media_vertex_lights(const scene_data *sc, const media_list *l, media_stack ms, int solids, float3 x,
                                   float3 d, uint key, uint dim)
 {
 	float3 sum = (float3)(0.0f);

@@ -24,7 +24,7 @@ typedef struct {
 
 /* The stretch (d1, d2) of the ray (o, d) in a spotlight's falloff cone:
  * POV-Ray's ComputeSpotLightInterval. */
-inline bool media_spot_interval(global const dev_light *lt, float3 o, float3 d, float *d1, float *d2)
+static inline bool media_spot_interval(global const dev_light *lt, float3 o, float3 d, float *d1, float *d2)
 {
 	float cf = lt->cos_falloff;
 	float m = 1.0f / (cf * cf);
@@ -85,7 +85,7 @@ inline bool media_spot_interval(global const dev_light *lt, float3 o, float3 d, 
 
 /* Each light's lit stretch of (o, o + t d); an unlit light's is empty
  * (s0 > s1). Returns how many lights light some of it. */
-inline int media_light_spans(const scene_data *sc, float3 o, float3 d, float t, media_spans *sp)
+static inline int media_light_spans(const scene_data *sc, float3 o, float3 d, float t, media_spans *sp)
 {
 	int n = 0;
 	for (int i = 0; i < min(sc->p->n_lights, MEDIA_LIGHTS); i++) {
@@ -103,7 +103,7 @@ inline int media_light_spans(const scene_data *sc, float3 o, float3 d, float t, 
 
 /* The light of every light_source scattered toward -d at x, before the
  * coefficient: sum of phase * light reaching x (shadowed, through the media). */
-inline float3 media_lights(const scene_data *sc, const media_list *l, media_stack s, float3 x, float3 d,
+static inline float3 media_lights(const scene_data *sc, const media_list *l, media_stack s, float3 x, float3 d,
                            const media_spans *spans, float at)
 {
 	float3 sum = (float3)(0.0f);
@@ -136,7 +136,7 @@ inline float3 media_lights(const scene_data *sc, const media_list *l, media_stac
 
 /* One sample at distance t: its colour (emission and scattered light) times
  * the length ds it stands for, and its optical depth over ds. */
-inline float3 media_sample(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float t,
+static inline float3 media_sample(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float t,
                            float ds, const media_spans *lit, float3 *od)
 {
 	float3 x = o + t * d;
@@ -149,7 +149,7 @@ inline float3 media_sample(const scene_data *sc, const media_list *l, media_stac
 }
 
 /* A small generator for jitter, keyed by the ray: POV-Ray's jitter is random too. */
-inline float media_jitter(uint *state)
+static inline float media_jitter(uint *state)
 {
 	*state = rng_hash(*state + 0x9e3779b9U);
 	return (float)(*state >> 8) * (1.0f / 16777216.0f) - 0.5f;
@@ -165,7 +165,7 @@ typedef struct {
 /* Method 3's refinement of one sub-interval (d1, d3) of [s0, s0 + ds], whose
  * ends are sampled: POV-Ray's ComputeOneMediaSampleRecursive, walked with a
  * stack; each node's share of the result is w. */
-inline float3 media_refine(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float s0,
+static inline float3 media_refine(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float s0,
                            float ds, const media_spans *lit, global const dev_media *im, float thr, media_aa_node root,
                            float3 *od_out, uint *rnd)
 {
@@ -209,7 +209,7 @@ inline float3 media_refine(const scene_data *sc, const media_list *l, media_stac
  * min_samples / 2 + 1 (at least 2) sub-intervals of width 1 / (that + 1) from
  * the interval's start (3.7 leaves the last stretch unsampled: its images
  * show it), each sub-interval attenuated by those before it. */
-inline void media_interval3(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float s0,
+static inline void media_interval3(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float s0,
                             float ds, const media_spans *lit, global const dev_media *im, float thr, float3 *te,
                             float3 *od, uint *rnd)
 {
@@ -239,7 +239,7 @@ inline void media_interval3(const scene_data *sc, const media_list *l, media_sta
 /* One interval by methods 1 and 2: min_samples stratified samples (random
  * within their strata by jitter; method 1: anywhere in the interval), each
  * attenuated from the interval's start as POV-Ray's regular sampling does. */
-inline void media_interval12(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float s0,
+static inline void media_interval12(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float s0,
                              float ds, const media_spans *lit, global const dev_media *im, float3 *te, float3 *od,
                              uint *rnd)
 {
@@ -260,7 +260,7 @@ inline void media_interval12(const scene_data *sc, const media_list *l, media_st
 /* POV-Ray's ComputeMedia over (o, o + t d) for the media of l, on colour, the
  * light coming from the segment's end: colour * exp(-depth) + what the media
  * emit and scatter toward o. s: the interiors the ray is in (for light rays). */
-inline float3 media_whitted(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float t,
+static inline float3 media_whitted(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float t,
                             float3 colour)
 {
 	if (l->n == 0 || !(t > 0.0f))

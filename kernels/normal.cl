@@ -24,7 +24,7 @@ constant float4 normal_pyramid[4] = {
 
 /* A world-space normal taken into the space an affine map's rows a, b, c lead
  * to: the inverse transpose of the linear part, from its cofactors. */
-inline float3 normal_into(float4 a, float4 b, float4 c, float3 n)
+static inline float3 normal_into(float4 a, float4 b, float4 c, float3 n)
 {
 	float3 c0 = cross(b.xyz, c.xyz), c1 = cross(c.xyz, a.xyz), c2 = cross(a.xyz, b.xyz);
 	float det = dot(a.xyz, c0);
@@ -32,7 +32,7 @@ inline float3 normal_into(float4 a, float4 b, float4 c, float3 n)
 }
 
 /* Back out of that space: the transpose of the linear part. */
-inline float3 normal_out_of(float4 a, float4 b, float4 c, float3 v)
+static inline float3 normal_out_of(float4 a, float4 b, float4 c, float3 v)
 {
 	return v.x * a.xyz + v.y * b.xyz + v.z * c.xyz;
 }
@@ -40,7 +40,7 @@ inline float3 normal_out_of(float4 a, float4 b, float4 c, float3 v)
 /* POV-Ray's Do_Slope_Map: the value through the slope_map's Hermite cubics,
  * between two entries (height colour.x, slope colour.y); at or beyond an end,
  * or on an entry, that entry's height. */
-inline float normal_slope_map(global const dev_map_entry *e, int n, float v)
+static inline float normal_slope_map(global const dev_map_entry *e, int n, float v)
 {
 	if (n <= 0)
 		return v;
@@ -62,7 +62,7 @@ inline float normal_slope_map(global const dev_map_entry *e, int n, float v)
  * cube) to the normal scaled by 1 / size, or with coords to the point scaled
  * so; without coords that point becomes the normal, with coords the normal
  * tilts by coords times DNoise there, less its part along the normal. */
-inline float3 normal_facets(float4 prm, float3 p, float3 v)
+static inline float3 normal_facets(float4 prm, float3 p, float3 v)
 {
 	float size = prm.x, coords = prm.y, metric = prm.z;
 	v = normalize(v);
@@ -102,7 +102,7 @@ inline float3 normal_facets(float4 prm, float3 p, float3 v)
 /* POV-Ray's Warp_Normal: the world-space normal n into pt's space, through
  * every transformation in the warps' order, the pattern's own (rows) first;
  * unit length unless no_bump_scale. */
-float3 normal_warp_in(global const dev_pattern *pt, global const dev_warp *warps, float3 n)
+static float3 normal_warp_in(global const dev_pattern *pt, global const dev_warp *warps, float3 n)
 {
 	int scale_bumps = !(pt->flags & PATTERN_NO_BUMP_SCALE);
 	float3 v = scale_bumps ? normalize(n) : n;
@@ -117,7 +117,7 @@ float3 normal_warp_in(global const dev_pattern *pt, global const dev_warp *warps
 
 /* POV-Ray's UnWarp_Normal: back through the transformations in reverse
  * order, to a unit normal in world space. */
-float3 normal_warp_out(global const dev_pattern *pt, global const dev_warp *warps, float3 v)
+static float3 normal_warp_out(global const dev_pattern *pt, global const dev_warp *warps, float3 v)
 {
 	for (int i = pt->warp_count - 1; i >= 0; i--) {
 		global const dev_warp *w = &warps[pt->warp_first + i];
@@ -131,7 +131,7 @@ float3 normal_warp_out(global const dev_pattern *pt, global const dev_warp *warp
 /* The normal n (unit, world space, facing the ray) perturbed at p (world
  * space) by the normal pattern pt, with its warps and its slope_map (maps,
  * from pt->map_first): the unit perturbed normal in world space. */
-float3 pattern_perturb(const scene_data *sc, global const dev_pattern *pt, float3 p, float3 n)
+static float3 pattern_perturb(const scene_data *sc, global const dev_pattern *pt, float3 p, float3 n)
 {
 	global const dev_warp *warps = sc->warps;
 	global const dev_map_entry *maps = sc->maps;

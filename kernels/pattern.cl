@@ -18,13 +18,13 @@
 
 /* POV-Ray's FLOOR: like floor, except that a negative whole number goes one
  * lower. Kept for quilted, which uses it. */
-inline float pattern_floor_pov(float x)
+static inline float pattern_floor_pov(float x)
 {
 	return x >= 0.0f ? floor(x) : -floor(-x) - 1.0f;
 }
 
 /* POV-Ray's cycloidal(): sin(2 pi v) from v's fraction, odd around 0. */
-inline float pattern_cycloidal(float v)
+static inline float pattern_cycloidal(float v)
 {
 	if (v >= 0.0f)
 		return sinpi(2.0f * (v - floor(v)));
@@ -32,7 +32,7 @@ inline float pattern_cycloidal(float v)
 }
 
 /* POV-Ray's Triangle_Wave: 0 at whole numbers, 1 halfway. */
-inline float pattern_triangle_wave(float v)
+static inline float pattern_triangle_wave(float v)
 {
 	float offset = v >= 0.0f ? v - floor(v) : v + 1.0f + floor(fabs(v));
 	return offset >= 0.5f ? 2.0f * (1.0f - offset) : 2.0f * offset;
@@ -40,14 +40,14 @@ inline float pattern_triangle_wave(float v)
 
 /* CLIP_DENSITY of boxed, cylindrical, planar and spherical: 1 at the centre
  * down to 0 at distance 1, and 1 again for a negative distance. */
-inline float pattern_clip_density(float r)
+static inline float pattern_clip_density(float r)
 {
 	return r < 0.0f ? 1.0f : r > 1.0f ? 0.0f : 1.0f - r;
 }
 
 /* POV-Ray's Hash3d over its hash table: every index is taken mod 4096, as the
  * macro's masks do. */
-inline int pattern_hash3(int a, int b, int c)
+static inline int pattern_hash3(int a, int b, int c)
 {
 	return pattern_hash[pattern_hash[pattern_hash[a & 0xfff] ^ (b & 0xfff)] ^ (c & 0xfff)];
 }
@@ -57,21 +57,21 @@ inline int pattern_hash3(int a, int b, int c)
 /* The lattice cell of one coordinate as POV-Ray's noise hashes it: the
  * integer part offset by 10000 and masked to 12 bits, so that negative
  * coordinates do not mirror positive ones. */
-inline int pattern_lattice(float floor_x)
+static inline int pattern_lattice(float floor_x)
 {
 	return ((int)floor_x + 10000) & 0xfff;
 }
 
 /* The offset into RTable's 267 values of one lattice corner (POV-Ray's
  * Hash1dRTableIndex, which indexes the interleaved table with twice it). */
-inline int pattern_corner(int hxy, int iz)
+static inline int pattern_corner(int hxy, int iz)
 {
 	return pattern_hash[(hxy ^ iz) & 0xfff] & 0xff;
 }
 
 /* One corner's contribution, POV-Ray's INCRSUMP: the corner's value (RTable's
  * half of an entry) plus a gradient from the next three entries. */
-inline float pattern_incr(int k, float s, float x, float y, float z)
+static inline float pattern_incr(int k, float s, float x, float y, float z)
 {
 	return s * (0.5f * pattern_rtable[k] + pattern_rtable[k + 1] * x
 	            + pattern_rtable[k + 2] * y + pattern_rtable[k + 3] * z);
@@ -81,7 +81,7 @@ inline float pattern_incr(int k, float s, float x, float y, float z)
  * [-1, 1]. POV-Ray shifts the point by 10000000.023157213 in double before
  * taking floors; 10000000 is 1664 mod 2048, so the shift is split into the
  * fraction, added in float, and 1664 added to the integer part. */
-inline float pattern_solid_noise(float3 p)
+static inline float pattern_solid_noise(float3 p)
 {
 	const float roll = 0.023157213f;
 	float3 t = p + (float3)(roll, roll, roll);
@@ -124,7 +124,7 @@ typedef struct {
 	int h00, h10, h01, h11, iz;
 } pattern_cell_corners;
 
-inline pattern_cell_corners pattern_corners(float3 p)
+static inline pattern_cell_corners pattern_corners(float3 p)
 {
 	pattern_cell_corners c;
 	float3 fl = floor(p);
@@ -144,7 +144,7 @@ inline pattern_cell_corners pattern_corners(float3 p)
 /* POV-Ray's Noise: a value in [0, 1]. Generator 1 is the original lattice
  * noise (centred on 0.5, clipped), 2 the same stretched to fill [0, 1] better
  * (POV-Ray 3.7's default), 3 Perlin's gradient noise rescaled. */
-float pattern_noise(float3 p, int generator)
+static float pattern_noise(float3 p, int generator)
 {
 	if (generator == 3)
 		return clamp(0.5f * (1.59f * pattern_solid_noise(p) + 0.985f), 0.0f, 1.0f);
@@ -169,7 +169,7 @@ float pattern_noise(float3 p, int generator)
 
 /* One corner of POV-Ray's DNoise: the three components use entries k, k + 4
  * and k + 8 of RTable (8 and 16 in the interleaved table). */
-inline float3 pattern_dincr(int k, float s, float x, float y, float z)
+static inline float3 pattern_dincr(int k, float s, float x, float y, float z)
 {
 	return (float3)(pattern_incr(k, s, x, y, z), pattern_incr(k + 4, s, x, y, z),
 	                pattern_incr(k + 8, s, x, y, z));
@@ -178,7 +178,7 @@ inline float3 pattern_dincr(int k, float s, float x, float y, float z)
 /* POV-Ray's DNoise: a vector-valued lattice noise, components in about
  * [-1, 1], for turbulence, wood and (later) normals. POV-Ray 3.7 uses this one
  * whatever the noise_generator: generator is accepted and ignored. */
-float3 pattern_dnoise(float3 p, int generator)
+static float3 pattern_dnoise(float3 p, int generator)
 {
 	(void)generator;
 	pattern_cell_corners cc = pattern_corners(p);
@@ -197,7 +197,7 @@ float3 pattern_dnoise(float3 p, int generator)
 /* POV-Ray's Turbulence: octaves of noise at growing frequencies (lambda) and
  * shrinking weights (omega). Generators 2 and 3 stretch each octave by 2 and
  * shift it by -0.5, the first clipped to [0, 1], the others not. */
-float pattern_turbulence(float3 p, float omega, float lambda, int octaves, int generator)
+static float pattern_turbulence(float3 p, float omega, float lambda, int octaves, int generator)
 {
 	float value = pattern_noise(p, generator);
 	if (generator > 1)
@@ -213,7 +213,7 @@ float pattern_turbulence(float3 p, float omega, float lambda, int octaves, int g
 }
 
 /* POV-Ray's DTurbulence: the same sum over DNoise, unstretched. */
-float3 pattern_dturbulence(float3 p, float omega, float lambda, int octaves)
+static float3 pattern_dturbulence(float3 p, float omega, float lambda, int octaves)
 {
 	float3 value = pattern_dnoise(p, 0);
 	float l = lambda, o = omega;
@@ -226,14 +226,14 @@ float3 pattern_dturbulence(float3 p, float omega, float lambda, int octaves)
 }
 
 /* A turbulence warp's own parameters. */
-inline float pattern_warp_turbulence(global const dev_warp *w, int generator, float3 p)
+static inline float pattern_warp_turbulence(global const dev_warp *w, int generator, float3 p)
 {
 	return pattern_turbulence(p, w->a.w, w->b.x, (int)w->b.y, generator);
 }
 
 /* ---- warps ---- */
 
-inline float3 pattern_warp(global const dev_warp *w, float3 p)
+static inline float3 pattern_warp(global const dev_warp *w, float3 p)
 {
 	if (w->kind == WARP_TURBULENCE) {
 		float3 d = pattern_dturbulence(p, w->a.w, w->b.x, (int)w->b.y);
@@ -294,7 +294,7 @@ inline float3 pattern_warp(global const dev_warp *w, float3 p)
 
 /* ---- the patterns, as POV-Ray 3.7's pattern.cpp computes them ---- */
 
-inline float pattern_agate(float3 p, global const dev_warp *turb, float agate_turb, int generator)
+static inline float pattern_agate(float3 p, global const dev_warp *turb, float agate_turb, int generator)
 {
 	/* POV-Ray's defaults should the turbulence be missing. */
 	float t = turb ? pattern_warp_turbulence(turb, generator, p)
@@ -307,7 +307,7 @@ inline float pattern_agate(float3 p, global const dev_warp *turb, float agate_tu
  * frac((x + 1e-10 + mortar) / size) <= mortar / size in double, which holds
  * exactly when x mod size >= size - mortar - 1e-10. Tested this way in float,
  * where the 1e-10 vanishes and would put x = 0, a common plane, in the mortar. */
-inline int pattern_brick_mortar(float x, float size, float mortar)
+static inline int pattern_brick_mortar(float x, float size, float mortar)
 {
 	return x - size * floor(x / size) >= size - mortar;
 }
@@ -315,7 +315,7 @@ inline int pattern_brick_mortar(float x, float size, float mortar)
 /* Brick: rows of height size.y, every other row shifted by half a brick along
  * x and z. POV-Ray's row test frac((y + mortar) / (2 size.y)) <= 0.5 changes
  * only inside horizontal mortar, so float cannot misplace it. */
-inline float pattern_brick(float3 p, float4 size_mortar)
+static inline float pattern_brick(float3 p, float4 size_mortar)
 {
 	float3 size = size_mortar.xyz;
 	float mortar = size_mortar.w;
@@ -334,7 +334,7 @@ inline float pattern_brick(float3 p, float4 size_mortar)
  * off by a few ulps of the coordinates, so a face at an integer (a plane at
  * y = 0) would flicker between two cells: the tolerance here is the points'
  * own precision instead. */
-inline float3 pattern_cell(float3 p)
+static inline float3 pattern_cell(float3 p)
 {
 	float eps = 1e-5f * fmax(1.0f, fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z))));
 	return floor(p + eps);
@@ -342,21 +342,21 @@ inline float3 pattern_cell(float3 p)
 
 /* The random point of POV-Ray's crackle and facets in the unit cell
  * (cx, cy, cz). */
-inline float3 pattern_cell_point(int cx, int cy, int cz)
+static inline float3 pattern_cell_point(int cx, int cy, int cz)
 {
 	int seed = pattern_hash3(cx, cy, cz);
 	return (float3)((float)cx + pattern_rands[seed], (float)cy + pattern_rands[seed + 1],
 	                (float)cz + pattern_rands[seed + 2]);
 }
 
-inline float pattern_cells(float3 p)
+static inline float pattern_cells(float3 p)
 {
 	float3 c = pattern_cell(p);
 	int h = pattern_hash3((int)c.x, (int)c.y, (int)c.z);
 	return fmin(pattern_rands[h], 1.0f);
 }
 
-inline float pattern_checker(float3 p)
+static inline float pattern_checker(float3 p)
 {
 	float3 c = pattern_cell(p);
 	int v = (int)(c.x + c.y + c.z);
@@ -364,7 +364,7 @@ inline float pattern_checker(float3 p)
 }
 
 /* The distance of crackle's metric, before the root. */
-inline float pattern_metric(float3 d, float metric)
+static inline float pattern_metric(float3 d, float metric)
 {
 	d = fabs(d);
 	if (metric == 2.0f)
@@ -377,7 +377,7 @@ inline float pattern_metric(float3 d, float metric)
 /* Crackle: one random point per unit cube (POV-Ray's IntPickInCube); the three
  * nearest among the 81 cubes within a "knight's move" of the point's cube, in
  * POV-Ray's order, combined by form, or the noise at the nearest (solid). */
-inline float pattern_crackle(float3 p, float4 form_metric, float4 offset_solid, int generator)
+static inline float pattern_crackle(float3 p, float4 form_metric, float4 offset_solid, int generator)
 {
 	float metric = form_metric.w;
 	float offset = offset_solid.x;
@@ -425,7 +425,7 @@ inline float pattern_crackle(float3 p, float4 form_metric, float4 offset_solid, 
 	return clamp(tf, 0.0f, 1.0f);
 }
 
-inline float pattern_cubic(float3 p)
+static inline float pattern_cubic(float3 p)
 {
 	float3 a = fabs(p);
 	if (p.x >= 0.0f && p.x >= a.y && p.x >= a.z)
@@ -441,13 +441,13 @@ inline float pattern_cubic(float3 p)
 	return 5.0f;
 }
 
-inline float pattern_gradient(float3 p, float3 axis)
+static inline float pattern_gradient(float3 p, float3 axis)
 {
 	float r = dot(p, axis);
 	return r > 1.0f ? fmod(r, 1.0f) : r;
 }
 
-inline float pattern_granite(float3 p, int generator)
+static inline float pattern_granite(float3 p, int generator)
 {
 	float noise = 0.0f, freq = 1.0f;
 	float3 q = p * 4.0f;
@@ -462,7 +462,7 @@ inline float pattern_granite(float3 p, int generator)
 /* Hexagon in the x-z plane: the grid is mapped into 6 by 6 blocks of half a
  * side by sqrt(3)/2, in which the colour follows from the block, or from the
  * side of the block's diagonal. */
-inline float pattern_hexagon(float3 p)
+static inline float pattern_hexagon(float3 p)
 {
 	float x = fabs(p.x);
 	float z = p.z < 0.0f ? 5.196152424f - fabs(p.z) : p.z;   /* no mirror across x */
@@ -489,13 +489,13 @@ inline float pattern_hexagon(float3 p)
 	return value;
 }
 
-inline float pattern_leopard(float3 p)
+static inline float pattern_leopard(float3 p)
 {
 	float v = (sin(p.x) + sin(p.y) + sin(p.z)) / 3.0f;
 	return v * v;
 }
 
-inline float pattern_quilted(float3 p, float c0, float c1)
+static inline float pattern_quilted(float3 p, float c0, float c1)
 {
 	float3 v = (float3)(p.x - pattern_floor_pov(p.x), p.y - pattern_floor_pov(p.y),
 	                    p.z - pattern_floor_pov(p.z)) - 0.5f;
@@ -507,7 +507,7 @@ inline float pattern_quilted(float3 p, float c0, float c1)
 	return (fabs(v.x) + fabs(v.y) + fabs(v.z)) / 3.0f;
 }
 
-inline float pattern_radial(float3 p)
+static inline float pattern_radial(float3 p)
 {
 	if (fabs(p.x) < 0.001f && fabs(p.z) < 0.001f)
 		return 0.25f;
@@ -515,14 +515,14 @@ inline float pattern_radial(float3 p)
 }
 
 /* The angle around the z axis spiral1 and spiral2 turn with, 0 to 2 pi. */
-inline float pattern_spiral_phi(float x, float y, float rad)
+static inline float pattern_spiral_phi(float x, float y, float rad)
 {
 	if (rad == 0.0f)
 		return 0.0f;
 	return x < 0.0f ? 1.5f * PATTERN_PI - asin(y / rad) : 0.5f * PATTERN_PI + asin(y / rad);
 }
 
-inline float pattern_square(float3 p)
+static inline float pattern_square(float3 p)
 {
 	int x = (int)floor(p.x), z = (int)floor(p.z);
 	if (x & 1)
@@ -533,7 +533,7 @@ inline float pattern_square(float3 p)
 /* Triangular in the x-z plane: space folded into a 3 by sqrt(3) rectangle,
  * mirrored about its middle, and the slopes of the point from the corners
  * decide among the six triangles. */
-inline float pattern_triangular(float3 p)
+static inline float pattern_triangular(float3 p)
 {
 	const float sqrt3 = 1.7320508075688772f;
 	float xs = p.x - 3.0f * floor(p.x / 3.0f);
@@ -559,14 +559,14 @@ inline float pattern_triangular(float3 p)
  * -560851967 (Initialize_Waves). pattern_wave_source gives source i and
  * its frequency, taking the sources in order from *r = PATTERN_WAVE_SEED. */
 #define PATTERN_WAVE_SEED ((uint)-560851967)
-inline float3 pattern_wave_source(int i, uint *r, float *wf)
+static inline float3 pattern_wave_source(int i, uint *r, float *wf)
 {
 	*r = *r * 1812433253u + 12345u;
 	*wf = (float)((*r >> 16) & 0x7fff) * 0.000030518509476f + 0.01f;
 	return normalize(pattern_dnoise((float3)((float)i, 0.0f, 0.0f), 0));
 }
 
-inline float pattern_waves(float3 p, int ripples, int n_waves, float frequency, float phase)
+static inline float pattern_waves(float3 p, int ripples, int n_waves, float frequency, float phase)
 {
 	uint r = PATTERN_WAVE_SEED;
 	float scalar = 0.0f;
@@ -586,7 +586,7 @@ inline float pattern_waves(float3 p, int ripples, int n_waves, float frequency, 
 	return 0.2f * (2.5f + scalar / (float)n_waves);
 }
 
-inline float pattern_wood(float3 p, global const dev_warp *turb)
+static inline float pattern_wood(float3 p, global const dev_warp *turb)
 {
 	float2 q = (float2)(0.0f);
 	if (turb) {
@@ -598,7 +598,7 @@ inline float pattern_wood(float3 p, global const dev_warp *turb)
 	return length(q);
 }
 
-inline float pattern_wrinkles(float3 p, int generator)
+static inline float pattern_wrinkles(float3 p, int generator)
 {
 	float lambda = 2.0f, omega = 0.5f;
 	float n = pattern_noise(p, generator);
@@ -614,7 +614,7 @@ inline float pattern_wrinkles(float3 p, int generator)
 
 /* Frequency, phase and wave type, as POV-Ray's Evaluate_TPat applies them to
  * a continuous pattern. POV-Ray wraps with 1.00001, not 1. */
-inline float pattern_wave(global const dev_pattern *pt, float v)
+static inline float pattern_wave(global const dev_pattern *pt, float v)
 {
 	if (pt->frequency != 0.0f)
 		v = fmod(v * pt->frequency + pt->phase, 1.00001f);
@@ -639,7 +639,7 @@ inline float pattern_wave(global const dev_pattern *pt, float v)
 /* The warps of pt applied in order to p, a point in the pattern's space
  * (pt->rows already applied): POV-Ray's Warp_EPoint. Marble and wood read
  * their classic turbulence themselves and never apply it as a warp. */
-float3 pattern_warp_point(global const dev_pattern *pt, global const dev_warp *warps, float3 p)
+static float3 pattern_warp_point(global const dev_pattern *pt, global const dev_warp *warps, float3 p)
 {
 	int own_turb = pt->kind == PATTERN_MARBLE || pt->kind == PATTERN_WOOD;
 	for (int i = 0; i < pt->warp_count; i++) {
@@ -653,7 +653,7 @@ float3 pattern_warp_point(global const dev_pattern *pt, global const dev_warp *w
 
 /* POV-Ray's wrap of slope's value into [0, 1), 1 itself kept (its EPSILON
  * below 1 is 1 in float). */
-inline float pattern_slope_wrap(float v)
+static inline float pattern_slope_wrap(float v)
 {
 	if (v == 1.0f)
 		return v;
@@ -663,7 +663,7 @@ inline float pattern_slope_wrap(float v)
 /* slope (SlopePattern::EvaluateRaw): how far the unit normal n turns toward
  * the slope's direction, 0 (away) to 1 (along it), blended with the altitude,
  * p along the altitude's direction; each optionally rescaled by its range. */
-inline float pattern_slope(global const dev_pattern *pt, float3 p, float3 n)
+static inline float pattern_slope(global const dev_pattern *pt, float3 p, float3 n)
 {
 	float3 s = pt->params[0].xyz, a = pt->params[1].xyz;
 	float slen = length(s), alen = length(a);
@@ -682,7 +682,7 @@ inline float pattern_slope(global const dev_pattern *pt, float3 p, float3 n)
 /* pattern_at without function patterns: what the scene's generated functions
  * call (function_pattern.cl), so that no function calls itself through a
  * pattern, which OpenCL C cannot (eval refuses a function pattern there). */
-float pattern_plain(global const dev_pattern *pt, global const dev_warp *warps, float3 p, float3 n, float3 d)
+static float pattern_plain(global const dev_pattern *pt, global const dev_warp *warps, float3 p, float3 n, float3 d)
 {
 	int kind = pt->kind;
 	int generator = pt->noise_generator;
@@ -807,7 +807,7 @@ float pattern_plain(global const dev_pattern *pt, global const dev_warp *warps, 
 /* The value of the pattern pt at p, a point already warped
  * (pattern_warp_point): POV-Ray's Evaluate_TPat, which normals call at
  * points around the warped one. n and d as for pattern_value. */
-float pattern_at(const scene_data *sc, global const dev_pattern *pt, float3 p, float3 n, float3 d)
+static float pattern_at(const scene_data *sc, global const dev_pattern *pt, float3 p, float3 n, float3 d)
 {
 	if (pt->kind != PATTERN_FUNCTION)
 		return pattern_plain(pt, sc->warps, p, n, d);
@@ -818,7 +818,7 @@ float pattern_at(const scene_data *sc, global const dev_pattern *pt, float3 p, f
 	return pattern_wave(pt, v);
 }
 
-float pattern_value(const scene_data *sc, global const dev_pattern *pt, float3 p, float3 n, float3 d)
+static float pattern_value(const scene_data *sc, global const dev_pattern *pt, float3 p, float3 n, float3 d)
 {
 	return pattern_at(sc, pt, pattern_warp_point(pt, sc->warps, p), n, d);
 }

@@ -11,7 +11,7 @@
  * factor, the exterior type and factor. */
 
 /* The value of a point that escaped after iters iterations at (a, b). */
-inline real fractal_exterior(float4 io, int iters, int max_iter, real a, real b)
+static inline real fractal_exterior(float4 io, int iters, int max_iter, real a, real b)
 {
 	real f = (real)io.w;
 	switch ((int)io.z) {
@@ -31,7 +31,7 @@ inline real fractal_exterior(float4 io, int iters, int max_iter, real a, real b)
 
 /* The value of a point still bound after the last iteration, at (a, b), the
  * orbit's least squared distance from 0 being mindist2. */
-inline real fractal_interior(float4 io, real a, real b, real mindist2)
+static inline real fractal_interior(float4 io, real a, real b, real mindist2)
 {
 	real f = (real)io.y;
 	switch ((int)io.x) {
@@ -47,7 +47,7 @@ inline real fractal_interior(float4 io, real a, real b, real mindist2)
 }
 
 /* (a + bi)^n for n >= 2: POV-Ray's sums of binomial terms, sign by sign. */
-inline void fractal_power(real a, real b, int n, real *ra, real *rb)
+static inline void fractal_power(real a, real b, int n, real *ra, real *rb)
 {
 	real re = 0, im = 0, c = 1;   /* c: n choose k */
 	for (int k = 0; k <= n; k++) {
@@ -65,7 +65,7 @@ inline void fractal_power(real a, real b, int n, real *ra, real *rb)
 
 /* mandel (julia = 0: the point is c, z starts at it) and julia (the constant
  * is c, z starts at the point), exponent n: z = z^n + c until |z|^2 > 4. */
-inline real fractal_mandel_julia(float3 p, float4 pr, float4 io, int julia)
+static inline real fractal_mandel_julia(float3 p, float4 pr, float4 io, int julia)
 {
 	int max_iter = max((int)pr.x, 1), n = (int)pr.y;
 	real x = (real)p.x, y = (real)p.y;
@@ -100,7 +100,7 @@ inline real fractal_mandel_julia(float3 p, float4 pr, float4 io, int julia)
 /* magnet 1 and 2, in the mandel form (c the point, z from 0) or the julia
  * form (c the constant, z from the point): Newton-like maps whose orbits
  * escape past |z|^2 = 10000 or settle at z = 1. */
-inline real fractal_magnet(float3 p, float4 pr, float4 io)
+static inline real fractal_magnet(float3 p, float4 pr, float4 io)
 {
 	int max_iter = max((int)pr.x, 1), type = (int)pr.y;
 	int julia = type > 2;
@@ -147,7 +147,7 @@ inline real fractal_magnet(float3 p, float4 pr, float4 io)
  * fraction's digits, so a large value is first wrapped here, in real, by the
  * period that frequency gives it, which leaves pattern_wave's result as it
  * is. */
-float pattern_fractal(int kind, float3 p, float4 pr, float4 io, float frequency)
+static float pattern_fractal(int kind, float3 p, float4 pr, float4 io, float frequency)
 {
 	real v = kind == PATTERN_MAGNET ? fractal_magnet(p, pr, io)
 	       : fractal_mandel_julia(p, pr, io, kind == PATTERN_JULIA);

@@ -5,7 +5,7 @@
  * and merged gives exactly the image of one run (DESIGN.md, Determinism). */
 
 /* A 32-bit integer hash with good avalanche (Chris Wellons' lowbias32). */
-inline uint rng_hash(uint x)
+static inline uint rng_hash(uint x)
 {
 	x ^= x >> 16;
 	x *= 0x7feb352dU;
@@ -16,13 +16,13 @@ inline uint rng_hash(uint x)
 }
 
 /* The key of one sample of one pixel; rng_uniform draws its dimensions. */
-inline uint rng_key(uint pixel, uint sample, uint seed)
+static inline uint rng_key(uint pixel, uint sample, uint seed)
 {
 	return rng_hash(pixel ^ rng_hash(sample ^ rng_hash(seed + 0x9e3779b9U)));
 }
 
 /* A uniform float in [0, 1): 24 bits, so 1.0f itself never comes out. */
-inline float rng_uniform(uint key, uint dim)
+static inline float rng_uniform(uint key, uint dim)
 {
 	return (float)(rng_hash(key ^ rng_hash(dim + 0x85ebca6bU)) >> 8) * (1.0f / 16777216.0f);
 }

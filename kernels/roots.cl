@@ -7,7 +7,7 @@
 #define ROOTS_REFINE_STEPS 200
 
 /* c[0] + ... + c[n] x^n, and its derivative into *dp. */
-inline real roots_value(const real *c, int n, real x, real *dp)
+static inline real roots_value(const real *c, int n, real x, real *dp)
 {
 	real v = c[n], d = 0;
 	for (int i = n - 1; i >= 0; i--) {
@@ -21,7 +21,7 @@ inline real roots_value(const real *c, int n, real x, real *dp)
 /* The root in [lo, hi] of c, whose value flo at lo has the other sign than at
  * hi: bisection, with Newton's steps where they stay in the bracket and
  * shrink it fast enough. */
-inline real roots_refine(const real *c, int n, real lo, real hi, real flo)
+static inline real roots_refine(const real *c, int n, real lo, real hi, real flo)
 {
 	real x = (real)0.5 * (lo + hi), dx = hi - lo, dxold = dx;
 	for (int i = 0; i < ROOTS_REFINE_STEPS; i++) {
@@ -52,7 +52,7 @@ inline real roots_refine(const real *c, int n, real lo, real hi, real flo)
 
 /* The roots of c between the breakpoints ends[0] < ... < ends[m - 1], where it
  * is monotonic: at most max, into out. */
-inline int roots_between(const real *c, int n, const real *ends, int m, real *out, int max)
+static inline int roots_between(const real *c, int n, const real *ends, int m, real *out, int max)
 {
 	int k = 0;
 	real d, flo = roots_value(c, n, ends[0], &d);
@@ -69,7 +69,7 @@ inline int roots_between(const real *c, int n, const real *ends, int m, real *ou
 
 /* The roots in (a, b] of c[0] + ... + c[n] x^n (leading zeros dropped), in
  * increasing order, at most max of them, into out; returns how many. */
-inline int roots_find(const real *c, int n, real a, real b, real *out, int max)
+static inline int roots_find(const real *c, int n, real a, real b, real *out, int max)
 {
 	while (n > 0 && c[n] == (real)0)
 		n--;

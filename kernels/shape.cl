@@ -9,7 +9,7 @@
 #define SHAPE_INSIDE_ROW(NAME, name) \
 	case PRIM_##NAME: return name##_inside(prims, p, x);
 
-inline float shape_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+static inline float shape_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                              float tmin, float tmax)
 {
 	switch (p->type) {
@@ -18,7 +18,7 @@ inline float shape_intersect(float3 o, float3 d, global const dev_prim *prims, g
 	}
 }
 
-inline float3 shape_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 shape_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	switch (p->type) {
 	PRIM_SHAPES(SHAPE_NORMAL_ROW)
@@ -26,7 +26,7 @@ inline float3 shape_normal(global const dev_prim *prims, global const dev_prim *
 	}
 }
 
-inline bool shape_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool shape_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	switch (p->type) {
 	PRIM_SHAPES(SHAPE_INSIDE_ROW)
@@ -38,7 +38,7 @@ inline bool shape_inside(global const dev_prim *prims, global const dev_prim *p,
  * triangles), for uv_mapping: the shapes that define one (a mesh's triangles,
  * not a lone triangle); every other shape gives x's own x and y, as POV-Ray's
  * default UVCoord does. */
-inline float2 shape_uv(global const dev_prim *prims, global const float4 *normals, int prim, int inst, float3 lx,
+static inline float2 shape_uv(global const dev_prim *prims, global const float4 *normals, int prim, int inst, float3 lx,
                        float3 x)
 {
 	global const dev_prim *p = &prims[prim];
@@ -69,7 +69,7 @@ typedef struct {
 
 /* flip: the hit is on a CSG leaf whose outside is the CSG's inside there (a
  * subtracted shape), so the normal turns over. */
-inline intersect_surface intersect_surface_at(global const dev_prim *prims, global const float4 *normals,
+static inline intersect_surface intersect_surface_at(global const dev_prim *prims, global const float4 *normals,
                                               int prim, int inst, bool flip, float3 x)
 {
 	global const dev_prim *p = &prims[prim];

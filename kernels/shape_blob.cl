@@ -13,7 +13,7 @@ typedef struct {
 	real t0, t1, A, B, C, r2, s;
 } blob_piece;
 
-inline bool blob_piece_of(global const dev_prim *prims, int rec, int k, real3 o, real3 d, blob_piece *out)
+static inline bool blob_piece_of(global const dev_prim *prims, int rec, int k, real3 o, real3 d, blob_piece *out)
 {
 	float4 ea = prims[rec].a, eb = prims[rec + 1].a;
 	real3 a = convert_real3(ea.xyz), b = convert_real3(eb.xyz), ax = b - a;
@@ -61,7 +61,7 @@ inline bool blob_piece_of(global const dev_prim *prims, int rec, int k, real3 o,
 	return true;
 }
 
-inline float blob_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p, float tmin,
+static inline float blob_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p, float tmin,
                             float tmax)
 {
 	float4 head = prims[p->link].a;
@@ -110,7 +110,7 @@ inline float blob_intersect(float3 o, float3 d, global const dev_prim *prims, gl
 }
 
 /* The field at v (the blob's space) and its gradient into *g. */
-inline real blob_field(global const dev_prim *prims, global const dev_prim *p, real3 v, real3 *g)
+static inline real blob_field(global const dev_prim *prims, global const dev_prim *p, real3 v, real3 *g)
 {
 	int n = (int)prims[p->link].a.x;
 	real f = 0;
@@ -131,7 +131,7 @@ inline real blob_field(global const dev_prim *prims, global const dev_prim *p, r
 	return f;
 }
 
-inline float3 blob_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 blob_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	real3 g;
 	blob_field(prims, p, intersect_to_local_real(p, x), &g);
@@ -141,7 +141,7 @@ inline float3 blob_normal(global const dev_prim *prims, global const dev_prim *p
 	return intersect_normal_to_world(p, n);
 }
 
-inline bool blob_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool blob_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	real3 g;
 	return blob_field(prims, p, intersect_to_local_real(p, x), &g) > (real)prims[p->link].a.y;

@@ -2,7 +2,7 @@
  * [-1, 1]^3, so a transformed box is still one primitive; the map is about the
  * box's centre, the a of its PRIM_DATA record (intersect_to_local_about). */
 
-inline float3 box_local(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 box_local(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return intersect_to_local_about(p, intersect_data(prims, p).xyz, x);
 }
@@ -10,7 +10,7 @@ inline float3 box_local(global const dev_prim *prims, global const dev_prim *p, 
 /* The slabs of the cube: the entering face, or the leaving one from inside. A
  * direction component of 0 gives infinities of the same sign outside that slab
  * (a miss) and of opposite signs inside it. */
-inline float box_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+static inline float box_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                            float tmin, float tmax)
 {
 	float3 oo = box_local(prims, p, o), dd = intersect_dir_to_local(p, d);
@@ -24,7 +24,7 @@ inline float box_intersect(float3 o, float3 d, global const dev_prim *prims, glo
 }
 
 /* The face the point is nearest to, in the cube's space. */
-inline float3 box_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 box_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 q = box_local(prims, p, x), a = fabs(q);
 	float3 n = a.x >= a.y && a.x >= a.z ? (float3)(sign(q.x), 0.0f, 0.0f)
@@ -35,7 +35,7 @@ inline float3 box_normal(global const dev_prim *prims, global const dev_prim *p,
 /* POV-Ray's uv: the six faces unfolded as a cross, a quarter of u and a third
  * of v each, none mirrored seen from outside; the point from the box's
  * corner at its least x, y, z, a fraction of each side. */
-inline float2 box_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float2 box_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 q = box_local(prims, p, x), a = fabs(q), f = 0.5f * (q + 1.0f);
 	if (a.x >= a.y && a.x >= a.z)
@@ -48,7 +48,7 @@ inline float2 box_uv(global const dev_prim *prims, global const dev_prim *p, flo
 	                  : (float2)(0.25f + f.x / 4.0f, (1.0f + f.y) / 3.0f);
 }
 
-inline bool box_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool box_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 a = fabs(box_local(prims, p, x));
 	return a.x < 1.0f && a.y < 1.0f && a.z < 1.0f;

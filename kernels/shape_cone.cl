@@ -18,7 +18,7 @@
  * passes by a cone's point. */
 
 /* A point in the shape's space. */
-inline float3 cone_local(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 cone_local(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return intersect_to_local_about(p, prims[p->link + 1].a.xyz, x);
 }
@@ -26,7 +26,7 @@ inline float3 cone_local(global const dev_prim *prims, global const dev_prim *p,
 /* The t of the ray's point nearest the axis between the ends (x = y = 0,
  * 0 <= z <= 1): where the quadric's terms are smallest near where the ray
  * meets it, so they cancel least. */
-inline float cone_start(float3 oo, float3 dd)
+static inline float cone_start(float3 oo, float3 dd)
 {
 	float a = dd.x * dd.x + dd.y * dd.y, dd2 = dot(dd, dd);
 	if (a > 0.0f) {
@@ -40,7 +40,7 @@ inline float cone_start(float3 oo, float3 dd)
 
 /* The slab between the ends, z from z0 to z1, along the ray: [*lo, *hi];
  * false when the ray runs beside it. */
-inline bool cone_slab(float3 oo, float3 dd, float z0, float z1, float *lo, float *hi)
+static inline bool cone_slab(float3 oo, float3 dd, float z0, float z1, float *lo, float *hi)
 {
 	if (dd.z == 0.0f) {
 		*lo = -INFINITY;
@@ -60,7 +60,7 @@ inline bool cone_slab(float3 oo, float3 dd, float z0, float z1, float *lo, float
  * C / q alone fails a ray that grazes the surface near the point it starts
  * from, where q, B and s all vanish (Numerical Recipes' form assumes they do
  * not). */
-inline float2 cone_roots(float A, float B, float C, float s, float K)
+static inline float2 cone_roots(float A, float B, float C, float s, float K)
 {
 	float q = B > 0.0f ? -B - s : -B + s;
 	float u = q / A, v = q * q > K * fabs(A) ? C / q : (B > 0.0f ? -B + s : -B - s) / A;
@@ -68,7 +68,7 @@ inline float2 cone_roots(float A, float B, float C, float s, float K)
 }
 
 /* The nearest of ts + c[0..3] in (tmin, tmax), else tmax; unused entries are INFINITY. */
-inline float cone_nearest(float ts, float4 c, float tmin, float tmax)
+static inline float cone_nearest(float ts, float4 c, float tmin, float tmax)
 {
 	float4 v = ts + c;
 	v = select((float4)(INFINITY), v, v > tmin);
@@ -76,7 +76,7 @@ inline float cone_nearest(float ts, float4 c, float tmin, float tmax)
 	return best < tmax ? best : tmax;
 }
 
-inline float cylinder_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+static inline float cylinder_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                                 float tmin, float tmax)
 {
 	float3 oo = cone_local(prims, p, o), dd = intersect_dir_to_local(p, d);
@@ -111,7 +111,7 @@ inline float cylinder_intersect(float3 o, float3 d, global const dev_prim *prims
 	                                 INFINITY, INFINITY), tmin, tmax);
 }
 
-inline float cone_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+static inline float cone_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                             float tmin, float tmax)
 {
 	float3 oo = cone_local(prims, p, o), dd = intersect_dir_to_local(p, d);
@@ -165,7 +165,7 @@ inline float cone_intersect(float3 o, float3 d, global const dev_prim *prims, gl
  * surface nearest in world units, to first order (|f| / |grad f| for the side
  * f = 0, whose gradient goes to world space by the rows), so that a point near
  * the rim goes to the right part however the shape is stretched. */
-inline float3 cone_part_normal(global const dev_prim *p, float3 q, float k0, float k1, bool capped)
+static inline float3 cone_part_normal(global const dev_prim *p, float3 q, float k0, float k1, bool capped)
 {
 	float r = k0 + k1 * q.z;
 	float3 side = (float3)(q.x, q.y, -k1 * r);   /* half the gradient of x^2 + y^2 - r^2 */
@@ -179,13 +179,13 @@ inline float3 cone_part_normal(global const dev_prim *p, float3 q, float k0, flo
 	return side;
 }
 
-inline float3 cylinder_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 cylinder_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 q = cone_local(prims, p, x);
 	return intersect_normal_to_world(p, cone_part_normal(p, q, 1.0f, 0.0f, intersect_data(prims, p).y != 0.0f));
 }
 
-inline float3 cone_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 cone_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 q = cone_local(prims, p, x);
 	float4 data = intersect_data(prims, p);
@@ -194,7 +194,7 @@ inline float3 cone_normal(global const dev_prim *prims, global const dev_prim *p
 
 /* POV-Ray's Inside: the solid, open or not; the surface counts as inside an
  * open one (POV-Ray's EPSILON leans that way) and outside a closed one. */
-inline bool cone_inside_at(float3 q, float k0, float k1, bool capped)
+static inline bool cone_inside_at(float3 q, float k0, float k1, bool capped)
 {
 	float w2 = q.x * q.x + q.y * q.y, r = k0 + k1 * q.z, r2 = r * r;
 	if (capped)
@@ -202,12 +202,12 @@ inline bool cone_inside_at(float3 q, float k0, float k1, bool capped)
 	return w2 <= r2 && q.z >= 0.0f && q.z <= 1.0f;
 }
 
-inline bool cylinder_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool cylinder_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return cone_inside_at(cone_local(prims, p, x), 1.0f, 0.0f, intersect_data(prims, p).y != 0.0f);
 }
 
-inline bool cone_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool cone_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float4 data = intersect_data(prims, p);
 	return cone_inside_at(cone_local(prims, p, x), data.x, 1.0f - data.x, data.y != 0.0f);

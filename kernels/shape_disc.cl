@@ -3,14 +3,14 @@
  * PRIM_DATA records: x the square of the hole's radius (over the disc's), then
  * the centre (xyz). Its inside is z < 0. */
 
-inline float3 disc_local(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 disc_local(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return intersect_to_local_about(p, prims[p->link + 1].a.xyz, x);
 }
 
 /* The ray starts from its point nearest the centre, so the distance from the
  * centre keeps its precision when the disc is far away. */
-inline float disc_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+static inline float disc_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                             float tmin, float tmax)
 {
 	float3 oo = disc_local(prims, p, o), dd = intersect_dir_to_local(p, d);
@@ -26,12 +26,12 @@ inline float disc_intersect(float3 o, float3 d, global const dev_prim *prims, gl
 	return r2 >= intersect_data(prims, p).x && r2 <= 1.0f ? t : tmax;
 }
 
-inline float3 disc_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 disc_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return intersect_normal_to_world(p, (float3)(0.0f, 0.0f, 1.0f));
 }
 
-inline bool disc_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool disc_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return disc_local(prims, p, x).z < 0.0f;
 }

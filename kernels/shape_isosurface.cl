@@ -25,7 +25,7 @@ typedef struct {
 	real threshold, accuracy, max_gradient;
 } iso_shape;
 
-inline iso_shape iso_shape_of(global const dev_prim *prims, global const dev_prim *p)
+static inline iso_shape iso_shape_of(global const dev_prim *prims, global const dev_prim *p)
 {
 	float4 a = prims[p->link].a, b = prims[p->link + 1].a, c = prims[p->link + 2].a;
 	iso_shape s;
@@ -41,14 +41,14 @@ inline iso_shape iso_shape_of(global const dev_prim *prims, global const dev_pri
 }
 
 /* The function less the threshold, negative inside (POV-Ray's EvaluatePolarized). */
-inline real iso_value(const iso_shape *s, real3 x)
+static inline real iso_value(const iso_shape *s, real3 x)
 {
 	real f = scene_function_at(0, s->fn, x.x, x.y, x.z);   /* eval gives it no pattern */
 	return (s->flags & ISO_POSITIVE) ? s->threshold - f : f - s->threshold;
 }
 
 /* Where the ray enters and leaves the container: false when it misses. */
-inline bool iso_container(const iso_shape *s, real3 P, real3 D, real *t1, real *t2)
+static inline bool iso_container(const iso_shape *s, real3 P, real3 D, real *t1, real *t2)
 {
 	if (s->flags & ISO_SPHERE) {
 		real3 oc = P - s->lo;
@@ -72,7 +72,7 @@ inline bool iso_container(const iso_shape *s, real3 P, real3 D, real *t1, real *
 /* POV-Ray's Function_Find_Root: the first root after *t1 up to t2, its sign
  * of inside flipped by *inv (which an open isosurface may turn), by halving
  * depth first, nearest half first, without recursion. */
-inline bool iso_find_root(const iso_shape *s, real3 P, real3 D, real t1, real t2, int *inv, real *root)
+static inline bool iso_find_root(const iso_shape *s, real3 P, real3 D, real t1, real t2, int *inv, real *root)
 {
 	real vlen = length(D);
 	real at = t1, af = (real)*inv * iso_value(s, P + t1 * D);
@@ -112,7 +112,7 @@ inline bool iso_find_root(const iso_shape *s, real3 P, real3 D, real t1, real t2
 	}
 }
 
-inline float isosurface_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+static inline float isosurface_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                                   float tmin, float tmax)
 {
 	iso_shape s = iso_shape_of(prims, p);
@@ -171,7 +171,7 @@ inline float isosurface_intersect(float3 o, float3 d, global const dev_prim *pri
 
 /* The container's normal where x is on its surface (and the function inside
  * there), else the function's gradient by POV-Ray's forward differences. */
-inline float3 isosurface_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 isosurface_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	iso_shape s = iso_shape_of(prims, p);
 	real3 v = intersect_to_local_real(p, x), n;
@@ -201,7 +201,7 @@ inline float3 isosurface_normal(global const dev_prim *prims, global const dev_p
 	return intersect_normal_to_world(p, convert_float3(n));
 }
 
-inline bool isosurface_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool isosurface_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	iso_shape s = iso_shape_of(prims, p);
 	real3 v = intersect_to_local_real(p, x);

@@ -12,7 +12,7 @@ typedef struct {
 	int iterations, hyper, cube;
 } julia_params;
 
-inline julia_params julia_params_of(global const dev_prim *prims, global const dev_prim *p)
+static inline julia_params julia_params_of(global const dev_prim *prims, global const dev_prim *p)
 {
 	float4 c = prims[p->link].a, s = prims[p->link + 1].a, m = prims[p->link + 2].a, k = prims[p->link + 3].a;
 	julia_params j;
@@ -29,7 +29,7 @@ typedef struct {
 	real x, y, z, w;
 } julia_q;
 
-inline julia_q julia_qmul(julia_q a, julia_q b)
+static inline julia_q julia_qmul(julia_q a, julia_q b)
 {
 	julia_q r;
 	r.x = a.x * b.x - a.y * b.y - a.z * b.z - a.w * b.w;
@@ -40,7 +40,7 @@ inline julia_q julia_qmul(julia_q a, julia_q b)
 }
 
 /* POV-Ray's HMult(r, a, b). */
-inline julia_q julia_hmul(julia_q a, julia_q b)
+static inline julia_q julia_hmul(julia_q a, julia_q b)
 {
 	julia_q r;
 	r.x = a.x * b.x - a.y * b.y - a.z * b.z + a.w * b.w;
@@ -50,14 +50,14 @@ inline julia_q julia_hmul(julia_q a, julia_q b)
 	return r;
 }
 
-inline real3 julia_hnormal(julia_q h, julia_q n)
+static inline real3 julia_hnormal(julia_q h, julia_q n)
 {
 	return (real3)(h.x * n.x + h.y * n.y + h.z * n.z + h.w * n.w, -h.y * n.x + h.x * n.y - h.w * n.z + h.z * n.w,
 	               -h.z * n.x - h.w * n.y + h.x * n.z + h.y * n.w);
 }
 
 /* One row of the quaternion normal, one step of the orbit at z. */
-inline julia_q julia_qderiv(julia_q m, julia_q z, int cube)
+static inline julia_q julia_qderiv(julia_q m, julia_q z, int cube)
 {
 	real d = z.y * z.y + z.z * z.z + z.w * z.w, x2 = z.x * z.x;
 	julia_q r;
@@ -77,7 +77,7 @@ inline julia_q julia_qderiv(julia_q m, julia_q z, int cube)
 	return r;
 }
 
-inline julia_q julia_step(const julia_params *j, julia_q z)
+static inline julia_q julia_step(const julia_params *j, julia_q z)
 {
 	julia_q r;
 	if (j->hyper) {
@@ -105,7 +105,7 @@ inline julia_q julia_step(const julia_params *j, julia_q z)
 /* The orbit of p: whether it stays; *dist the marching's step (when want_dist);
  * *normal, for a point that stays (or, for want_dist == 2, the normal from
  * wherever the orbit leaves: a hit rounded just outside still gets one). */
-inline int julia_orbit(const julia_params *j, real3 p, real3 dir, int want_dist, real *dist, real3 *normal)
+static inline int julia_orbit(const julia_params *j, real3 p, real3 dir, int want_dist, real *dist, real3 *normal)
 {
 	julia_q z;
 	z.x = p.x, z.y = p.y, z.z = p.z;
@@ -161,7 +161,7 @@ inline int julia_orbit(const julia_params *j, real3 p, real3 dir, int want_dist,
 	return 1;
 }
 
-inline float julia_fractal_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+static inline float julia_fractal_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                                      float tmin, float tmax)
 {
 	julia_params j = julia_params_of(prims, p);
@@ -221,7 +221,7 @@ inline float julia_fractal_intersect(float3 o, float3 d, global const dev_prim *
  * hit that rounding put outside (its orbit escapes early, and the normal of
  * that shorter orbit is another) moves in against the shorter orbit's normal,
  * by steps that double from 1e-7, until its orbit stays. */
-inline float3 julia_fractal_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 julia_fractal_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	julia_params j = julia_params_of(prims, p);
 	real dist;
@@ -242,7 +242,7 @@ inline float3 julia_fractal_normal(global const dev_prim *prims, global const de
 	return intersect_normal_to_world(p, convert_float3(n));
 }
 
-inline bool julia_fractal_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool julia_fractal_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	julia_params j = julia_params_of(prims, p);
 	real dist;

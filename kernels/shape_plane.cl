@@ -1,7 +1,7 @@
 /* shape_plane.cl: POV-Ray's plane, the half-space below it being its inside.
  * a.xyz is the unit normal, a.w the distance of the plane from the origin along it. */
 
-inline float plane_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+static inline float plane_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                              float tmin, float tmax)
 {
 	float dn = dot(p->a.xyz, d);
@@ -11,12 +11,12 @@ inline float plane_intersect(float3 o, float3 d, global const dev_prim *prims, g
 	return t > tmin && t < tmax ? t : tmax;
 }
 
-inline float3 plane_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 plane_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return p->a.xyz;
 }
 
-inline bool plane_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool plane_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return dot(p->a.xyz, x) < p->a.w;
 }

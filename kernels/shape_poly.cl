@@ -9,7 +9,7 @@
 #define POLY_INSIDE_TOLERANCE 1e-4f   /* POV-Ray's: a value below it is inside */
 #define POLY_MAX_DISTANCE 1e7f        /* POV-Ray's: its solver looks no further */
 
-inline int poly_order(global const dev_prim *prims, global const dev_prim *p)
+static inline int poly_order(global const dev_prim *prims, global const dev_prim *p)
 {
 	return (int)intersect_data(prims, p).x;
 }
@@ -17,13 +17,13 @@ inline int poly_order(global const dev_prim *prims, global const dev_prim *p)
 /* Its bound (SCENE_BOUND_ in src/scene.h: 0 none, 1 the unit sphere, 2 the
  * cube [-1, 1]^3), whose map from the poly's space is in the three records
  * after the first. */
-inline int poly_bound(global const dev_prim *prims, global const dev_prim *p)
+static inline int poly_bound(global const dev_prim *prims, global const dev_prim *p)
 {
 	return (int)intersect_data(prims, p).y;
 }
 
 /* Coefficient i, from its two floats, after the bound's records. */
-inline real poly_coeff(global const dev_prim *prims, global const dev_prim *p, int i)
+static inline real poly_coeff(global const dev_prim *prims, global const dev_prim *p, int i)
 {
 	float4 r = prims[p->link + (poly_bound(prims, p) ? 4 : 1) + i / 2].a;
 	return (i & 1) ? (real)r.z + (real)r.w : (real)r.x + (real)r.y;
@@ -31,7 +31,7 @@ inline real poly_coeff(global const dev_prim *prims, global const dev_prim *p, i
 
 /* acc = acc (p + d s) + add, polynomials in s of degrees *deg and adeg (-1:
  * zero), and the same with every number's size, which bounds the rounding. */
-inline void poly_horner_step(real *acc, real *mag, int *deg, real p, real d, const real *add, const real *amag,
+static inline void poly_horner_step(real *acc, real *mag, int *deg, real p, real d, const real *add, const real *amag,
                              int adeg)
 {
 	int n = *deg;
@@ -57,7 +57,7 @@ inline void poly_horner_step(real *acc, real *mag, int *deg, real p, real d, con
 
 /* The polynomial along the ray P + s D into q (q[h] of s^h); its degree, the
  * leading coefficients lost in rounding dropped. */
-inline int poly_along(global const dev_prim *prims, global const dev_prim *p, int n, real3 P, real3 D, real *q)
+static inline int poly_along(global const dev_prim *prims, global const dev_prim *p, int n, real3 P, real3 D, real *q)
 {
 	real mx[ROOTS_MAX_ORDER + 1], ay[ROOTS_MAX_ORDER + 1], my[ROOTS_MAX_ORDER + 1];
 	real az[ROOTS_MAX_ORDER + 1], mz[ROOTS_MAX_ORDER + 1];
@@ -81,7 +81,7 @@ inline int poly_along(global const dev_prim *prims, global const dev_prim *p, in
 
 /* POV-Ray's Ray_In_Bound: whether the ray (P, D) in the poly's space meets
  * its bound ahead of P, or starts inside it. */
-inline bool poly_ray_in_bound(global const dev_prim *prims, global const dev_prim *p, int kind, real3 P, real3 D)
+static inline bool poly_ray_in_bound(global const dev_prim *prims, global const dev_prim *p, int kind, real3 P, real3 D)
 {
 	float4 a = prims[p->link + 1].a, b = prims[p->link + 2].a, c = prims[p->link + 3].a;
 	real3 ra = convert_real3(a.xyz), rb = convert_real3(b.xyz), rc = convert_real3(c.xyz);
@@ -106,7 +106,7 @@ inline bool poly_ray_in_bound(global const dev_prim *prims, global const dev_pri
 	return near <= far && far >= (real)0;
 }
 
-inline float poly_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p, float tmin,
+static inline float poly_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p, float tmin,
                             float tmax)
 {
 	int n = poly_order(prims, p), kind = poly_bound(prims, p);
@@ -136,7 +136,7 @@ inline float poly_intersect(float3 o, float3 d, global const dev_prim *prims, gl
 }
 
 /* The polynomial's value at x (its own space), by Horner's rule in z, y, x. */
-inline real poly_value(global const dev_prim *prims, global const dev_prim *p, int n, real3 x)
+static inline real poly_value(global const dev_prim *prims, global const dev_prim *p, int n, real3 x)
 {
 	int term = 0;
 	real vx = 0;
@@ -154,7 +154,7 @@ inline real poly_value(global const dev_prim *prims, global const dev_prim *p, i
 }
 
 /* The gradient, POV-Ray's normal; (1, 0, 0) in the poly's space where it vanishes. */
-inline float3 poly_normal(global const dev_prim *prims, global const dev_prim *p, float3 wx)
+static inline float3 poly_normal(global const dev_prim *prims, global const dev_prim *p, float3 wx)
 {
 	int n = poly_order(prims, p), term = 0;
 	real3 x = intersect_to_local_real(p, wx);
@@ -185,7 +185,7 @@ inline float3 poly_normal(global const dev_prim *prims, global const dev_prim *p
 	return intersect_normal_to_world(p, gf);
 }
 
-inline bool poly_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool poly_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return poly_value(prims, p, poly_order(prims, p), intersect_to_local_real(p, x)) < (real)POLY_INSIDE_TOLERANCE;
 }

@@ -7,13 +7,13 @@
  * by. Every edge is turned so that the inside is on its left. */
 
 /* The record i of a prism's records. */
-inline float4 prism_rec(global const dev_prim *prims, global const dev_prim *p, int i)
+static inline float4 prism_rec(global const dev_prim *prims, global const dev_prim *p, int i)
 {
 	return prims[p->link + i].a;
 }
 
 /* Whether the point (x, z) of the plane is inside the outline. */
-inline bool prism_in_outline(global const dev_prim *prims, global const dev_prim *p, float x, float z)
+static inline bool prism_in_outline(global const dev_prim *prims, global const dev_prim *p, float x, float z)
 {
 	int chunks = as_int(prism_rec(prims, p, 0).z), r = 2;
 	bool in = false, odd = false;
@@ -36,7 +36,7 @@ inline bool prism_in_outline(global const dev_prim *prims, global const dev_prim
 }
 
 /* The parameters (enter, leave) of the ray in the box lo..hi, enter > leave when it misses. */
-inline float2 prism_slab(float3 o, float3 inv, float3 lo, float3 hi)
+static inline float2 prism_slab(float3 o, float3 inv, float3 lo, float3 hi)
 {
 	float3 t0 = (lo - o) * inv, t1 = (hi - o) * inv;
 	float3 a = fmin(t0, t1), b = fmax(t0, t1);
@@ -44,7 +44,7 @@ inline float2 prism_slab(float3 o, float3 inv, float3 lo, float3 hi)
 }
 
 /* The box of a chunk's part of the solid, from its box in the plane. */
-inline void prism_chunk_box(float4 box, float h1, float h2, bool conic, float3 *lo, float3 *hi)
+static inline void prism_chunk_box(float4 box, float h1, float h2, bool conic, float3 *lo, float3 *hi)
 {
 	if (conic) {
 		float4 a = box * h1, b = box * h2;
@@ -59,7 +59,7 @@ inline void prism_chunk_box(float4 box, float h1, float h2, bool conic, float3 *
 
 #define PRISM_EDGE_EPS 1e-6f   /* how far past its ends an edge is still hit: no cracks at corners */
 
-inline float prism_intersect(float3 wo, float3 wd, global const dev_prim *prims, global const dev_prim *p,
+static inline float prism_intersect(float3 wo, float3 wd, global const dev_prim *prims, global const dev_prim *p,
                              float tmin, float tmax)
 {
 	float3 o = intersect_to_local(p, wo), d = intersect_dir_to_local(p, wd), inv = 1.0f / d;
@@ -130,7 +130,7 @@ inline float prism_intersect(float3 wo, float3 wd, global const dev_prim *prims,
 }
 
 /* The cap or side the point is nearest to. */
-inline float3 prism_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 prism_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 q = intersect_to_local(p, x);
 	float4 head = prism_rec(prims, p, 0);
@@ -175,7 +175,7 @@ inline float3 prism_normal(global const dev_prim *prims, global const dev_prim *
 	return intersect_normal_to_world(p, n);
 }
 
-inline bool prism_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool prism_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 q = intersect_to_local(p, x);
 	float4 head = prism_rec(prims, p, 0);

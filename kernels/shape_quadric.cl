@@ -11,7 +11,7 @@ typedef double quadric_real;
 typedef float quadric_real;
 #endif
 
-inline float quadric_intersect(float3 wo, float3 wd, global const dev_prim *prims, global const dev_prim *p,
+static inline float quadric_intersect(float3 wo, float3 wd, global const dev_prim *prims, global const dev_prim *p,
                                float tmin, float tmax)
 {
 	float3 fo = intersect_to_local(p, wo), fd = intersect_dir_to_local(p, wd);
@@ -36,7 +36,7 @@ inline float quadric_intersect(float3 wo, float3 wd, global const dev_prim *prim
 	return t > tmin && t < tmax ? t : tmax;
 }
 
-inline float3 quadric_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 quadric_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 q = intersect_to_local(p, x);
 	float4 s = prims[p->link].a, m = prims[p->link + 1].a, l = prims[p->link + 2].a;
@@ -48,7 +48,7 @@ inline float3 quadric_normal(global const dev_prim *prims, global const dev_prim
 	return intersect_normal_to_world(p, n);
 }
 
-inline bool quadric_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool quadric_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 q = intersect_to_local(p, x);
 	float4 s = prims[p->link].a, m = prims[p->link + 1].a, l = prims[p->link + 2].a;

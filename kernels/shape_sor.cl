@@ -14,18 +14,18 @@ typedef double sor_real;
 typedef float sor_real;
 #endif
 
-inline float4 sor_rec(global const dev_prim *prims, global const dev_prim *p, int i)
+static inline float4 sor_rec(global const dev_prim *prims, global const dev_prim *p, int i)
 {
 	return prims[p->link + i].a;
 }
 
-inline sor_real sor_cubic(sor_real c0, sor_real c1, sor_real c2, sor_real c3, sor_real t)
+static inline sor_real sor_cubic(sor_real c0, sor_real c1, sor_real c2, sor_real c3, sor_real t)
 {
 	return ((c0 * t + c1) * t + c2) * t + c3;
 }
 
 /* The first root in (lo, hi) of the cubic g, else hi. */
-inline sor_real sor_first_root(sor_real g0, sor_real g1, sor_real g2, sor_real g3, sor_real lo, sor_real hi)
+static inline sor_real sor_first_root(sor_real g0, sor_real g1, sor_real g2, sor_real g3, sor_real lo, sor_real hi)
 {
 	if (!(lo < hi))
 		return hi;
@@ -85,7 +85,7 @@ inline sor_real sor_first_root(sor_real g0, sor_real g1, sor_real g2, sor_real g
 	return hi;
 }
 
-inline float sor_intersect(float3 wo, float3 wd, global const dev_prim *prims, global const dev_prim *p,
+static inline float sor_intersect(float3 wo, float3 wd, global const dev_prim *prims, global const dev_prim *p,
                            float tmin, float tmax)
 {
 	float3 fo = intersect_to_local(p, wo), fd = intersect_dir_to_local(p, wd);
@@ -145,7 +145,7 @@ inline float sor_intersect(float3 wo, float3 wd, global const dev_prim *prims, g
 }
 
 /* The piece the point is nearest to. */
-inline float3 sor_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 sor_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 q = intersect_to_local(p, x);
 	int n = as_int(sor_rec(prims, p, 0).w);
@@ -180,7 +180,7 @@ inline float3 sor_normal(global const dev_prim *prims, global const dev_prim *p,
  * the pieces below it and of its own height; on the base disc its radius's
  * share minus 1, on the cap 2 minus it. A lathe's (from its spline's
  * parameter) is not kept: its point's x and y, shape.cl's default. */
-inline float2 sor_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float2 sor_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 q = intersect_to_local(p, x);
 	int n = as_int(sor_rec(prims, p, 0).w), curves = 0;
@@ -208,7 +208,7 @@ inline float2 sor_uv(global const dev_prim *prims, global const dev_prim *p, flo
 	return (float2)(sphere_uv_about((float3)(q.x, 0.0f, q.z)).x, v);
 }
 
-inline bool sor_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool sor_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 q = intersect_to_local(p, x);
 	float4 head = sor_rec(prims, p, 0);

@@ -4,7 +4,7 @@
 /* d is unit length. The discriminant is computed from the distance between the
  * centre and the ray's closest point, which keeps its precision for small spheres
  * far away (Haines et al., Ray Tracing Gems, ch. 7). */
-inline float sphere_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+static inline float sphere_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                               float tmin, float tmax)
 {
 	float3 oc = o - p->a.xyz;
@@ -18,14 +18,14 @@ inline float sphere_intersect(float3 o, float3 d, global const dev_prim *prims, 
 	return intersect_pick(-b - s, -b + s, tmin, tmax);
 }
 
-inline float3 sphere_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 sphere_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return normalize(x - p->a.xyz);
 }
 
 /* POV-Ray's uv of a point q about a sphere's centre in its own space: u the
  * turn from +x toward +z around y, v from the south pole (0) to the north (1). */
-inline float2 sphere_uv_about(float3 q)
+static inline float2 sphere_uv_about(float3 q)
 {
 	float len = length(q);
 	if (len == 0.0f)
@@ -42,18 +42,18 @@ inline float2 sphere_uv_about(float3 q)
 	return (float2)(u, v);
 }
 
-inline float2 sphere_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float2 sphere_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return sphere_uv_about(x - p->a.xyz);
 }
 
-inline bool sphere_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool sphere_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 v = x - p->a.xyz;
 	return dot(v, v) < p->a.w * p->a.w;
 }
 
-inline float ellipsoid_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+static inline float ellipsoid_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                                  float tmin, float tmax)
 {
 	float3 oo = intersect_to_local(p, o), dd = intersect_dir_to_local(p, d);
@@ -69,17 +69,17 @@ inline float ellipsoid_intersect(float3 o, float3 d, global const dev_prim *prim
 }
 
 /* An ellipsoid's uv is its unit sphere's: the sphere's uv in its own space. */
-inline float2 ellipsoid_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float2 ellipsoid_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return sphere_uv_about(intersect_to_local(p, x));
 }
 
-inline float3 ellipsoid_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 ellipsoid_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return intersect_normal_to_world(p, intersect_to_local(p, x));
 }
 
-inline bool ellipsoid_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool ellipsoid_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 q = intersect_to_local(p, x);
 	return dot(q, q) < 1.0f;

@@ -24,12 +24,12 @@ typedef struct {
 } sweep_seg;
 
 /* The head record of p's sweep. */
-inline int sweep_head(global const dev_prim *prims, global const dev_prim *p)
+static inline int sweep_head(global const dev_prim *prims, global const dev_prim *p)
 {
 	return p->link - (int)prims[p->link].a.z;
 }
 
-inline sweep_seg sweep_segment_at(global const dev_prim *prims, int head, int j)
+static inline sweep_seg sweep_segment_at(global const dev_prim *prims, int head, int j)
 {
 	int rec = head + 1 + SWEEP_RECORDS * j;
 	sweep_seg g;
@@ -43,24 +43,24 @@ inline sweep_seg sweep_segment_at(global const dev_prim *prims, int head, int j)
 	return g;
 }
 
-inline real3 sweep_centre(const sweep_seg *g, real u)
+static inline real3 sweep_centre(const sweep_seg *g, real u)
 {
 	return ((g->c[3] * u + g->c[2]) * u + g->c[1]) * u + g->c[0];
 }
 
-inline real sweep_radius(const sweep_seg *g, real u)
+static inline real sweep_radius(const sweep_seg *g, real u)
 {
 	return ((g->r[3] * u + g->r[2]) * u + g->r[1]) * u + g->r[0];
 }
 
-inline bool sweep_in_box(const sweep_seg *g, real3 x, real slack)
+static inline bool sweep_in_box(const sweep_seg *g, real3 x, real slack)
 {
 	return !(x.x < g->lo.x - slack || x.x > g->hi.x + slack || x.y < g->lo.y - slack || x.y > g->hi.y + slack ||
 	         x.z < g->lo.z - slack || x.z > g->hi.z + slack);
 }
 
 /* The least power distance from x over u in [0, 1], its u into *best_u. */
-inline real sweep_least_power(const sweep_seg *g, real3 x, real *best_u)
+static inline real sweep_least_power(const sweep_seg *g, real3 x, real *best_u)
 {
 	real3 w[4] = { x - g->c[0], -g->c[1], -g->c[2], -g->c[3] };
 	real f[7] = { 0, 0, 0, 0, 0, 0, 0 }, df[6], u[6];
@@ -85,7 +85,7 @@ inline real sweep_least_power(const sweep_seg *g, real3 x, real *best_u)
 
 /* The least power distance over the segments (those whose box, grown by
  * slack, holds x, when near), with the centre of its sphere into *centre. */
-inline real sweep_least(global const dev_prim *prims, int head, real3 x, bool near, real slack, real3 *centre)
+static inline real sweep_least(global const dev_prim *prims, int head, real3 x, bool near, real slack, real3 *centre)
 {
 	int n = (int)prims[head].a.x;
 	real best = INFINITY;
@@ -104,7 +104,7 @@ inline real sweep_least(global const dev_prim *prims, int head, real3 x, bool ne
 }
 
 /* Whether x is deeper than eps inside a segment: no point of the surface. */
-inline bool sweep_deep_inside(global const dev_prim *prims, int head, real3 x, real eps)
+static inline bool sweep_deep_inside(global const dev_prim *prims, int head, real3 x, real eps)
 {
 	int n = (int)prims[head].a.x;
 	for (int j = 0; j < n; j++) {
@@ -123,7 +123,7 @@ inline bool sweep_deep_inside(global const dev_prim *prims, int head, real3 x, r
 
 /* The u in [0, 1] where the ray touches segment g's envelope (as
  * envelope_roots in src/shape_sphere_sweep.c). */
-inline int sweep_envelope_roots(const sweep_seg *g, real3 o, real3 d, real *u)
+static inline int sweep_envelope_roots(const sweep_seg *g, real3 o, real3 d, real *u)
 {
 	real3 w[4] = { o - g->c[0], -g->c[1], -g->c[2], -g->c[3] };
 	real3 dc[3];
@@ -157,7 +157,7 @@ inline int sweep_envelope_roots(const sweep_seg *g, real3 o, real3 d, real *u)
 	return roots_find(F, 10, (real)-1e-12, (real)1, u, 10);
 }
 
-inline float sphere_sweep_intersect(float3 wo, float3 wd, global const dev_prim *prims, global const dev_prim *p,
+static inline float sphere_sweep_intersect(float3 wo, float3 wd, global const dev_prim *prims, global const dev_prim *p,
                                     float tmin, float tmax)
 {
 	float4 chunk = prims[p->link].a;
@@ -210,7 +210,7 @@ inline float sphere_sweep_intersect(float3 wo, float3 wd, global const dev_prim 
 	return best < (real)tmax ? (float)best : tmax;
 }
 
-inline float3 sphere_sweep_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 sphere_sweep_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	/* a point of the surface is in its segment's box, give or take rounding */
 	int head = sweep_head(prims, p);
@@ -223,7 +223,7 @@ inline float3 sphere_sweep_normal(global const dev_prim *prims, global const dev
 	return intersect_normal_to_world(p, n);
 }
 
-inline bool sphere_sweep_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool sphere_sweep_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	real3 c;
 	return sweep_least(prims, sweep_head(prims, p), intersect_to_local_real(p, x), true, (real)0, &c) < (real)0;

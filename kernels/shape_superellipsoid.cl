@@ -32,7 +32,7 @@ typedef struct {
 	int n;
 } se_exp;
 
-inline se_exp se_exponent(float hi, float lo)
+static inline se_exp se_exponent(float hi, float lo)
 {
 	se_exp e;
 	e.p = (real)hi + (real)lo;
@@ -42,7 +42,7 @@ inline se_exp se_exponent(float hi, float lo)
 }
 
 /* x^p for x in [0, 1]. */
-inline real se_pow(real x, se_exp e)
+static inline real se_pow(real x, se_exp e)
 {
 	if (e.n == 0)
 		return pow(x, e.p);
@@ -56,13 +56,13 @@ inline real se_pow(real x, se_exp e)
 }
 
 /* s^(1/p) for s in [1, 2]. */
-inline real se_root(real s, se_exp e)
+static inline real se_root(real s, se_exp e)
 {
 	return e.n == 1 ? s : e.n == 2 ? sqrt(s) : e.n == 4 ? sqrt(sqrt(s)) : pow(s, e.inv);
 }
 
 /* G(a, b, p) for a, b >= 0, from the ratio to the larger, without overflow. */
-inline real se_gauge2(real a, real b, se_exp e)
+static inline real se_gauge2(real a, real b, se_exp e)
 {
 	real hi = fmax(a, b), lo = fmin(a, b);
 	if (hi == (real)0)
@@ -70,7 +70,7 @@ inline real se_gauge2(real a, real b, se_exp e)
 	return hi * se_root((real)1 + se_pow(lo / hi, e), e);
 }
 
-inline real se_gauge(real3 v, se_exp p, se_exp q)
+static inline real se_gauge(real3 v, se_exp p, se_exp q)
 {
 	return se_gauge2(se_gauge2(fabs(v.x), fabs(v.y), p), fabs(v.z), q);
 }
@@ -78,7 +78,7 @@ inline real se_gauge(real3 v, se_exp p, se_exp q)
 /* |x|, |y| and |z| at x in the octant of signs oct: where the ray crosses
  * into it, a coordinate that rounding puts across 0 counts as 0 (with an
  * exponent below 1 its power would not be small); a sign 0 takes x's own. */
-inline real3 se_abs(real3 x, real3 oct)
+static inline real3 se_abs(real3 x, real3 oct)
 {
 	return (real3)(oct.x != (real)0 ? fmax(oct.x * x.x, (real)0) : fabs(x.x),
 	               oct.y != (real)0 ? fmax(oct.y * x.y, (real)0) : fabs(x.y),
@@ -86,7 +86,7 @@ inline real3 se_abs(real3 x, real3 oct)
 }
 
 /* The function at o + t d, in the octant oct. */
-inline real se_value(real3 o, real3 d, real t, se_exp p, se_exp q, real3 oct)
+static inline real se_value(real3 o, real3 d, real t, se_exp p, se_exp q, real3 oct)
 {
 	real3 a = se_abs(o + t * d, oct);
 	return se_gauge2(se_gauge2(a.x, a.y, p), a.z, q) - (real)1;
@@ -94,7 +94,7 @@ inline real se_value(real3 o, real3 d, real t, se_exp p, se_exp q, real3 oct)
 
 /* G(a, b, p) and its derivatives by a and by b, (a / G)^(p - 1) and
  * (b / G)^(p - 1), for a, b >= 0: two powers. */
-inline real se_gauge2_d(real a, real b, se_exp e, real *da, real *db)
+static inline real se_gauge2_d(real a, real b, se_exp e, real *da, real *db)
 {
 	real hi = fmax(a, b);
 	if (hi == (real)0) {
@@ -114,7 +114,7 @@ inline real se_gauge2_d(real a, real b, se_exp e, real *da, real *db)
  * the signs sg of x, y and z: those of the octant the point is taken in (a
  * coordinate a rounding across 0 counts as 0), or where sg is 0, its own
  * (0: the way the ray goes). */
-inline real se_eval(real3 o, real3 d, real t, se_exp p, se_exp q, real3 sg, real *df)
+static inline real se_eval(real3 o, real3 d, real t, se_exp p, se_exp q, real3 sg, real *df)
 {
 	real3 x = o + t * d;
 	real3 s = (real3)(sg.x != (real)0 ? sg.x : x.x != (real)0 ? sign(x.x) : sign(d.x),
@@ -129,7 +129,7 @@ inline real se_eval(real3 o, real3 d, real t, se_exp p, se_exp q, real3 sg, real
 }
 
 /* Whether the surface may cross the ray in [t0, t1], a stretch within one octant. */
-inline bool se_may_cross(real3 o, real3 d, real t0, real t1, se_exp p, se_exp q, real3 oct)
+static inline bool se_may_cross(real3 o, real3 d, real t0, real t1, se_exp p, se_exp q, real3 oct)
 {
 	real3 a = se_abs(o + t0 * d, oct), b = se_abs(o + t1 * d, oct);
 	return se_gauge(fmin(a, b), p, q) <= (real)1 && se_gauge(fmax(a, b), p, q) >= (real)1;
@@ -137,7 +137,7 @@ inline bool se_may_cross(real3 o, real3 d, real t0, real t1, se_exp p, se_exp q,
 
 /* The crossing in [a, b], where the function changes sign (fa, fb): the
  * Illinois variant of regula falsi. */
-inline real se_bracketed(real3 o, real3 d, se_exp p, se_exp q, real3 oct, real a, real fa, real b, real fb)
+static inline real se_bracketed(real3 o, real3 d, se_exp p, se_exp q, real3 oct, real a, real fa, real b, real fb)
 {
 	real tol = (real)4 * REAL_EPSILON * (fabs(a) + fabs(b)), c = a;
 	int side = 0;
@@ -169,7 +169,7 @@ inline real se_bracketed(real3 o, real3 d, se_exp p, se_exp q, real3 oct, real a
 /* The nearest crossing in [a, b], a stretch within one octant, or -1: the
  * stretches of a binary tree over it, depth first and nearest first, without
  * a stack (a stretch's index at its level says where it is). */
-inline real se_first_crossing(real3 o, real3 d, se_exp p, se_exp q, real3 oct, real a, real b)
+static inline real se_first_crossing(real3 o, real3 d, se_exp p, se_exp q, real3 oct, real a, real b)
 {
 	real3 r = oct * d;   /* how fast |x|, |y|, |z| grow */
 	if ((r.x >= (real)0 && r.y >= (real)0 && r.z >= (real)0) || (r.x <= (real)0 && r.y <= (real)0 && r.z <= (real)0)) {
@@ -217,7 +217,7 @@ inline real se_first_crossing(real3 o, real3 d, se_exp p, se_exp q, real3 oct, r
  * once it rises, and where it is below 0 it crosses once. sgn is 1 for a
  * convex stretch, -1 for a concave one, within the octant of signs oct (0:
  * any). */
-inline real se_newton(real3 o, real3 d, se_exp p, se_exp q, real a, real b, real sgn, real3 oct)
+static inline real se_newton(real3 o, real3 d, se_exp p, se_exp q, real a, real b, real sgn, real3 oct)
 {
 	real df, f = se_eval(o, d, a, p, q, oct, &df) * sgn;
 	if (f < (real)0) {
@@ -254,7 +254,7 @@ inline real se_newton(real3 o, real3 d, se_exp p, se_exp q, real a, real b, real
 	return (real)-1;
 }
 
-inline float superellipsoid_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+static inline float superellipsoid_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                                       float tmin, float tmax)
 {
 	float4 ex = intersect_data(prims, p);
@@ -302,7 +302,7 @@ inline float superellipsoid_intersect(float3 o, float3 d, global const dev_prim 
 }
 
 /* POV-Ray's normal (super.cpp), the function's gradient. */
-inline float3 superellipsoid_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 superellipsoid_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float4 ex = intersect_data(prims, p);
 	float pe = ex.x + ex.y, qe = ex.z + ex.w;
@@ -325,7 +325,7 @@ inline float3 superellipsoid_normal(global const dev_prim *prims, global const d
 	return intersect_normal_to_world(p, n);
 }
 
-inline bool superellipsoid_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool superellipsoid_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float4 ex = intersect_data(prims, p);
 	real3 v = intersect_to_local_real(p, x);

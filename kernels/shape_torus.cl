@@ -7,7 +7,7 @@
  * and a closed formula (Ferrari's) loses them to cancellation, so the quartic
  * is solved in double where the device has it, by kernels/roots.cl. */
 
-inline float torus_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+static inline float torus_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                              float tmin, float tmax)
 {
 	real k = intersect_data(prims, p).x;
@@ -48,7 +48,7 @@ inline float torus_intersect(float3 o, float3 d, global const dev_prim *prims, g
  * the circle, P - M, or on a spindle torus's inner surface (inside the sphere
  * through the spindle's tips), where the tube around the far point -M makes
  * the surface, -(P + M). */
-inline float3 torus_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 torus_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float k = intersect_data(prims, p).x;
 	float3 q = intersect_to_local(p, x);
@@ -60,7 +60,7 @@ inline float3 torus_normal(global const dev_prim *prims, global const dev_prim *
 /* POV-Ray's normal, P - M everywhere: the shading normal (shape.cl). It is
  * not the spindle's, which is why rays that leave the surface are moved off
  * it along the geometric one. */
-inline float3 torus_shading_normal(global const dev_prim *p, float3 x)
+static inline float3 torus_shading_normal(global const dev_prim *p, float3 x)
 {
 	float3 q = intersect_to_local(p, x);
 	float rho = sqrt(q.x * q.x + q.z * q.z);
@@ -71,7 +71,7 @@ inline float3 torus_shading_normal(global const dev_prim *p, float3 x)
 /* POV-Ray's uv: u the turn around y (from -x, clockwise seen from +y), v the
  * turn around the tube from its inner side; the angles do not depend on the
  * radii, so the torus of major radius 1 gives them. */
-inline float2 torus_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float2 torus_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 q = intersect_to_local(p, x);
 	float u = 1.0f - (atan2(q.z, q.x) + M_PI_F) / (2.0f * M_PI_F);
@@ -79,7 +79,7 @@ inline float2 torus_uv(global const dev_prim *prims, global const dev_prim *p, f
 	return (float2)(u, (atan2(q.y, r) + M_PI_F) / (2.0f * M_PI_F));
 }
 
-inline bool torus_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool torus_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float k = intersect_data(prims, p).x;
 	float3 q = intersect_to_local(p, x);

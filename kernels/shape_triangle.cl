@@ -14,7 +14,7 @@ typedef struct {
 	float sx, sy, sz;
 } triangle_ray;
 
-inline triangle_ray triangle_setup(float3 d)
+static inline triangle_ray triangle_setup(float3 d)
 {
 	float3 ad = fabs(d);
 	int kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
@@ -30,7 +30,7 @@ inline triangle_ray triangle_setup(float3 d)
 
 /* The test with the ray's part made: each corner is moved to the ray's
  * origin and its axes put in the sheared space's order by one shuffle. */
-inline float triangle_intersect_ray(float3 o, const triangle_ray *r, global const dev_prim *p, float tmin,
+static inline float triangle_intersect_ray(float3 o, const triangle_ray *r, global const dev_prim *p, float tmin,
                                     float tmax)
 {
 	float4 ro = shuffle((float4)(o, 0.0f), r->axes);
@@ -57,41 +57,41 @@ inline float triangle_intersect_ray(float3 o, const triangle_ray *r, global cons
 	return t > tmin && t < tmax ? t : tmax;
 }
 
-inline float triangle_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+static inline float triangle_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                                 float tmin, float tmax)
 {
 	triangle_ray r = triangle_setup(d);
 	return triangle_intersect_ray(o, &r, p, tmin, tmax);
 }
 
-inline float3 triangle_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 triangle_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return normalize(cross(p->b.xyz - p->a.xyz, p->c.xyz - p->a.xyz));
 }
 
-inline bool triangle_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool triangle_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return false;
 }
 
-inline float smooth_triangle_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
+static inline float smooth_triangle_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                                        float tmin, float tmax)
 {
 	return triangle_intersect(o, d, prims, p, tmin, tmax);
 }
 
-inline float3 smooth_triangle_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 smooth_triangle_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return triangle_normal(prims, p, x);
 }
 
-inline bool smooth_triangle_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool smooth_triangle_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	return false;
 }
 
 /* x's barycentric weights in the triangle p: of b (x), of c (y). */
-inline float2 triangle_weights(global const dev_prim *p, float3 x)
+static inline float2 triangle_weights(global const dev_prim *p, float3 x)
 {
 	float3 e1 = p->b.xyz - p->a.xyz, e2 = p->c.xyz - p->a.xyz, w = x - p->a.xyz;
 	float d00 = dot(e1, e1), d01 = dot(e1, e2), d11 = dot(e2, e2);
@@ -102,7 +102,7 @@ inline float2 triangle_weights(global const dev_prim *p, float3 x)
 /* A mesh triangle's uv at x: its corners' uv (after its normals, when the
  * first normal's w says they are there) interpolated as POV-Ray's
  * Mesh::UVCoord does; a triangle without uv, <0, 0>, as POV-Ray's default. */
-inline float2 triangle_uv(global const dev_prim *p, global const float4 *n, float3 x)
+static inline float2 triangle_uv(global const dev_prim *p, global const float4 *n, float3 x)
 {
 	if (p->type != PRIM_SMOOTH_TRIANGLE || n[0].w != 1.0f)
 		return (float2)(0.0f);
@@ -111,7 +111,7 @@ inline float2 triangle_uv(global const dev_prim *p, global const float4 *n, floa
 }
 
 /* Barycentric interpolation of a smooth triangle's three normals at x. */
-inline float3 triangle_smooth_normal(global const dev_prim *p, global const float4 *n, float3 x)
+static inline float3 triangle_smooth_normal(global const dev_prim *p, global const float4 *n, float3 x)
 {
 	float3 e1 = p->b.xyz - p->a.xyz, e2 = p->c.xyz - p->a.xyz, w = x - p->a.xyz;
 	float d00 = dot(e1, e1), d01 = dot(e1, e2), d11 = dot(e2, e2);

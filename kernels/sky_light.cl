@@ -10,7 +10,7 @@
  * toward the viewer); dim: five dimensions. The shadow ray stops at any
  * surface, as light_emitters' do: paths through transparent surfaces find
  * the sky by BSDF sampling, whose weight there is 1. */
-inline float3 light_sky(const scene_data *sc, const bsdf *m, const material_lobes *lobes, float3 x, float3 ng,
+static inline float3 light_sky(const scene_data *sc, const bsdf *m, const material_lobes *lobes, float3 x, float3 ng,
                         float3 n, float3 wo, uint key, uint dim, media_stack ms, int solids)
 {
 	global const dev_params *p = sc->p;

@@ -18,7 +18,7 @@
 #define SKY_PI 3.14159265358979f
 
 /* The sines of row r's lowest and highest latitude (r = 0: the top row). */
-inline float sky_row_z(int height, int r, float *z_lo)
+static inline float sky_row_z(int height, int r, float *z_lo)
 {
 	float h = (float)height;
 	*z_lo = sin(SKY_PI * ((float)(height - 1 - r) / h - 0.5f));
@@ -27,7 +27,7 @@ inline float sky_row_z(int height, int r, float *z_lo)
 
 /* The interval of cdf c (n + 1 values from 0 to 1) that holds u in [0, 1):
  * the last i with c[i] <= u, so an interval of zero width is never chosen. */
-inline int sky_search(global const float *c, int n, float u)
+static inline int sky_search(global const float *c, int n, float u)
 {
 	int lo = 0, hi = n - 1;
 	while (lo < hi) {
@@ -42,7 +42,7 @@ inline int sky_search(global const float *c, int n, float u)
 
 /* The density over the image's directions in texel (r, c): its probability
  * over its solid angle. */
-inline float sky_texel_pdf(global const dev_sky *s, global const float *cdf, int r, int c)
+static inline float sky_texel_pdf(global const dev_sky *s, global const float *cdf, int r, int c)
 {
 	int w = s->width, h = s->height;
 	global const float *row = cdf + (h + 1) + r * (w + 1);
@@ -54,7 +54,7 @@ inline float sky_texel_pdf(global const dev_sky *s, global const float *cdf, int
 
 /* A world direction drawn by importance from u0..u3 in [0, 1), and its pdf
  * in solid angle. */
-inline float3 sky_sample(global const dev_sky *s, global const float *cdf, float u0, float u1, float u2, float u3,
+static inline float3 sky_sample(global const dev_sky *s, global const float *cdf, float u0, float u1, float u2, float u3,
                          float *pdf)
 {
 	int w = s->width, h = s->height;
@@ -73,7 +73,7 @@ inline float3 sky_sample(global const dev_sky *s, global const float *cdf, float
 }
 
 /* The pdf in solid angle with which sky_sample draws the unit direction d. */
-inline float sky_pdf(global const dev_sky *s, global const float *cdf, float3 d)
+static inline float sky_pdf(global const dev_sky *s, global const float *cdf, float3 d)
 {
 	float3 q = (float3)(dot(s->rows[0].xyz, d), dot(s->rows[1].xyz, d), dot(s->rows[2].xyz, d));
 	float len = length(q);

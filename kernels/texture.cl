@@ -31,9 +31,9 @@ typedef struct {
 	float filter, transmit;
 } pigment_colour;
 
-float3 texture_normal(const scene_data *sc, int normal, float3 x, float2 uv, float3 n);
+static float3 texture_normal(const scene_data *sc, int normal, float3 x, float2 uv, float3 n);
 
-inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float3 o, float3 d)
+static inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float3 o, float3 d)
 {
 	shading_point sp;
 	sp.x = o + hit.t * d;
@@ -70,7 +70,7 @@ inline shading_point texture_point(const scene_data *sc, traverse_hit hit, float
 /* Makes material the one shaded at sp: a texture of a pattern of textures, or
  * a layer; its normal pattern tilts the shading normal anew (each texture and
  * layer has its own in POV-Ray). */
-inline void texture_use(const scene_data *sc, shading_point *sp, int material)
+static inline void texture_use(const scene_data *sc, shading_point *sp, int material)
 {
 	sp->m = &sc->materials[material];
 	sp->ns = sp->n0;
@@ -80,14 +80,14 @@ inline void texture_use(const scene_data *sc, shading_point *sp, int material)
 
 /* The point a pattern's rows map: p, or the surface's <u, v, 0> for a
  * uv_mapped one. */
-inline float3 texture_at(global const dev_pattern *pt, float3 p, float2 uv)
+static inline float3 texture_at(global const dev_pattern *pt, float3 p, float2 uv)
 {
 	return pt->flags & PATTERN_UV ? (float3)(uv, 0.0f) : p;
 }
 
 /* A point of world space (or of the mesh's, for a mesh's own textures) in a
  * pattern's space: its rows. */
-inline float3 texture_pattern_point(global const dev_pattern *pt, float3 p)
+static inline float3 texture_pattern_point(global const dev_pattern *pt, float3 p)
 {
 	return (float3)(dot(pt->rows[0].xyz, p) + pt->rows[0].w, dot(pt->rows[1].xyz, p) + pt->rows[1].w,
 	                dot(pt->rows[2].xyz, p) + pt->rows[2].w);
@@ -96,7 +96,7 @@ inline float3 texture_pattern_point(global const dev_pattern *pt, float3 p)
 /* An image_map pt at p (its space, warped): the texel or POV-Ray's
  * interpolation of four (kernels/image.cl), then filter all and transmit all.
  * Off a once image: clear (white, transmit 1). */
-inline pigment_colour texture_image(const scene_data *sc, global const dev_pattern *pt, float3 p)
+static inline pigment_colour texture_image(const scene_data *sc, global const dev_pattern *pt, float3 p)
 {
 	pigment_colour out = { (float3)(1.0f), 0.0f, 1.0f };
 	float x, y;
@@ -112,7 +112,7 @@ inline pigment_colour texture_image(const scene_data *sc, global const dev_patte
 /* A pattern's value at q (its space, before its warps): pattern_value, or an
  * image_pattern's, which reads the image (frequency, phase and wave after it,
  * as POV-Ray's Evaluate_TPat). */
-inline float texture_value(const scene_data *sc, global const dev_pattern *pt, float3 q, float3 n, float3 d)
+static inline float texture_value(const scene_data *sc, global const dev_pattern *pt, float3 q, float3 n, float3 d)
 {
 	if (pt->kind == PATTERN_IMAGE_PATTERN)
 		return pattern_wave(pt, image_value(sc, pt, pattern_warp_point(pt, sc->warps, q)));
@@ -124,7 +124,7 @@ inline float texture_value(const scene_data *sc, global const dev_pattern *pt, f
 /* pattern_perturb, or the tilt of a pattern that reads an image: a
  * bump_map's, or an image_pattern's slope at POV-Ray's pyramid of points
  * (pattern_perturb's for every pattern without a normal of its own). */
-inline float3 texture_perturb(const scene_data *sc, global const dev_pattern *pt, float3 x, float3 n)
+static inline float3 texture_perturb(const scene_data *sc, global const dev_pattern *pt, float3 x, float3 n)
 {
 	if (pt->kind != PATTERN_BUMP_MAP && pt->kind != PATTERN_IMAGE_PATTERN)
 		return pattern_perturb(sc, pt, x, n);
@@ -144,7 +144,7 @@ inline float3 texture_perturb(const scene_data *sc, global const dev_pattern *pt
 /* POV-Ray's blend map search: the entries around v, and how far v is from the
  * first to the second (Search_Blend_Map: past the last entry, the last; at or
  * before the first, the first; an entry's own value gives that entry). */
-inline int texture_map_search(global const dev_map_entry *e, int n, float v, int *next, float *frac)
+static inline int texture_map_search(global const dev_map_entry *e, int n, float v, int *next, float *frac)
 {
 	*frac = 0.0f;
 	if (v >= e[n - 1].value) {
@@ -163,7 +163,7 @@ inline int texture_map_search(global const dev_map_entry *e, int n, float v, int
 
 /* The sum of the average pattern's weights, its entries' values (never 0:
  * POV-Ray divides by it; eclat gives no colour instead of NaNs). */
-inline float texture_map_weights(global const dev_map_entry *e, int n)
+static inline float texture_map_weights(global const dev_map_entry *e, int n)
 {
 	float total = 0.0f;
 	for (int i = 0; i < n; i++)
@@ -177,7 +177,7 @@ inline float texture_map_weights(global const dev_map_entry *e, int n)
  * (average) by every entry: POV-Ray's Perturb_Normal and Do_Average_Normals,
  * one level deep; each entry's normal is placed by every transformation around
  * it, as nested pigments are. */
-float3 texture_normal(const scene_data *sc, int normal, float3 x, float2 uv, float3 n)
+static float3 texture_normal(const scene_data *sc, int normal, float3 x, float2 uv, float3 n)
 {
 	global const dev_pattern *pt = &sc->patterns[normal];
 	if (!(pt->flags & PATTERN_NORMAL_MAP))
@@ -219,7 +219,7 @@ float3 texture_normal(const scene_data *sc, int normal, float3 x, float2 uv, flo
  * which runs no function pattern, for the scene's functions that call a
  * pigment function (function_pattern.cl). */
 #define TEXTURE_PIGMENT_TREE(NAME, VALUE) \
-pigment_colour NAME(const scene_data *sc, int root, float3 p, float2 uv, float3 n, float3 d) \
+static pigment_colour NAME(const scene_data *sc, int root, float3 p, float2 uv, float3 n, float3 d) \
 { \
 	int stack[TEXTURE_STACK]; \
 	float weight[TEXTURE_STACK]; \
@@ -283,7 +283,7 @@ pigment_colour NAME(const scene_data *sc, int root, float3 p, float2 uv, float3 
 TEXTURE_PIGMENT_TREE(texture_pigment_tree, texture_value)
 
 /* The pigment at the shading point: the solid colour, or its pattern's tree. */
-inline pigment_colour texture_pigment(const scene_data *sc, const shading_point *sp)
+static inline pigment_colour texture_pigment(const scene_data *sc, const shading_point *sp)
 {
 	global const dev_material *m = sp->m;
 	pigment_colour out = { m->pigment.xyz, m->pigment.w, m->ambient.w };
@@ -307,7 +307,7 @@ typedef struct {
 	int n;
 } texture_blend;
 
-inline texture_blend texture_blend_at(const scene_data *sc, const shading_point *sp, int material)
+static inline texture_blend texture_blend_at(const scene_data *sc, const shading_point *sp, int material)
 {
 	texture_blend b;
 	b.n = 0;
@@ -363,7 +363,7 @@ inline texture_blend texture_blend_at(const scene_data *sc, const shading_point 
  * over a texture's layers, the product of each one's pigment * filter +
  * transmit; over blended textures, the weighted sum. *pass: the same of
  * |filter| + |transmit|, which says whether anything passes at all. */
-inline float3 texture_filter(const scene_data *sc, shading_point *sp, float *pass)
+static inline float3 texture_filter(const scene_data *sc, shading_point *sp, float *pass)
 {
 	texture_blend b = texture_blend_at(sc, sp, sp->material);
 	float3 sum = (float3)(0.0f);
@@ -387,7 +387,7 @@ inline float3 texture_filter(const scene_data *sc, shading_point *sp, float *pas
  * (texture_choose): over blended textures, the weighted sum; over layers,
  * each layer's pigment * emission, times its opacity unless it is the bottom
  * one, seen through the layers above it. */
-inline float3 texture_emitted(const scene_data *sc, shading_point *sp)
+static inline float3 texture_emitted(const scene_data *sc, shading_point *sp)
 {
 	texture_blend b = texture_blend_at(sc, sp, sp->material);
 	float3 sum = (float3)(0.0f);
@@ -412,7 +412,7 @@ inline float3 texture_emitted(const scene_data *sc, shading_point *sp)
  * expectation that is POV-Ray's blend of textures and its layers seen through
  * the ones above. Makes the chosen material sp's (texture_use); returns its
  * pigment there. */
-inline pigment_colour texture_choose(const scene_data *sc, shading_point *sp, float u, float3 *tint)
+static inline pigment_colour texture_choose(const scene_data *sc, shading_point *sp, float u, float3 *tint)
 {
 	texture_blend b = texture_blend_at(sc, sp, sp->material);
 	int mi = b.m[b.n - 1];
@@ -444,7 +444,7 @@ inline pigment_colour texture_choose(const scene_data *sc, shading_point *sp, fl
  * point of the unit sphere the ray points to, the last written on top, each
  * showing what is below through its filter and transmit, and the background
  * below them all (POV-Ray 3.7's sky, with its emission in the layers'). */
-inline float3 texture_sky(const scene_data *sc, float3 d, bool alpha_ray)
+static inline float3 texture_sky(const scene_data *sc, float3 d, bool alpha_ray)
 {
 	global const dev_params *p = sc->p;
 	float3 col = (float3)(0.0f), through = (float3)(1.0f);
@@ -482,7 +482,7 @@ inline float3 texture_sky(const scene_data *sc, float3 d, bool alpha_ray)
 /* How much of the image's background shows through the sky in direction d,
  * for the alpha channel: POV-Ray's transmittance of the sky's layers times
  * the background's own (dev_params.background.w, 0 without an alpha channel). */
-inline float texture_sky_transm(const scene_data *sc, float3 d)
+static inline float texture_sky_transm(const scene_data *sc, float3 d)
 {
 	global const dev_params *p = sc->p;
 	if (p->background.w <= 0.0f)
@@ -501,7 +501,7 @@ inline float texture_sky_transm(const scene_data *sc, float3 d)
 	return fmin(1.0f, fabs(0.297f * through.x + 0.589f * through.y + 0.114f * through.z)) * p->background.w;
 }
 
-inline void texture_first_hit(first_hit *first, const shading_point *sp, float3 albedo)
+static inline void texture_first_hit(first_hit *first, const shading_point *sp, float3 albedo)
 {
 	if (first->object >= 0)
 		return;

@@ -20,7 +20,7 @@ typedef struct {
 	int3 neg;       /* sign bit of each direction component: which slab plane is entered */
 } traverse_ray;
 
-inline traverse_ray traverse_setup(float3 o, float3 d)
+static inline traverse_ray traverse_setup(float3 o, float3 d)
 {
 	traverse_ray r;
 	r.o = o;
@@ -43,7 +43,7 @@ inline traverse_ray traverse_setup(float3 o, float3 d)
  * TRAVERSE_MAX and TRAVERSE_MIN drop, so such a ray counts as inside that slab;
  * the usual fmin(t1, t2) form would turn it into +inf and miss a box the ray
  * touches. Returns the entry distance, or INFINITY when the box is missed. */
-inline float traverse_slab(float3 lo, float3 hi, const traverse_ray *r, float tmax)
+static inline float traverse_slab(float3 lo, float3 hi, const traverse_ray *r, float tmax)
 {
 	float3 tn = (select(lo, hi, r->neg) - r->o) * r->inv_d;
 	float3 tf = (select(hi, lo, r->neg) - r->o) * r->inv_d;
@@ -52,7 +52,7 @@ inline float traverse_slab(float3 lo, float3 hi, const traverse_ray *r, float tm
 	return enter <= leave * BVH_BOX_PAD ? enter : INFINITY;
 }
 
-inline float traverse_box(global const bvh_node *n, const traverse_ray *r, float tmax)
+static inline float traverse_box(global const bvh_node *n, const traverse_ray *r, float tmax)
 {
 	return traverse_slab((float3)(n->min_x, n->min_y, n->min_z), (float3)(n->max_x, n->max_y, n->max_z), r, tmax);
 }
@@ -72,7 +72,7 @@ typedef struct {
  * adds up the node and primitive tests for the ray's kind (the heat map's measure). */
 #if !BVH_WIDE
 #define TRAVERSE_FUNCTION(NAME, SETUP, LEAF_PRIM)                                                \
-inline traverse_hit NAME(global const bvh_node *nodes, global const dev_prim *prims, int root,  \
+static inline traverse_hit NAME(global const bvh_node *nodes, global const dev_prim *prims, int root,  \
                          float3 o, float3 d, float tmin, float tmax, bool any, uint *counts,     \
                          int kind)                                                              \
 {                                                                                               \
@@ -122,7 +122,7 @@ inline traverse_hit NAME(global const bvh_node *nodes, global const dev_prim *pr
 #else
 
 /* The four bytes of a quantized bound, children 0 to 3, as floats. */
-inline float4 traverse_qdecode(uint q)
+static inline float4 traverse_qdecode(uint q)
 {
 	return convert_float4((uint4)(q) >> (uint4)(0u, 8u, 16u, 24u) & (uint4)(255u));
 }
@@ -132,7 +132,7 @@ inline float4 traverse_qdecode(uint q)
  * device runs in its vector unit (one work item still traces one ray). On
  * each axis the direction's sign picks the byte words of the planes entered
  * and left; a bound is origin + q * 2^e (exact), then as in traverse_slab. */
-inline float4 traverse_children(global const bvh_wnode *n, const traverse_ray *r, float tmax)
+static inline float4 traverse_children(global const bvh_wnode *n, const traverse_ray *r, float tmax)
 {
 	uint meta = n->meta;
 	float sx = as_float((meta & 255u) << 23), sy = as_float(((meta >> 8) & 255u) << 23);
@@ -163,7 +163,7 @@ inline float4 traverse_children(global const bvh_wnode *n, const traverse_ray *r
  * PoCL keeps in memory): the nearest is taken at once, the others hit are
  * stacked farthest first, the next nearest on top. */
 #define TRAVERSE_FUNCTION(NAME, SETUP, LEAF_PRIM)                                                \
-inline traverse_hit NAME(global const bvh_node *nodes_, global const dev_prim *prims, int root, \
+static inline traverse_hit NAME(global const bvh_node *nodes_, global const dev_prim *prims, int root, \
                          float3 o, float3 d, float tmin, float tmax, bool any, uint *counts,     \
                          int kind)                                                              \
 {                                                                                               \
@@ -278,7 +278,7 @@ TRAVERSE_FUNCTION(traverse_top, triangle_ray tri = triangle_setup(d);, {
 
 /* The unbounded primitives (planes, quadrics, and CSG objects with no bounds) after the
  * top level's n_prims: every ray tests them. */
-inline traverse_hit traverse_planes(global const dev_prim *prims, int n_prims, int n_planes,
+static inline traverse_hit traverse_planes(global const dev_prim *prims, int n_prims, int n_planes,
                                     float3 o, float3 d, float tmin, traverse_hit hit, uint *counts,
                                     int kind)
 {
@@ -308,7 +308,7 @@ inline traverse_hit traverse_planes(global const dev_prim *prims, int n_prims, i
 }
 
 /* Closest hit in (tmin, tmax). */
-inline traverse_hit traverse_closest(global const bvh_node *nodes, global const dev_prim *prims,
+static inline traverse_hit traverse_closest(global const bvh_node *nodes, global const dev_prim *prims,
                                      int n_prims, int n_planes, float3 o, float3 d, float tmin,
                                      float tmax, uint *counts, int kind)
 {
@@ -319,7 +319,7 @@ inline traverse_hit traverse_closest(global const bvh_node *nodes, global const 
 }
 
 /* Any hit in (tmin, tmax): shadow rays stop at the first occluder. */
-inline bool traverse_any(global const bvh_node *nodes, global const dev_prim *prims, int n_prims,
+static inline bool traverse_any(global const bvh_node *nodes, global const dev_prim *prims, int n_prims,
                          int n_planes, float3 o, float3 d, float tmin, float tmax, uint *counts)
 {
 	traverse_hit none = { tmax, -1, -1, false };

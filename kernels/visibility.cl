@@ -5,14 +5,14 @@
  * shadow rays let it through (no_shadow objects cast none). */
 
 /* The scene object a hit belongs to: a mesh's triangles are its instance's. */
-inline int visibility_object(const scene_data *sc, traverse_hit h)
+static inline int visibility_object(const scene_data *sc, traverse_hit h)
 {
 	return h.inst >= 0 ? sc->prims[h.inst].object : sc->prims[h.prim].object;
 }
 
 /* The closest surface along (o, d) in (tmin, tmax) whose object carries none of
  * the flags in skip. */
-inline traverse_hit visibility_closest(const scene_data *sc, float3 o, float3 d, float tmin, float tmax, int skip,
+static inline traverse_hit visibility_closest(const scene_data *sc, float3 o, float3 d, float tmin, float tmax, int skip,
                                        int kind)
 {
 	for (;;) {
@@ -25,7 +25,7 @@ inline traverse_hit visibility_closest(const scene_data *sc, float3 o, float3 d,
 }
 
 /* POV-Ray's interior fade over a distance t travelled inside. */
-inline float3 visibility_fade(global const dev_material *m, float t)
+static inline float3 visibility_fade(global const dev_material *m, float t)
 {
 	float fd = m->interior.y, fp = m->interior.z;
 	float3 fc = m->fade_color.xyz;
@@ -44,7 +44,7 @@ inline float3 visibility_fade(global const dev_material *m, float t)
  * interior's fade where the ray leaves an inside; an opaque surface stops it
  * (POV-Ray's TracePointLightShadowRay). In a scene where nothing lets shadow
  * rays through, the first surface met stops them, found by an any-hit query. */
-inline float3 visibility_shadow(const scene_data *sc, float3 o, float3 l, float tmin, float tmax, float3 colour)
+static inline float3 visibility_shadow(const scene_data *sc, float3 o, float3 l, float tmin, float tmax, float3 colour)
 {
 	sc->counts[COUNT_RAYS + RAY_SHADOW]++;
 	if (!(sc->p->scene_flags & SCENE_SHADOWS_PASS))

@@ -57,7 +57,7 @@ constant float whitted_jitter_table[256] = {
 
 /* POV-Ray's Jitter2d(DBL x, DBL y): an offset in [-0.5, 0.5) for each place,
  * always the same for the same place. */
-inline float2 whitted_jitter(real x, real y)
+static inline float2 whitted_jitter(real x, real y)
 {
 	int ax = (int)(x * (real)1021), ay = (int)(y * (real)1019), bx = (int)(x * (real)1019), by = (int)(y * (real)1021);
 	return (float2)(whitted_jitter_table[pattern_hash[(pattern_hash[ax & 0xfff] ^ ay) & 0xfff] & 0xff],
@@ -68,7 +68,7 @@ inline float2 whitted_jitter(real x, real y)
  * where the camera makes none. Focal blur moves the ray's origin across the
  * lens as POV-Ray's JitterCameraRay does, by the lens sample ray_number and a
  * jitter of the point (camera_rays holds the lens, src/lower_camera_lens.c). */
-inline bool whitted_camera(const scene_data *sc, real x, real y, int ray_number, float3 *o, float3 *d)
+static inline bool whitted_camera(const scene_data *sc, real x, real y, int ray_number, float3 *o, float3 *d)
 {
 	global const dev_params *p = sc->p;
 	real ix = x + (real)0.5, iy = y + (real)0.5;   /* from the image's top left corner */
@@ -98,7 +98,7 @@ inline bool whitted_camera(const scene_data *sc, real x, real y, int ray_number,
 }
 
 /* One camera ray's colour and transmittance. */
-inline float4 whitted_camera_colour(const scene_data *sc, float3 o, float3 d, media_stack around, first_hit *first)
+static inline float4 whitted_camera_colour(const scene_data *sc, float3 o, float3 d, media_stack around, first_hit *first)
 {
 	global const dev_params *p = sc->p;
 	whitted_ray camera = whitted_child(o, d, (float3)(1.0f), 1.0f, 1.0f, 0, WRAY_IMAGE, p->camera_solids, around);
@@ -112,7 +112,7 @@ inline float4 whitted_camera_colour(const scene_data *sc, float3 o, float3 d, me
  * samples in batches, each at a sub-pixel place of a 16 x 16 grid picked by
  * POV-Ray's hash, until after a batch the variance of the mean of every
  * channel is under the threshold for that many samples (or all were taken). */
-inline float4 whitted_focal(const scene_data *sc, real x, real y, media_stack around, first_hit *first)
+static inline float4 whitted_focal(const scene_data *sc, real x, real y, media_stack around, first_hit *first)
 {
 	global const float4 *lens = sc->camera_rays;
 	int n = (int)lens[2].x, least = (int)lens[2].y;
@@ -149,7 +149,7 @@ inline float4 whitted_focal(const scene_data *sc, real x, real y, media_stack ar
 /* POV-Ray's trace of the point (x, y): focal blur, or the camera's rays there
  * (a mesh_camera may have several) averaged; where it makes none, black and
  * transparent. */
-inline float4 whitted_trace(const scene_data *sc, real x, real y, media_stack around, first_hit *first)
+static inline float4 whitted_trace(const scene_data *sc, real x, real y, media_stack around, first_hit *first)
 {
 	global const dev_params *p = sc->p;
 	if (p->lens.x > 0.0f)
@@ -168,14 +168,14 @@ inline float4 whitted_trace(const scene_data *sc, real x, real y, media_stack ar
 
 /* POV-Ray's Colour_Distance_RGBT of two colours after its anti-aliasing gamma
  * (aa.w: the exponent from the scene's working gamma through +AG's). */
-inline float whitted_aa_distance(float4 a, float4 b, float gexp)
+static inline float whitted_aa_distance(float4 a, float4 b, float gexp)
 {
 	float3 ga = pow(fmax(a.xyz, (float3)(0.0f)), (float3)(gexp)), gb = pow(fmax(b.xyz, (float3)(0.0f)), (float3)(gexp));
 	float3 d = fabs(ga - gb);
 	return d.x + d.y + d.z + fabs(a.w - b.w);
 }
 
-inline void whitted_aa_write(const scene_data *sc, global long4 *film, global float4 *aov, int pixel, float4 c)
+static inline void whitted_aa_write(const scene_data *sc, global long4 *film, global float4 *aov, int pixel, float4 c)
 {
 	film[pixel] += film_fixed(c.xyz, 0);
 	if (sc->p->aov)
@@ -211,7 +211,7 @@ kernel void whitted_aa_grid(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *
 
 /* POV-Ray's SupersampleOnePixel: the pixel's colour and depth x depth more
  * traces on a grid across it, each jittered, averaged. */
-inline float4 whitted_aa_supersample(const scene_data *sc, real x, real y, float4 col, float4 aa, media_stack around)
+static inline float4 whitted_aa_supersample(const scene_data *sc, real x, real y, float4 col, float4 aa, media_stack around)
 {
 	int depth = (int)aa.y;
 	real step = (real)1 / (real)depth, range = (real)0.5 - step * (real)0.5;
@@ -289,7 +289,7 @@ typedef struct {
 	float weight;
 } whitted_square;
 
-inline float4 whitted_aa_point(const scene_data *sc, real x, real y, float4 aa, media_stack around)
+static inline float4 whitted_aa_point(const scene_data *sc, real x, real y, float4 aa, media_stack around)
 {
 	first_hit none = { (float3)(0.0f), (float3)(0.0f), 0.0f, 0 };
 	if (aa.z > 0.0f) {

@@ -197,6 +197,8 @@ cl_program device_build(device_ctx *d, const char *kernel_dir, const char *optio
 		device_fail("clCreateProgramWithSource", err);
 		return NULL;
 	}
+	/* PoCL compiles each kernel at its first launch, in a time set by the depth of its
+	 * out-of-line calls: every helper in kernels/ is static (doc/DESIGN.md). */
 	err = clBuildProgram(prog, 1, &d->device, options, NULL, NULL);
 	if (err != CL_SUCCESS) {
 		if (err == CL_BUILD_PROGRAM_FAILURE)

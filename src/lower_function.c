@@ -122,7 +122,7 @@ static void statement(struct text *t, const scene *s, const int *roots, const sc
 static void function(struct text *t, const scene *s, const int *roots, int f)
 {
 	const scene_function *fn = &s->functions[f];
-	put(t, "real scene_fn%d(const scene_data *sc", f);
+	put(t, "static real scene_fn%d(const scene_data *sc", f);
 	for (int i = 0; i < fn->n_params; i++)
 		put(t, ", real p%d", i);
 	put(t, ")\n{\n");
@@ -212,7 +212,7 @@ char *lower_function_source(const scene *s, const int *roots)
 	put(&t, "/* The scene's functions, written by src/lower_function.c. */\n");
 	for (int f = 0; f < s->n_functions; f++)
 		function(&t, s, roots, f);
-	put(&t, "real scene_function_at(const scene_data *sc, int f, real x, real y, real z)\n{\n\tswitch (f) {\n");
+	put(&t, "static real scene_function_at(const scene_data *sc, int f, real x, real y, real z)\n{\n\tswitch (f) {\n");
 	for (int f = 0; f < s->n_functions; f++) {
 		put(&t, "\tcase %d: return scene_fn%d(sc", f, f);
 		for (int i = 0; i < s->functions[f].n_params; i++)
