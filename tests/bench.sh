@@ -1,6 +1,7 @@
 #!/bin/sh
 # make bench: the paper's statue scene (the Cornell box holding the Stanford bunny,
-# 1080x1080, 5 bounces) and a CSG-heavy scene (tests/bench/csg_blocks.scn)
+# 1080x1080, 5 bounces), a CSG-heavy scene (tests/bench/csg_blocks.scn) and a
+# spotlight's beam through media onto the bunny (tests/bench/media_beam.scn)
 # rendered on the OpenCL device, with paths per second and
 # rays per second by kind, and the BVH's tests per path with the SAH builder and
 # with the paper's median split. Figures are ratios within one run: the machine
@@ -118,15 +119,22 @@ echo "== CSG: 1,000 blocks, each a box less three cylinders, 1080x1080, $SAMPLES
 tr '\r' '\n' < "$out/log" | grep -E '^(eclat|bvh|rays):' | sed 's/^/  /'
 csg_paths=$(paths_of)
 
+echo "== media: a spotlight's beam through scattering air onto the bunny, 1080x1080, $SAMPLES samples"
+"$ECLAT" --stats -W 1080 -H 1080 -s "$SAMPLES" -D Mesh="\"$mesh\"" --io-allow "$MESH_DIR" -o "$out/media.exr" \
+	"$top_srcdir/tests/bench/media_beam.scn" 2> "$out/log" || { cat "$out/log"; exit 1; }
+tr '\r' '\n' < "$out/log" | grep -E '^(eclat|bvh|rays):' | sed 's/^/  /'
+media_paths=$(paths_of)
+
 echo "== 10,000 dragons (a billion triangles), 480x270, 4 samples"
 "$ECLAT" --stats -W 480 -H 270 -s 4 -D Mesh="\"$MESH_DIR/dragon.obj\"" --io-allow "$MESH_DIR" -o "$out/dragons.png" \
 	"$top_srcdir/tests/bench/dragons.scn" 2> "$out/log" || { cat "$out/log"; exit 1; }
 tr '\r' '\n' < "$out/log" | grep -E '^(eclat|bvh):' | sed 's/^/  /'
 
 echo "== summary"
-echo "$paths $sah $median $sah_camera $median_camera $paths_binary $wide_camera $bunny_ms $igea_ms $BUILDS $csg_paths" | awk '{
+echo "$paths $sah $median $sah_camera $median_camera $paths_binary $wide_camera $bunny_ms $igea_ms $BUILDS $csg_paths $media_paths" | awk '{
 	printf "  path tracer: %.2f M paths/s\n", $1
 	printf "  CSG blocks (1,000 boxes less three cylinders each): %.2f M paths/s, %.2fx the Cornell box'\''s\n", $13, ($1 > 0 ? $13 / $1 : 0)
+	printf "  media (a spotlight beam through scattering air, the bunny): %.2f M paths/s, %.2fx the Cornell box'\''s\n", $14, ($1 > 0 ? $14 / $1 : 0)
 	printf "  BVH layouts: wide %.2f M paths/s, binary %.2f (wide/binary %.2fx); tests per camera ray,\n", $1, $6, ($6 > 0 ? $1 / $6 : 0)
 	printf "  counting each child box: wide %.1f, binary %.1f\n", $7, $4
 	printf "  BVH tests per camera ray (binary layout): SAH %.1f (target 24 or fewer), median split %.1f (the paper: about 108);\n", $4, $5
