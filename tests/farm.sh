@@ -6,7 +6,8 @@
 # array renders a frame's sample ranges and a dependent job merges them: the
 # image must equal the single-process render. Faults: a task killed (SIGKILL
 # through scancel) after its first checkpoint is run again and goes on from it,
-# and the merge is still exact; a corrupt part is named by merge. When the
+# and the merge is still exact; a corrupt part is named by merge. An array of
+# one task a frame (frames.sbatch) gives the frames of one animated run. When the
 # cluster cannot start, the test fails saying why (never skips).
 # Environment: ECLAT, top_srcdir, top_builddir, OIIOTOOL (as make check's).
 set -u
@@ -178,6 +179,24 @@ merge=$(sl sbatch --parsable --dependency=afterok:"$again" "$farm/merge.sbatch" 
 wait_job "$merge"
 [ -f k.exr ] && same "task 1 run again resumes; the merge equals the single-process image" whole.exr k.exr ||
 	fail "no merged image after the re-run: $(tail -n 5 eclat-*.log 2>/dev/null)"
+
+# An animation: one array task a frame gives each frame of the single run.
+cat > anim.scn <<'EOF2'
+camera { location <0, 1, -4> look_at 0 }
+light_source { <2, 4, -3> color rgb 1 }
+sphere { <clock * 2 - 1, 0, 0>, 0.5 pigment { rgb <1, 0.5, 0.2> } }
+plane { y, -0.5 pigment { rgb 0.8 } }
+EOF2
+"$ECLAT" -q -W 32 -H 24 -s 8 +KFI1 +KFF4 -o one.png anim.scn || fail "the single-process animation"
+array=$(sl sbatch --parsable --array=1-4 "$farm/frames.sbatch" "$dir/anim.scn" "$dir/farm.png" 1 4 -W 32 -H 24 -s 8) ||
+	fail "frames.sbatch could not be submitted: $array"
+wait_job "$array"
+for f in 1 2 3 4; do
+	[ -f farm$f.png ] && same "array task $f renders frame $f of the animation as the single run does" one$f.png farm$f.png ||
+		fail "no frame $f: $(tail -n 3 eclat-frames-*_$f.log 2>/dev/null)"
+done
+"$OIIOTOOL" -a --fail 0 --warn 0 one1.png one4.png --diff > /dev/null 2>&1 &&
+	fail "frames 1 and 4 are the same image: the clock did not move" || pass "the clock moves between frames"
 
 # A corrupt part: merge names it and writes nothing.
 head -c 2000 frame.part2.exr > cut && mv cut frame.part2.exr
