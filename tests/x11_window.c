@@ -19,6 +19,16 @@
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
 
+/* A window can be destroyed between XQueryTree naming it and the next request
+ * about it (the previous case's window closing as this one opens). Xlib's
+ * default handler exits on that BadWindow; here the request just fails and the
+ * search goes on. */
+static int ignore_error(Display *d, XErrorEvent *e)
+{
+	(void)d, (void)e;
+	return 0;
+}
+
 static Window find(Display *d, Window w, const char *title)
 {
 	XTextProperty name;
@@ -56,7 +66,8 @@ static unsigned channel(unsigned long pixel, unsigned long mask)
 static int drawn(Display *d, Window w)
 {
 	XWindowAttributes a;
-	XGetWindowAttributes(d, w, &a);
+	if (!XGetWindowAttributes(d, w, &a))
+		return 0;
 	XImage *im = XGetImage(d, w, 0, 0, a.width, a.height, AllPlanes, ZPixmap);
 	int any = 0;
 	for (int y = 0; im && y < a.height && !any; y++)
@@ -70,8 +81,8 @@ static int drawn(Display *d, Window w)
 static int shot(Display *d, Window w, const char *path)
 {
 	XWindowAttributes a;
-	XGetWindowAttributes(d, w, &a);
-	XImage *im = XGetImage(d, w, 0, 0, a.width, a.height, AllPlanes, ZPixmap);
+	XImage *im = XGetWindowAttributes(d, w, &a) ? XGetImage(d, w, 0, 0, a.width, a.height, AllPlanes, ZPixmap)
+	                                            : NULL;
 	FILE *f = im ? fopen(path, "wb") : NULL;
 	if (!f) {
 		fprintf(stderr, "x11_window: cannot take or write the screenshot %s\n", path);
@@ -139,6 +150,7 @@ int main(int argc, char **argv)
 		          "[--timeout S]\n");
 		return 1;
 	}
+	XSetErrorHandler(ignore_error);
 	Window w = 0;
 	for (double t = 0; t < timeout; t += 0.05) {
 		w = find(d, DefaultRootWindow(d), title);
