@@ -129,6 +129,11 @@ static void format_time(double s, char *out, size_t n)
 		snprintf(out, n, "%ld:%02ld", t / 60, t % 60);
 }
 
+double render_now(void)
+{
+	return now();
+}
+
 double render_rays(const render_stats *st)
 {
 	return (double)st->counts[COUNT_RAYS + RAY_CAMERA] + st->counts[COUNT_RAYS + RAY_BOUNCE] +
@@ -138,11 +143,10 @@ double render_rays(const render_stats *st)
 /* One line, redrawn in place: samples, speed, time spent and left (in an
  * animation: the frame, and the time left for the frames still to come, at
  * the pace of those done and of this one so far). */
-static void progress(const struct pass_loop *pl)
+static void progress_line(const render_settings *rs, long samples, int total, double run, double rays,
+                          size_t npix)
 {
-	const render_settings *rs = pl->rs;
-	const render_stats *st = pl->st;
-	double run = now() - pl->t0, el = run, frac = (double)st->samples / rs->samples;
+	double el = run, frac = (double)samples / total;
 	int width = 24, bar = (int)(frac * width);
 	double left_s = frac > 0 ? el / frac - el : 0;
 	char elapsed[48], left[48], frame[64] = "";
@@ -155,9 +159,26 @@ static void progress(const struct pass_loop *pl)
 	format_time(el, elapsed, sizeof elapsed);
 	format_time(left_s, left, sizeof left);
 	fprintf(stderr, "\r%s%3d%% [%.*s%*s] %ld/%d samples  %.2f M paths/s  %.2f M rays/s  %s elapsed  %s left ",
-	        frame, (int)(100 * frac), bar, "========================", width - bar, "", st->samples,
-	        rs->samples, pl->npix * (double)st->samples / run * 1e-6, render_rays(st) / run * 1e-6, elapsed,
-	        left);
+	        frame, (int)(100 * frac), bar, "========================", width - bar, "", samples, total,
+	        npix * (double)samples / run * 1e-6, rays / run * 1e-6, elapsed, left);
+}
+
+static void progress(const struct pass_loop *pl)
+{
+	progress_line(pl->rs, pl->st->samples, pl->rs->samples, now() - pl->t0, render_rays(pl->st), pl->npix);
+}
+
+/* A pass of count samples done on one of several devices (render_multi.c):
+ * the shared line, drawn under the queue's lock so that lines never mix. */
+static void progress_shared(const struct pass_loop *pl, int count, double rays)
+{
+	render_queue *q = pl->rs->queue;
+	pthread_mutex_lock(&q->lock);
+	q->done += count;
+	q->rays += rays;
+	if (q->tty)
+		progress_line(pl->rs, q->done, q->total, now() - q->t0, q->rays, pl->npix);
+	pthread_mutex_unlock(&q->lock);
 }
 
 /* f from the device's film, whose pixels hold samples samples each. */
@@ -328,6 +349,7 @@ static int run_passes(struct pass_loop *pl, film *f)
 	double last_checkpoint = pl->t0;
 	int base, count;
 	while (next_pass(pl, per, &base, &count)) {
+		double rays = render_rays(pl->st);
 		if (run_pass(pl, base, count)) {
 			if (tty)
 				fputc('\n', stderr);
@@ -336,6 +358,8 @@ static int run_passes(struct pass_loop *pl, film *f)
 		}
 		if (tty)
 			progress(pl);
+		if (rs->queue)
+			progress_shared(pl, count, render_rays(pl->st) - rays);
 		int shown = pl->st->samples < rs->samples ? show(pl, pl->st->samples) : 0;
 		if (shown < 0)
 			return -1;

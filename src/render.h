@@ -16,6 +16,11 @@ typedef struct {
 	pthread_mutex_t lock;
 	int next, end;
 	int most;   /* samples a pass takes at most, so that a short render still feeds every device */
+	/* the devices' progress, added after each pass: one line for them all */
+	int tty;          /* draw it (not quiet, stderr a terminal) */
+	int total;        /* the samples the line counts to */
+	long done;        /* samples finished */
+	double rays, t0;  /* rays traced; when the render began */
 } render_queue;
 
 typedef struct render_settings {
@@ -65,6 +70,8 @@ typedef struct {
 
 /* All rays counted in st. */
 double render_rays(const render_stats *st);
+/* Seconds on a monotonic clock. */
+double render_now(void);
 
 /* Renders up to rs->samples samples per pixel into f (film_init'ed here). Returns
  * 0 with f holding the samples done (fewer when stopped or out of time), or -1

@@ -3,8 +3,10 @@
  * next pass of samples from a shared queue, so a fast device takes more passes
  * than a slow one and none waits for another. The films' sums are integers
  * (kernels/film.cl), so adding them gives exactly the sums of one device. */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "render.h"
 
@@ -78,13 +80,15 @@ int render_multi(const int *idx, int n, const char *kernel_dir, lower_result *lr
 	if (n == 0 && (n = device_count()) < 0)
 		return -1;
 	struct worker *w = calloc((size_t)n, sizeof *w);
-	render_queue q = { .next = rs->sample_first + (int)rs->start_samples, .end = rs->sample_first + rs->samples };
+	render_queue q = { .next = rs->sample_first + (int)rs->start_samples, .end = rs->sample_first + rs->samples,
+		           .tty = !rs->quiet && isatty(STDERR_FILENO), .total = rs->samples, .done = rs->start_samples };
 	q.most = (q.end - q.next) / (2 * n) > 1 ? (q.end - q.next) / (2 * n) : 1;
 	if (!w || pthread_mutex_init(&q.lock, NULL)) {
 		free(w);
 		return -1;
 	}
 	int rc = prepare(w, n, idx, kernel_dir, lr);
+	q.t0 = render_now();   /* after the builds, as one device's line counts */
 	for (int i = 0; i < n && rc == 0; i++) {
 		w[i].rs = *rs;
 		w[i].rs.queue = &q;
@@ -100,6 +104,8 @@ int render_multi(const int *idx, int n, const char *kernel_dir, lower_result *lr
 			pthread_join(w[i].thread, NULL);
 			rc = rc || w[i].rc ? -1 : 0;   /* a device lost midway leaves a gap in the samples */
 		}
+	if (q.tty && q.done > rs->start_samples)
+		fputc('\n', stderr);
 	if (rc == 0)
 		rc = gather(w, n, rs, f, st);
 	names(w, n, name, name_len);
