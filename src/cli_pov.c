@@ -33,7 +33,7 @@ enum kind {
 	K_AA, K_AA_THRESHOLD, K_QUALITY, K_LIBRARY, K_DECLARE, K_DISPLAY, K_PAUSE, K_THREADS, K_SEED,
 	K_LEFT, K_TOP, K_RIGHT, K_BOTTOM,   /* ORDER CLI_REGION_ */
 	K_CONTINUE, K_CLOCK, K_INITIAL_FRAME, K_FINAL_FRAME, K_INITIAL_CLOCK, K_FINAL_CLOCK,
-	K_SUBSET_START, K_SUBSET_END, K_CYCLIC, K_SHELL, K_INCLUDE_INI,
+	K_SUBSET_START, K_SUBSET_END, K_FRAME_STEP, K_CYCLIC, K_SHELL, K_INCLUDE_INI,
 };
 
 enum { P_NONE, P_OPTIONAL, P_REQUIRED };   /* a switch's parameter */
@@ -103,7 +103,7 @@ static const struct pov_switch {
 	{ "SP", K_SILENT, P_REQUIRED, NULL },
 	{ "SR", K_TOP, P_REQUIRED, NULL },
 	{ "SS", K_SEED, P_REQUIRED, NULL },
-	{ "STP", K_WARN, P_REQUIRED, "a frame step" },
+	{ "STP", K_FRAME_STEP, P_REQUIRED, NULL },
 	{ "SU", K_SILENT, P_NONE, NULL },
 	{ "TH", K_WARN, P_OPTIONAL, "dithering" },
 	{ "UA", K_ALPHA, P_NONE, NULL },
@@ -151,7 +151,7 @@ static const struct pov_key {
 	{ "Fatal_Error_Return", K_SILENT, 0, NULL }, { "Fatal_File", K_SILENT, 0, NULL },
 	{ "Field_Render", K_WARN, 1, "field rendering" }, { "File_Gamma", K_WARN, 0, "a file gamma other than sRGB's" },
 	{ "Final_Clock", K_FINAL_CLOCK, 0, NULL }, { "Final_Frame", K_FINAL_FRAME, 0, NULL },
-	{ "Frame_Step", K_WARN, 0, "a frame step" }, { "Grayscale_Output", K_WARN, 1, "grey output" },
+	{ "Frame_Step", K_FRAME_STEP, 0, NULL }, { "Grayscale_Output", K_WARN, 1, "grey output" },
 	{ "Greyscale_Output", K_WARN, 1, "grey output" }, { "Height", K_HEIGHT, 0, NULL },
 	{ "High_Reproducibility", K_SILENT, 1, NULL }, { "Histogram_Name", K_WARN, 0, "a histogram" },
 	{ "Histogram_Grid_Size", K_WARN, 0, "a histogram" }, { "Histogram_Type", K_WARN, 0, "a histogram" },
@@ -330,6 +330,7 @@ static void animation(cli_pov *p, enum kind k, const struct setting *s)
 	case K_FINAL_CLOCK: p->final_clock = number(s); break;
 	case K_SUBSET_START: p->subset_start = subset(s); p->subset_start_given = 1; break;
 	case K_SUBSET_END: p->subset_end = subset(s); p->subset_end_given = 1; break;
+	case K_FRAME_STEP: p->frame_step = whole(s, -1000000000, 1000000000); break;   /* POV-Ray: below 1 is 1 */
 	default: p->cyclic = s->on; break;
 	}
 }
@@ -661,7 +662,7 @@ static long subset_frame(double v, long first, long last)
 
 void cli_pov_frame(const cli_pov *p, cli_frame *f)
 {
-	*f = (cli_frame){ .clock = p->clock, .clock_on = p->clock_given, .frames = 1 };
+	*f = (cli_frame){ .clock = p->clock, .clock_on = p->clock_given, .frames = 1, .step = 1 };
 	if (!p->anim)
 		return;
 	long first = p->initial_frame < 0 ? 0 : p->initial_frame;
@@ -676,7 +677,8 @@ void cli_pov_frame(const cli_pov *p, cli_frame *f)
 	from = from < first ? first : from;
 	to = to > last ? last : to < from ? from : to;
 	f->first = from;
-	f->frames = to - from + 1;
+	f->step = p->frame_step > 1 ? p->frame_step : 1;
+	f->frames = (to - from) / f->step + 1;   /* from, from + step... up to to, as POV-Ray steps */
 	f->initial_frame = first;
 	f->final_frame = last;
 	f->initial_clock = p->initial_clock;

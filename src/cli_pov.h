@@ -30,6 +30,7 @@ typedef struct {
 	int clock_given, cyclic, subset_start_given, subset_end_given;
 	double clock, initial_clock, final_clock;
 	long initial_frame, final_frame;
+	long frame_step;             /* +STP, Frame_Step: every Nth frame (0 as 1) */
 	double subset_start, subset_end;   /* a frame, or -1 - a fraction of the animation */
 	double region[4];            /* +SC +SR +EC +ER as given, ORDER CLI_REGION_ */
 	int region_given;            /* a bit for each */
@@ -43,7 +44,7 @@ typedef struct {
 	double clock, clock_delta, initial_clock, final_clock;
 	int clock_on, digits;
 	long frame, initial_frame, final_frame;
-	long first, frames;
+	long first, frames, step;   /* frame k of the frames rendered is first + k * step */
 } cli_frame;
 
 /* Rewrites argv (kept: argv[0]) into eclat's options in *out, NULL-terminated,

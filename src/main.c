@@ -947,7 +947,7 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 		rc = rc || depfile_add(deps, DEPFILE_TARGET, o->aov_file[i]);
 	window = o->preview && !o->check && rc == 0 ? preview_open(o->width, o->height, o->scene) : NULL;
 	for (long k = 0; k < frames && rc == 0 && !stop_signal && !preview_stopped(window); k++) {
-		cli_frame_goto(frame, frame->first + k);
+		cli_frame_goto(frame, frame->first + k * frame->step);
 		char *output = cli_pov_output(&o->pov, frame, o->scene, o->output);
 		rc = !output || (!o->check && check_output(o->scene, output, o->pov.alpha)) ||
 		     (deps && depfile_add(deps, DEPFILE_TARGET, output));
