@@ -601,13 +601,14 @@ static int write_film(const film *f, void *ctx)
 	return -1;
 }
 
-/* Writes the AOVs asked for; each is an image of its own, linear in EXR. */
-static int write_aovs(const struct options *o, const film *f)
+/* Writes the AOVs asked for into files (the frame's names); each is an image of
+ * its own, linear in EXR. */
+static int write_aovs(const struct options *o, char *const *files, const film *f)
 {
 	float *rgb = malloc((size_t)f->width * f->height * 3 * sizeof *rgb);
 	int rc = rgb ? 0 : -1;
 	for (int i = 0; rc == 0 && i < o->n_aovs; i++) {
-		struct output out = { o->aov_file[i], o->scene, 0, NULL, NULL, 0 };
+		struct output out = { files[i], o->scene, 0, NULL, NULL, 0 };
 		if (strcmp(o->aov_name[i], "heat") == 0) {
 			image_meta meta = { o->scene, f->samples, 0, NULL };
 			char err[512];
@@ -716,10 +717,12 @@ static int set_threads(const struct options *o)
 	return 0;
 }
 
-/* An animation's frame, for the progress line and the closing lines. */
+/* An animation's frame, for the progress line and the closing lines, and the
+ * names of its AOV files (numbered as its image is). */
 struct frame_info {
 	long frame, index, frames;
 	double clock, seconds;   /* seconds: spent on the frames before */
+	char *aov_file[MAX_AOVS];
 };
 
 /* The options that change pixels, as split_key records them: a part, or a
@@ -832,7 +835,7 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 			print_ray_stats(&st);
 		if (window)   /* a stop asked for now stops the frames after */
 			preview_show(window, f.rgb);
-		int wrote = write_film(&f, &out) == 0 && write_aovs(o, &f) == 0;
+		int wrote = write_film(&f, &out) == 0 && write_aovs(o, fi->aov_file, &f) == 0;
 		if (wrote)
 			rc = ran ? 1 : stop_signal ? 128 + stop_signal : 0;
 		if (ran && wrote)
@@ -943,8 +946,6 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 	struct reads reads = { { 0 }, deps };
 	eopt->on_read = note_read;
 	eopt->on_read_ctx = &reads;
-	for (int i = 0; deps && i < o->n_aovs; i++)
-		rc = rc || depfile_add(deps, DEPFILE_TARGET, o->aov_file[i]);
 	window = o->preview && !o->check && rc == 0 ? preview_open(o->width, o->height, o->scene) : NULL;
 	for (long k = 0; k < frames && rc == 0 && !stop_signal && !preview_stopped(window); k++) {
 		cli_frame_goto(frame, frame->first + k * frame->step);
@@ -952,7 +953,10 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 		rc = !output || (!o->check && check_output(o->scene, output, o->pov.alpha)) ||
 		     (deps && depfile_add(deps, DEPFILE_TARGET, output));
 		set_clock(eopt, frame);
-		struct frame_info fi = { frame->frame, k, frames, frame->clock, seconds_since(&t0) };
+		struct frame_info fi = { frame->frame, k, frames, frame->clock, seconds_since(&t0), { 0 } };
+		for (int i = 0; i < o->n_aovs && rc == 0; i++)   /* an animation's AOVs numbered as its images */
+			rc = !(fi.aov_file[i] = cli_pov_output(&o->pov, frame, o->scene, o->aov_file[i])) ||
+			     (deps && depfile_add(deps, DEPFILE_TARGET, fi.aov_file[i]));
 		scene s;
 		scene_init(&s);
 		split_inputs_free(&reads.inputs);   /* each frame's record names the files it read */
@@ -966,6 +970,8 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 		}
 		scene_free(&s);
 		free(output);
+		for (int i = 0; i < o->n_aovs; i++)
+			free(fi.aov_file[i]);
 		mesh_io_cache_sweep(eopt->mesh_cache);
 	}
 	int files = mesh_io_cache_hits(eopt->mesh_cache), bvhs = lower_cache_hits(keep.bvhs);
