@@ -22,13 +22,11 @@ struct image_head {
 	char format[32];
 };
 
-#define ERR_LEN 512
-
 static int image_work(int fd, void *arg)
 {
 	struct image_job *j = arg;
 	image_data d;
-	char err[ERR_LEN] = "";
+	char err[LOADER_ERR_LEN] = "";
 	struct image_head h = { 0 };
 	h.rc = image_read_here(j->path, j->lim->max_texels, &d, err, sizeof err);
 	if (h.rc)
@@ -51,14 +49,8 @@ static int image_take(int fd, void *arg, char *err, size_t errlen)
 	struct image_head h;
 	if (loader_read(fd, &h, sizeof h))
 		return -2;
-	if (h.rc) {
-		char msg[ERR_LEN];
-		if (loader_read(fd, msg, sizeof msg))
-			return -2;
-		msg[sizeof msg - 1] = '\0';
-		snprintf(err, errlen, "%s", msg);
-		return -1;
-	}
+	if (h.rc)
+		return loader_take_error(fd, err, errlen);
 	/* the child checked the size; a child gone wrong must not make this one allocate */
 	if (h.width <= 0 || h.height <= 0 || (long)h.width * h.height > j->lim->max_texels)
 		return -2;
@@ -150,7 +142,7 @@ int image_png_indices(const char *path, const image_limits *lim, unsigned char *
 	if (lim->max_bytes > 0 && lim->max_bytes < max)
 		max = (long)lim->max_bytes;   /* a byte a pixel */
 	struct indices_job j = { path, max, NULL, 0, 0 };
-	char err[ERR_LEN];
+	char err[LOADER_ERR_LEN];
 	if (loader_run("libpng", lim->time_limit, indices_work, indices_take, &j, err, sizeof err) || !j.px)
 		return 0;   /* image_read, which ran first, reads the same file and says what is wrong */
 	*out = j.px;

@@ -38,6 +38,16 @@ int loader_read(int fd, void *p, size_t n)
 	return 0;
 }
 
+int loader_take_error(int fd, char *err, size_t errlen)
+{
+	char msg[LOADER_ERR_LEN];
+	if (loader_read(fd, msg, sizeof msg))
+		return -2;
+	msg[sizeof msg - 1] = '\0';   /* a child gone wrong may send no end */
+	snprintf(err, errlen, "%s", msg);
+	return -1;
+}
+
 const char *loader_not_a_file(const char *path)
 {
 	struct stat st;

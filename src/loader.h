@@ -21,6 +21,12 @@ typedef int (*loader_take)(int fd, void *arg, char *err, size_t errlen);
 int loader_run(const char *library, unsigned time_limit, loader_work work, loader_take take, void *arg,
                char *err, size_t errlen);
 
+/* A work that fails writes its message as LOADER_ERR_LEN bytes after its own
+ * header, which says it failed; the take reads it with loader_take_error, which
+ * returns -1 with the message in err, or -2 when the answer stopped short. */
+#define LOADER_ERR_LEN 512
+int loader_take_error(int fd, char *err, size_t errlen);
+
 /* All of n bytes, through EINTR and short transfers: 0, or -1. */
 int loader_write(int fd, const void *p, size_t n);
 int loader_read(int fd, void *p, size_t n);

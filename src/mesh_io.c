@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "host_memory.h"
+#include "loader.h"
 #include "mesh_io.h"
 
 /* Triangulate polygons, flatten the node hierarchy into world positions, join
@@ -165,35 +166,11 @@ int mesh_io_write_mesh2(const scene_mesh *m, const char *name, const char *sourc
  * bounds), and a crash in a library would take eclat down with it. So assimp runs
  * in a child process that sends the triangles back through a pipe; a child that
  * dies is an error that names the file, and eclat goes on. A truncated binary PLY
- * header makes assimp loop for ever, so the child also has an alarm clock. */
-
-static int write_all(int fd, const void *p, size_t n)
-{
-	for (const char *c = p; n > 0;) {
-		ssize_t k = write(fd, c, n);
-		if (k < 0 && errno == EINTR)
-			continue;
-		if (k <= 0)
-			return -1;
-		c += k;
-		n -= (size_t)k;
-	}
-	return 0;
-}
-
-static int read_all(int fd, void *p, size_t n)
-{
-	for (char *c = p; n > 0;) {
-		ssize_t k = read(fd, c, n);
-		if (k < 0 && errno == EINTR)
-			continue;
-		if (k <= 0)
-			return -1;
-		c += k;
-		n -= (size_t)k;
-	}
-	return 0;
-}
+ * header makes assimp loop for ever, so the child also has an alarm clock.
+ * It is not src/loader.c's loader_run, whose child closes its stderr and is the
+ * OOM killer's first pick: assimp's assertion reports and a sanitizer's reach
+ * stderr here, where tests/bad.tap looks for them, and the messages name
+ * --mesh-time-limit. The pipe's helpers and the error answer are loader.c's. */
 
 static void child(int fd, const char *path, unsigned time_limit)
 {
@@ -205,14 +182,14 @@ static void child(int fd, const char *path, unsigned time_limit)
 	signal(SIGALRM, SIG_DFL);   /* a fuzzer's handler would report a timeout */
 	alarm(time_limit);          /* 0: none; a fork starts with no alarm of its own */
 	scene_mesh m;
-	char err[512] = "";
+	char err[LOADER_ERR_LEN] = "";
 	int rc = mesh_io_load_here(path, &m, err, sizeof err);
 	int head[4] = { rc, rc ? 0 : m.n_v, rc ? 0 : m.n_faces, !rc && m.nrm != NULL };
-	int bad = write_all(fd, head, sizeof head) ||
-	          (rc && write_all(fd, err, sizeof err)) ||
-	          (!rc && write_all(fd, m.v, (size_t)m.n_v * sizeof *m.v)) ||
-	          (!rc && m.nrm && write_all(fd, m.nrm, (size_t)m.n_v * sizeof *m.nrm)) ||
-	          (!rc && write_all(fd, m.face, (size_t)m.n_faces * sizeof *m.face));
+	int bad = loader_write(fd, head, sizeof head) ||
+	          (rc && loader_write(fd, err, sizeof err)) ||
+	          (!rc && loader_write(fd, m.v, (size_t)m.n_v * sizeof *m.v)) ||
+	          (!rc && m.nrm && loader_write(fd, m.nrm, (size_t)m.n_v * sizeof *m.nrm)) ||
+	          (!rc && loader_write(fd, m.face, (size_t)m.n_faces * sizeof *m.face));
 	_exit(bad ? 1 : 0);   /* no atexit handlers: they belong to the parent */
 }
 
@@ -240,16 +217,10 @@ int mesh_io_fits(double n_v, double n_faces, int normals, double max_bytes, char
 static int receive(int fd, scene_mesh *m, double max_bytes, char *err, size_t errlen)
 {
 	int head[4];
-	if (read_all(fd, head, sizeof head))
+	if (loader_read(fd, head, sizeof head))
 		return -2;
-	if (head[0]) {
-		char msg[512];
-		if (read_all(fd, msg, sizeof msg))
-			return -2;
-		msg[sizeof msg - 1] = '\0';
-		snprintf(err, errlen, "%s", msg);
-		return -1;
-	}
+	if (head[0])
+		return loader_take_error(fd, err, errlen);
 	if (head[1] < 0 || head[2] < 0)
 		return -2;
 	if (mesh_io_fits(head[1], head[2], head[3], max_bytes, err, errlen))
@@ -261,9 +232,9 @@ static int receive(int fd, scene_mesh *m, double max_bytes, char *err, size_t er
 	m->nrm = head[3] ? malloc((size_t)m->n_v * sizeof *m->nrm + 1) : NULL;
 	m->face_nrm = head[3] ? malloc((size_t)m->n_faces * sizeof *m->face_nrm + 1) : NULL;
 	if (!m->v || !m->face || (head[3] && (!m->nrm || !m->face_nrm)) ||
-	    read_all(fd, m->v, (size_t)m->n_v * sizeof *m->v) ||
-	    (m->nrm && read_all(fd, m->nrm, (size_t)m->n_v * sizeof *m->nrm)) ||
-	    read_all(fd, m->face, (size_t)m->n_faces * sizeof *m->face))
+	    loader_read(fd, m->v, (size_t)m->n_v * sizeof *m->v) ||
+	    (m->nrm && loader_read(fd, m->nrm, (size_t)m->n_v * sizeof *m->nrm)) ||
+	    loader_read(fd, m->face, (size_t)m->n_faces * sizeof *m->face))
 		return -2;
 	if (m->nrm) {   /* normals share the vertices' indices */
 		m->n_nrm = m->n_v;

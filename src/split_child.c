@@ -14,7 +14,6 @@
 /* as long as the slowest disk needs for the largest part: a hang is a hostile file */
 #define SPLIT_READ_SECONDS 300
 #define MAX_SIDE 65536
-#define ERR_LEN 512
 
 struct split_job {
 	const char *path;
@@ -55,7 +54,7 @@ static int split_work(int fd, void *arg)
 	struct split_job *j = arg;
 	split_info info;
 	int64_t *sums = NULL;
-	char err[ERR_LEN] = "";
+	char err[LOADER_ERR_LEN] = "";
 	struct split_head h = { 0 };
 	h.rc = split_read_here(j->path, &info, &sums, err, sizeof err);
 	if (h.rc)
@@ -96,14 +95,8 @@ static int split_take(int fd, void *arg, char *err, size_t errlen)
 	struct split_head h;
 	if (loader_read(fd, &h, sizeof h))
 		return -2;
-	if (h.rc) {
-		char msg[ERR_LEN];
-		if (loader_read(fd, msg, sizeof msg))
-			return -2;
-		msg[sizeof msg - 1] = '\0';
-		snprintf(err, errlen, "%s", msg);
-		return -1;
-	}
+	if (h.rc)
+		return loader_take_error(fd, err, errlen);
 	if (split_size_check(h.width, h.height, err, errlen))
 		return -1;
 	split_info *info = j->info;
