@@ -25,14 +25,14 @@ static int float_of(struct eval *e, const ast_node *n, float *out)
  * "thickness 0.5" the word and the number. 1 when item is no thickness. */
 static int thickness(struct eval *e, struct cursor *c, const ast_node *item, float *out)
 {
-	if (item->kind == AST_BINARY && (item->op == '-' || item->op == '+') && is_word(e, item->kids[0], "thickness")) {
+	if (item->kind == AST_BINARY && (item->op == '-' || item->op == '+') && is_word(e, item->kids[0], AST_WORD_THICKNESS)) {
 		if (float_of(e, item->kids[1], out))
 			return -1;
 		if (item->op == '-')
 			*out = -*out;
 		return 0;
 	}
-	if (!is_word(e, item, "thickness"))
+	if (!is_word(e, item, AST_WORD_THICKNESS))
 		return 1;
 	int err = 0;
 	const ast_node *v = eval_next_expr(c, &err);
@@ -46,7 +46,7 @@ static int thickness(struct eval *e, struct cursor *c, const ast_node *item, flo
 
 static bool thickness_word(struct eval *e, const ast_node *n)
 {
-	return is_word(e, n, "thickness") || (n->kind == AST_BINARY && is_word(e, n->kids[0], "thickness"));
+	return is_word(e, n, AST_WORD_THICKNESS) || (n->kind == AST_BINARY && is_word(e, n->kids[0], AST_WORD_THICKNESS));
 }
 
 /* irid { Amount [thickness T] [turbulence T] }: POV-Ray reads the first
@@ -90,7 +90,7 @@ int eval_irid(struct eval *e, const ast_node *b, scene_material *m)
  * POV-Ray's units (a micrometre). */
 int eval_irid_wavelength(struct eval *e, struct cursor *c, const ast_node *item)
 {
-	if (!is_word(e, item, "irid_wavelength"))
+	if (!is_word(e, item, AST_WORD_IRID_WAVELENGTH))
 		return 1;
 	int err = 0;
 	double col[5];

@@ -958,7 +958,7 @@ static int finish_item(struct eval *e, struct cursor *c, const ast_node *item, s
 		copy_finish(m, &v.mat);
 		return 0;
 	}
-	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, "irid") == 0)
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_IRID) == 0)
 		return eval_irid(e, item, m);
 	int rc = eval_skip_pov_word(e, c, item);
 	if (rc <= 0)
