@@ -21,6 +21,8 @@
 /* The sky's (light_sky), eight a bounce in a range of their own, past any the
  * lights' counts reach. */
 #define DIM_SKY 0x40000000u
+/* crand's, one a bounce. */
+#define DIM_CRAND 0x50000000u
 
 /* The objects a ray of this bounce may not see: POV-Ray's no_image for the
  * camera's, no_reflection after a reflection. */
@@ -102,6 +104,10 @@ static inline float3 path_radiance(const scene_data *sc, int px, int py, uint ke
 		beta *= tint;
 		bsdf m = material_bsdf(sp.m, pc.rgb, pc.filter, pc.transmit);
 		float3 ng = sp.ng, n = sp.ns, wo = -d, x = sp.x;
+		if (m.irid.x > 0.0f)
+			m.irid.y = finish_irid_thickness(sp.m, x);
+		if (sp.m->irid.w > 0.0f && sp.m->emission.w > 0.0f)   /* crand: POV-Ray's u * crand off diffuse */
+			m.diffuse *= fmax(0.0f, 1.0f - rng_uniform(key, DIM_CRAND + (uint)depth) * sp.m->irid.w / sp.m->emission.w);
 		texture_first_hit(first, &sp, clamp(m.diffuse + m.reflect.xyz + m.absorb.w * m.transmit.xyz, 0.0f, 1.0f));
 
 		if (sp.emitter >= 0) {

@@ -61,6 +61,7 @@ typedef struct {
 	int object;
 	int solids;        /* the solid objects around the point, for fog_shadow */
 	media_stack media; /* the interiors with media around it, for its shadow rays */
+	float irid_t;      /* irid's film thickness there (finish_irid_thickness) */
 } whitted_point;
 
 static inline float whitted_max3(float3 c)
@@ -183,13 +184,17 @@ static inline float3 whitted_area_shadow(const scene_data *sc, global const dev_
 	return sum;
 }
 
-/* POV-Ray's diffuse term: pigment * light * |N.L|^brilliance * diffuse * opacity. */
+/* POV-Ray's diffuse term: pigment * light * |N.L|^brilliance * diffuse * opacity,
+ * less crand's grain (crand * a uniform number, u). */
 static inline float3 whitted_diffuse(global const dev_material *f, float3 pigment, float3 n, float3 l, float3 light,
-                              float opacity)
+                              float opacity, float u)
 {
 	float c = fabs(dot(n, l));
 	float k = f->terms.x != 1.0f ? pow(c, f->terms.x) : c;
-	return k * f->emission.w * opacity * pigment * light;
+	k *= f->emission.w * opacity;
+	if (f->irid.w > 0.0f && f->emission.w > 0.0f)
+		k -= u * f->irid.w;
+	return k * pigment * light;
 }
 
 /* phong: the light direction against the mirror direction of the eye ray,
@@ -265,13 +270,17 @@ static inline float3 whitted_lights(const scene_data *sc, global const dev_mater
 		}
 		if (fabs(light.x) <= POV_EPSILON && fabs(light.y) <= POV_EPSILON && fabs(light.z) <= POV_EPSILON)
 			continue;
-		sum += whitted_diffuse(f, pigment, pt->n, dir, light, opacity);
+		float u = f->irid.w > 0.0f ? finish_crand_at(pt->x, i, (uint)sc->p->seed) : 0.0f;
+		float3 lit = whitted_diffuse(f, pigment, pt->n, dir, light, opacity, u);
 		if (!l->shadowless) {   /* POV-Ray's shadowless lights are fill lights: no highlights */
 			if (f->highlight.x > 0.0f)
-				sum += whitted_phong(f, pigment, pt->n, pt->d, dir, light);
+				lit += whitted_phong(f, pigment, pt->n, pt->d, dir, light);
 			if (f->highlight.z > 0.0f)
-				sum += whitted_specular(f, pigment, pt->n, pt->d, dir, light);
+				lit += whitted_specular(f, pigment, pt->n, pt->d, dir, light);
 		}
+		if (f->irid.x > 0.0f)   /* irid tints each light's diffuse and highlights */
+			lit *= finish_irid_tint(f->irid.x, pt->irid_t, f->irid_wavelength.xyz, pt->n, dir, pt->d);
+		sum += lit;
 	}
 	return sum;
 }
@@ -367,6 +376,7 @@ static inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shad
 			texture_first_hit(first, &sp, pc.rgb);
 		}
 		pt.n = sp.ns;
+		pt.irid_t = f->irid.x > 0.0f ? finish_irid_thickness(f, pt.x) : 0.0f;
 		float3 pig = pc.rgb;
 		float cos_i = -dot(ray.d, pt.n);
 		float rweight = ray.weight * trans;
@@ -376,6 +386,11 @@ static inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shad
 		              (pig * (f->ambient.xyz + f->emission.xyz) * opacity + whitted_lights(sc, f, pig, &pt, opacity));
 		if ((reflec.x != 0.0f || reflec.y != 0.0f || reflec.z != 0.0f) && n_refl < WHITTED_REFLECTIONS) {
 			refl_n[n_refl] = pt.n;
+			if (f->irid.x > 0.0f) {   /* irid tints the reflected colour before its exponent */
+				float3 r = ray.d - 2.0f * dot(ray.d, pt.n) * pt.n;
+				reflec *= whitted_pow3(finish_irid_tint(f->irid.x, pt.irid_t, f->irid_wavelength.xyz, pt.n, r, ray.d),
+				                       f->reflection_max.w);
+			}
 			refl_c[n_refl] = reflec;
 			refl_w[n_refl] = rweight;
 			refl_e[n_refl++] = f->reflection_max.w;

@@ -18,6 +18,9 @@ typedef struct {
 	float4 transmit;    /* rgb: tint of transmitted light; w: ior (1: no refraction) */
 	float4 absorb;      /* rgb: absorption per unit length inside; w: transmitted fraction */
 	float4 coat;        /* x: coat strength, y: coat GGX alpha, z: coat reflectance at normal incidence */
+	float4 irid;        /* x: irid's amount (0: none), y: its film thickness at the point (the
+	                     * caller's, finish_irid_thickness); rgb of irid_wl: the wavelengths */
+	float3 irid_wl;
 } bsdf;
 
 /* POV-Ray's roughness is a Blinn exponent's reciprocal, phong_size a Phong
@@ -56,7 +59,19 @@ static inline bsdf material_bsdf(global const dev_material *m, float3 rgb, float
 	float alpha = phong >= specular ? material_alpha_from_blinn(4.0f * m->highlight.y)
 	                                : material_alpha_from_blinn(blinn);
 	d.coat = (float4)(clamp(fmax(phong, specular), 0.0f, 1.0f), alpha, 0.04f, 0.0f);   /* 0.04: ior 1.5 */
+	d.irid = (float4)(m->irid.x, m->irid.y, 0.0f, 0.0f);
+	d.irid_wl = m->irid_wavelength.xyz;
 	return d;
+}
+
+/* irid's tint of what the surface reflects from wi toward wo, as the Whitted
+ * integrator tints each light and the reflected ray; never below 0, which a
+ * BSDF cannot be. */
+static inline float3 material_irid(const bsdf *m, float3 n, float3 wo, float3 wi)
+{
+	if (m->irid.x <= 0.0f)
+		return (float3)(1.0f);
+	return fmax(finish_irid_tint(m->irid.x, m->irid.y, m->irid_wl, n, wi, wo), 0.0f);
 }
 
 /* An orthonormal basis around n without branches on a special axis
@@ -186,7 +201,7 @@ static inline float3 material_eval(const bsdf *m, const material_lobes *l, float
 		p += l->p_refl * lobe_pdf;
 	}
 	*pdf = p;
-	return f;
+	return f * material_irid(m, n, wo, wi);
 }
 
 typedef struct {
@@ -215,7 +230,7 @@ static inline material_sample_t material_sample(const bsdf *m, const material_lo
 	float c0 = l->p_coat, c1 = c0 + l->p_refl, c2 = c1 + l->p_trans;
 	if (u.x >= c0 && u.x < c1 && m->reflect.w == 0.0f) {
 		s.wi = 2.0f * cos_o * n - wo;          /* the mirror */
-		s.weight = l->refl / l->p_refl;
+		s.weight = l->refl / l->p_refl * material_irid(m, n, wo, s.wi);
 		return s;
 	}
 	if (u.x >= c1 && u.x < c2) {

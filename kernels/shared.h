@@ -159,7 +159,7 @@ enum { CSG_LEAF = 1, CSG_NOT = 2, CSG_AND = 3, CSG_OR = 4, CSG_UNION = 5 };
 #define CSG_OPS_PER_RECORD 12   /* a, b and c of a PRIM_DATA record */
 #define CSG_STACK 32   /* the deepest a program may nest; lowering checks it */
 
-/* A surface's material, 160 bytes, one per texture: POV-Ray's finish and
+/* A surface's material, 208 bytes, one per texture: POV-Ray's finish and
  * interior as the scene gives them (lower.c changes nothing but ambient, which
  * is multiplied by global_settings' ambient_light), and its pigment: a solid
  * colour, or a pattern evaluated at each shading point (texture.cl). Both
@@ -190,7 +190,12 @@ typedef struct {
 	int below;             /* a layered texture's next layer down, or -1 */
 	int media, n_media;    /* the interior's dev_media records (media, media + 1, ...); the
 	                        * first also names the interior for the rays inside it */
-	int pad[2];
+	int noise_generator;   /* global_settings': irid's turbulence */
+	int pad;
+	float4 irid;           /* x: irid's amount (0: none), y: its film thickness, z: its turbulence;
+	                        * w: crand */
+	float4 irid_wavelength; /* rgb: global_settings' irid_wavelength; w: the interior's caustics
+	                        * power (POV-Ray's: 45 times the amount written; 0: none) */
 } dev_material;
 /* MATERIAL_LOCAL: a mesh's own texture, whose patterns see the mesh's space;
  * MATERIAL_ROUGH: roughness was given, so the path tracer's reflection is rough;

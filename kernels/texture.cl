@@ -376,6 +376,11 @@ static inline float3 texture_filter(const scene_data *sc, shading_point *sp, flo
 			pigment_colour c = texture_pigment(sc, sp);
 			f *= c.rgb * c.filter + c.transmit;
 			through *= fabs(c.filter) + fabs(c.transmit);
+			/* POV-Ray's fake caustics: the path tracer finds real ones */
+			if (sp->m->irid_wavelength.w != 0.0f && sc->p->integrator == INTEGRATOR_WHITTED) {
+				texture_use(sc, sp, mi);
+				f *= finish_caustics(sp->m, sp->ns, sp->d);
+			}
 		}
 		sum += b.w[k] * f;
 		*pass += b.w[k] * through;

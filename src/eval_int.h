@@ -387,6 +387,10 @@ int eval_fog_value(struct eval *e, const ast_node *b, value *out);
 /* media { } (eval_media.c): in an interior (appended to m's media), at the
  * scene's level (the atmosphere), and as a value */
 int eval_media_interior(struct eval *e, const ast_node *b, scene_material *m);
+/* irid { } in a finish, and global_settings' irid_wavelength (eval_irid.c); the
+ * latter returns 1 when item is something else. */
+int eval_irid(struct eval *e, const ast_node *b, scene_material *m);
+int eval_irid_wavelength(struct eval *e, struct cursor *c, const ast_node *item);
 int eval_media_statement(struct eval *e, const ast_node *b);
 int eval_media_value(struct eval *e, const ast_node *b, value *out);
 /* A media's density { } (eval_material.c: it is read as a pigment). */

@@ -41,6 +41,10 @@ static void copy_finish(scene_material *d, const scene_material *s)
 	d->reflection_fresnel = s->reflection_fresnel;
 	d->roughness_set = s->roughness_set;
 	d->conserve_energy = s->conserve_energy;
+	d->crand = s->crand;
+	d->irid = s->irid;
+	d->irid_thickness = s->irid_thickness;
+	d->irid_turbulence = s->irid_turbulence;
 }
 
 static void copy_interior(scene_material *d, const scene_material *s)
@@ -51,6 +55,7 @@ static void copy_interior(scene_material *d, const scene_material *s)
 	d->fade_power = s->fade_power;
 	memcpy(d->fade_color, s->fade_color, sizeof d->fade_color);
 	d->media = s->media;
+	d->caustics = s->caustics;
 }
 
 void eval_apply_value(const value *v, scene_material *m)
@@ -938,11 +943,7 @@ static int finish_arg(struct eval *e, struct cursor *c, const ast_node *item, sc
 			return -1;
 		memcpy(m->reflection_max, m->reflection, sizeof m->reflection_max);
 		return 0;
-	case KW_CRAND: {
-		double f;
-		eval_warn_once(e, item->loc, "crand", "'crand' is not supported yet; ignored");
-		return eval_expect_float(e, a, &f);
-	}
+	case KW_CRAND: return float_arg(e, a, &m->crand);
 	default:
 		return eval_not_valid(e, item, "a finish");
 	}
@@ -957,6 +958,8 @@ static int finish_item(struct eval *e, struct cursor *c, const ast_node *item, s
 		copy_finish(m, &v.mat);
 		return 0;
 	}
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_IRID) == 0)
+		return eval_irid(e, item, m);
 	int rc = eval_skip_pov_word(e, c, item);
 	if (rc <= 0)
 		return rc;
@@ -1016,16 +1019,13 @@ static int interior_item(struct eval *e, struct cursor *c, const ast_node *item,
 	}
 	if (item->kind == AST_BLOCK && item->kw == KW_MEDIA)
 		return eval_media_interior(e, item, m);
-	double f;
 	switch (item->kind == AST_ARG ? item->kw : -1) {
 	case KW_IOR: return float_arg(e, item->kids[0], &m->ior);
 	case KW_DISPERSION: return float_arg(e, item->kids[0], &m->dispersion);
 	case KW_FADE_DISTANCE: return float_arg(e, item->kids[0], &m->fade_distance);
 	case KW_FADE_POWER: return float_arg(e, item->kids[0], &m->fade_power);
 	case KW_FADE_COLOR: case KW_FADE_COLOUR: return color3(e, item->kids[0], m->fade_color);
-	case KW_CAUSTICS:
-		eval_warn_once(e, item->loc, "caustics", "'caustics' is not supported yet; ignored");
-		return eval_expect_float(e, item->kids[0], &f);
+	case KW_CAUSTICS: return float_arg(e, item->kids[0], &m->caustics);
 	default:
 		break;
 	}

@@ -830,7 +830,8 @@ static int global_settings(struct eval *e, const ast_node *b)
 	const ast_node *item;
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
-		if ((rc = charset(e, &c, item)) <= 0 || (rc = noise_generator(e, &c, item)) <= 0)
+		if ((rc = charset(e, &c, item)) <= 0 || (rc = noise_generator(e, &c, item)) <= 0 ||
+		    (rc = eval_irid_wavelength(e, &c, item)) <= 0)
 			continue;
 		if ((rc = eval_skip_pov_word(e, &c, item)) <= 0)
 			continue;

@@ -20,7 +20,8 @@ _Static_assert(sizeof(bvh_wnode) == 64, "bvh_wnode is 64 bytes");
 _Static_assert(offsetof(bvh_wnode, qlo_x) == 16 && offsetof(bvh_wnode, child) == 40, "bvh_wnode layout");
 _Static_assert(sizeof(dev_prim) == 64, "dev_prim is 64 bytes");
 _Static_assert(offsetof(dev_prim, type) == 48, "dev_prim ints at 48");
-_Static_assert(sizeof(dev_material) == 176 && offsetof(dev_material, pattern) == 144, "dev_material layout");
+_Static_assert(sizeof(dev_material) == 208 && offsetof(dev_material, pattern) == 144 &&
+               offsetof(dev_material, irid) == 176, "dev_material layout");
 _Static_assert(sizeof(dev_light) == 128, "dev_light is 128 bytes");
 _Static_assert(offsetof(dev_light, cos_falloff) == 80, "dev_light scalars at 80");
 _Static_assert(sizeof(dev_warp) == 64, "dev_warp is 64 bytes");

@@ -253,6 +253,10 @@ static dev_material lower_plain(lower_textures *lt, const scene *s, const struct
 		.normal = -1,
 		.below = -1,
 		.flags = (local ? MATERIAL_LOCAL : 0) | (m->roughness_set ? MATERIAL_ROUGH : 0),
+		.noise_generator = s->noise_generator,
+		.irid = { m->irid, m->irid_thickness, m->irid_turbulence, m->crand },
+		.irid_wavelength = { s->irid_wavelength[0], s->irid_wavelength[1], s->irid_wavelength[2],
+		                     in->caustics * 45 },
 	};
 	if (p[3] != 0 || p[4] != 0)
 		lt->see_through = 1;

@@ -89,6 +89,9 @@ void scene_init(scene *s)
 	s->adc_bailout = 1.0f / 255.0f;
 	s->film_gamma = 1;
 	s->noise_generator = 2;
+	s->irid_wavelength[0] = 0.70f;
+	s->irid_wavelength[1] = 0.52f;
+	s->irid_wavelength[2] = 0.48f;
 	s->background_ft[1] = 1;
 
 	for (int i = 0; i < 3; i++)

@@ -138,12 +138,16 @@ typedef struct {
 	bool reflection_fresnel; /* false */
 	bool roughness_set;      /* roughness was given: metal reflections are rough */
 	bool conserve_energy;    /* false */
+	float crand;             /* 0: crand, the diffuse term's graininess */
+	float irid;              /* 0: irid { Amount thickness T turbulence T }, thin-film tint */
+	float irid_thickness, irid_turbulence; /* 0, 0 */
 	/* interior */
 	float ior;               /* 1 */
 	float dispersion;        /* 1 */
 	float fade_distance, fade_power; /* 0, 0: no absorption */
 	float fade_color[3];     /* 0 */
 	int media;               /* the interior's last media (scene.media) plus one; 0: none */
+	float caustics;          /* 0: caustics as written (POV-Ray's power is 45 times it) */
 } scene_material;
 
 /* The shapes of the scene language, one row each: X(NAME, name) makes
@@ -506,6 +510,7 @@ typedef struct {
 	float adc_bailout;    /* 1/255 */
 	int noise_generator;  /* a pattern's without one of its own: 1, 2 or 3, POV-Ray's 2 */
 	float ambient_light[3]; /* 1 */
+	float irid_wavelength[3]; /* 0.70, 0.52, 0.48: POV-Ray 3.7's (its manual says otherwise) */
 } scene;
 
 void scene_init(scene *s);
