@@ -14,7 +14,11 @@
  * The reference is a recursion over the tree; the kernels run a flat program
  * (kernels/csg.cl), so the two are independent. Each case is a CSG tree of
  * spheres and boxes, each operation alone and then random trees three levels
- * deep with inverses, and one ok/FAIL line a case: every closest hit of its
+ * deep with inverses, then the same with meshes among the leaves (a box as a
+ * closed mesh2 with inside_vector, inside by the parity of its crossings: the
+ * box's inside; the box's mesh without one and a parametric square, with no
+ * inside and only their nearest hit along a ray, as POV-Ray's mesh and
+ * parametric give a CSG), and one ok/FAIL line a case: every closest hit of its
  * rays agrees, except rays whose reference hit lies within a hair of another
  * leaf's surface or grazes one, where single precision may go either way.
  *
@@ -39,8 +43,10 @@ static double range(double lo, double hi)
 
 /* ---- the tree and its reference ---- */
 
-enum { SPHERE, BOX, UNION, MERGE, INTERSECTION, DIFFERENCE };
-static const char *const names[] = { "sphere", "box", "union", "merge", "intersection", "difference" };
+enum { SPHERE, BOX, MESH_BOX, OPEN_MESH, SHEET, UNION, MERGE, INTERSECTION, DIFFERENCE };
+static const char *const names[] = { "sphere", "box", "mesh box", "open mesh", "parametric square", "union", "merge",
+                                     "intersection", "difference" };
+static int leaf_kinds = 2;   /* leaf() draws the first of these kinds */
 
 #define MAX_KIDS 3
 #define MAX_HITS 256
@@ -49,7 +55,7 @@ struct node {
 	int kind;
 	bool inverse;
 	double c[3], r;           /* sphere */
-	double lo[3], hi[3];      /* box */
+	double lo[3], hi[3];      /* box, the meshes; a parametric square at z = c[2] */
 	struct node *kid[MAX_KIDS];
 	int n_kids;
 };
@@ -67,11 +73,16 @@ static double dot3(const double a[3], const double b[3])
 /* How far x is from the leaf's surface, roughly: for the margins. */
 static double surface_distance(const struct node *n, const double x[3])
 {
+	if (n->kind == SHEET) {
+		double dx = fmax(0, fmax(n->lo[0] - x[0], x[0] - n->hi[0]));
+		double dy = fmax(0, fmax(n->lo[1] - x[1], x[1] - n->hi[1])), dz = x[2] - n->c[2];
+		return sqrt(dx * dx + dy * dy + dz * dz);
+	}
 	if (n->kind == SPHERE) {
 		double v[3] = { x[0] - n->c[0], x[1] - n->c[1], x[2] - n->c[2] };
 		return fabs(sqrt(dot3(v, v)) - n->r);
 	}
-	if (n->kind == BOX) {
+	if (n->kind == BOX || n->kind == MESH_BOX || n->kind == OPEN_MESH) {
 		double inside = INFINITY, out = 0;
 		for (int k = 0; k < 3; k++) {
 			double a = x[k] - n->lo[k], b = n->hi[k] - x[k];
@@ -92,7 +103,9 @@ static bool inside(const struct node *n, const double x[3])
 	if (n->kind == SPHERE) {
 		double v[3] = { x[0] - n->c[0], x[1] - n->c[1], x[2] - n->c[2] };
 		in = dot3(v, v) < n->r * n->r;
-	} else if (n->kind == BOX) {
+	} else if (n->kind == OPEN_MESH || n->kind == SHEET) {
+		in = false;
+	} else if (n->kind == BOX || n->kind == MESH_BOX) {
 		in = true;
 		for (int k = 0; k < 3; k++)
 			in = in && x[k] > n->lo[k] && x[k] < n->hi[k];
@@ -126,16 +139,23 @@ static void all_hits(const struct node *n, const double o[3], const double d[3],
 		}
 		return;
 	}
-	if (n->kind == BOX) {
+	if (n->kind == SHEET) {
+		double t = (n->c[2] - o[2]) / d[2], x = o[0] + t * d[0], y = o[1] + t * d[1];
+		if (t > 0 && x >= n->lo[0] && x <= n->hi[0] && y >= n->lo[1] && y <= n->hi[1])
+			add(out, t);
+		return;
+	}
+	if (n->kind == BOX || n->kind == MESH_BOX || n->kind == OPEN_MESH) {
 		double t0 = -INFINITY, t1 = INFINITY;
 		for (int k = 0; k < 3; k++) {
 			double a = (n->lo[k] - o[k]) / d[k], b = (n->hi[k] - o[k]) / d[k];
 			t0 = fmax(t0, fmin(a, b));
 			t1 = fmin(t1, fmax(a, b));
 		}
-		if (t0 <= t1) {
+		if (t0 <= t1) {   /* rays start outside every leaf */
 			add(out, t0);
-			add(out, t1);
+			if (n->kind != OPEN_MESH)
+				add(out, t1);
 		}
 		return;
 	}
@@ -167,7 +187,7 @@ static void all_hits(const struct node *n, const double o[3], const double d[3],
 static struct node *leaf(void)
 {
 	struct node *n = calloc(1, sizeof *n);
-	n->kind = cast_uniform() < 0.5 ? SPHERE : BOX;
+	n->kind = (int)(cast_uniform() * leaf_kinds);
 	for (int k = 0; k < 3; k++)
 		n->c[k] = range(-0.6, 0.6);
 	n->r = range(0.4, 0.9);
@@ -176,6 +196,7 @@ static struct node *leaf(void)
 		n->lo[k] = n->c[k] - h;
 		n->hi[k] = n->c[k] + h;
 	}
+	n->c[2] = n->kind == SHEET ? range(-0.5, 0.5) : n->c[2];
 	n->inverse = cast_uniform() < 0.1;
 	return n;
 }
@@ -198,9 +219,28 @@ static void free_tree(struct node *n)
 	free(n);
 }
 
+/* A box of 12 triangles, with the inside_vector or without. */
+static void write_mesh_box(FILE *f, const struct node *n)
+{
+	fputs("mesh2 { vertex_vectors { 8", f);
+	for (int v = 0; v < 8; v++)
+		fprintf(f, ", <%.17g, %.17g, %.17g>", v & 1 ? n->hi[0] : n->lo[0], v & 2 ? n->hi[1] : n->lo[1],
+		        v & 4 ? n->hi[2] : n->lo[2]);
+	fputs(" }\n face_indices { 12, <0, 1, 3>, <0, 3, 2>, <4, 7, 5>, <4, 6, 7>, <0, 4, 5>, <0, 5, 1>, <2, 3, 7>, "
+	      "<2, 7, 6>, <0, 2, 6>, <0, 6, 4>, <1, 5, 7>, <1, 7, 3> }\n", f);
+	if (n->kind == MESH_BOX)
+		fputs(" inside_vector <0.31, 0.52, 0.79>\n", f);
+}
+
 static void write_node(FILE *f, const struct node *n)
 {
-	if (n->kind == SPHERE)
+	if (n->kind == MESH_BOX || n->kind == OPEN_MESH)
+		write_mesh_box(f, n);
+	else if (n->kind == SHEET)
+		fprintf(f, "parametric { function { %.17g + u * %.17g } function { %.17g + v * %.17g } function { %.17g }\n"
+		        " <0, 0>, <1, 1> contained_by { box { <-3, -3, -3>, <3, 3, 3> } }\n",
+		        n->lo[0], n->hi[0] - n->lo[0], n->lo[1], n->hi[1] - n->lo[1], n->c[2]);
+	else if (n->kind == SPHERE)
 		fprintf(f, "sphere { <%.17g, %.17g, %.17g>, %.17g", n->c[0], n->c[1], n->c[2], n->r);
 	else if (n->kind == BOX)
 		fprintf(f, "box { <%.17g, %.17g, %.17g>, <%.17g, %.17g, %.17g>", n->lo[0], n->lo[1], n->lo[2], n->hi[0],
@@ -330,6 +370,28 @@ int main(int argc, char **argv)
 		char what[64];
 		struct node *t = tree(UNION + i % 4, 3);
 		snprintf(what, sizeof what, "tree %d (%s, three deep)", i, names[UNION + i % 4]);
+		run_case(&dev, prog, what, t, n_rays / 4);
+		free_tree(t);
+	}
+	for (int mesh = MESH_BOX; mesh <= SHEET; mesh++)   /* each operation with a mesh first and second */
+		for (int kind = UNION; kind <= DIFFERENCE; kind++)
+			for (int second = 0; second < 2; second++) {
+				char what[96];
+				struct node *t = tree(kind, 1);
+				t->inverse = false;
+				t->kid[second]->kind = mesh;
+				t->kid[second]->inverse = false;
+				if (mesh == SHEET)
+					t->kid[second]->c[2] = range(-0.5, 0.5);
+				snprintf(what, sizeof what, "%s with a %s %s", names[kind], names[mesh], second ? "second" : "first");
+				run_case(&dev, prog, what, t, n_rays / 4);
+				free_tree(t);
+			}
+	leaf_kinds = SHEET + 1;
+	for (int i = 0; i < 16; i++) {   /* meshes anywhere, three levels deep */
+		char what[64];
+		struct node *t = tree(UNION + i % 4, 3);
+		snprintf(what, sizeof what, "tree %d with meshes (%s, three deep)", i, names[UNION + i % 4]);
 		run_case(&dev, prog, what, t, n_rays / 4);
 		free_tree(t);
 	}
