@@ -20,7 +20,9 @@
  * inside and only their nearest hit along a ray, as POV-Ray's mesh and
  * parametric give a CSG), and one ok/FAIL line a case: every closest hit of its
  * rays agrees, except rays whose reference hit lies within a hair of another
- * leaf's surface or grazes one, where single precision may go either way.
+ * leaf's surface or grazes one, where single precision may go either way,
+ * and the host's inside (each leaf's class in double, as trace() and inside()
+ * use it) agrees with the reference's at random points.
  *
  *   test_csg [RAYS] */
 #include <math.h>
@@ -30,6 +32,7 @@
 #include <string.h>
 
 #include "cast.h"
+#include "csg.h"
 #include "device.h"
 #include "diag.h"
 #include "eval.h"
@@ -254,9 +257,53 @@ static void write_node(FILE *f, const struct node *n)
 	fprintf(f, "%s }", n->inverse ? " inverse" : "");
 }
 
-/* ---- the device ---- */
+/* ---- the host ---- */
 
 static int failures;
+
+struct host_leaves {
+	const scene *s;
+	const scene_object *leaf;
+	const double *x;
+};
+
+/* A leaf's own inside test on the host, as trace() and inside() make it. */
+static bool host_leaf_inside(void *ctx, int k)
+{
+	const struct host_leaves *c = ctx;
+	const scene_object *o = &c->leaf[k];
+	xform inv;
+	double p[3];
+	if (!shape_of(o)->inside || lower_invert(&o->xf, &inv))
+		return false;
+	scene_xform_point(&inv, c->x, p);
+	return shape_of(o)->inside(c->s, o, p);
+}
+
+/* The host's inside of the CSG object (its program over its leaves' classes'
+ * inside tests, in double) against the reference's at random points, when
+ * the tree is one CSG object (a union at the top is only a group); *checked
+ * gets how many points were compared. */
+static int host_inside_disagrees(const scene *s, const struct node *root, int n_points, int *checked)
+{
+	*checked = 0;
+	if (s->n_csgs != 1 || s->csgs[0].first != 0 || s->csgs[0].n_leaves != s->n_objects)
+		return 0;
+	int bad = 0;
+	for (int i = 0; i < n_points; i++) {
+		double x[3] = { range(-1.6, 1.6), range(-1.6, 1.6), range(-1.6, 1.6) };
+		if (surface_distance(root, x) < 1e-6)
+			continue;
+		struct host_leaves c = { s, s->objects, x };
+		bool host = csg_inside(s->csgs[0].ops, s->csgs[0].n_ops, host_leaf_inside, &c);
+		(*checked)++;
+		if (host != inside(root, x) && bad++ < 3)
+			printf("  point <%g, %g, %g>: host inside %d, reference %d\n", x[0], x[1], x[2], host, !host);
+	}
+	return bad;
+}
+
+/* ---- the device ---- */
 
 /* One case: the tree as a scene, its rays on the device and in the reference. */
 static void run_case(device_ctx *dev, cl_program prog, const char *what, struct node *root, int n_rays)
@@ -333,8 +380,10 @@ static void run_case(device_ctx *dev, cl_program prog, const char *what, struct 
 		if (!agree && bad++ < 3)
 			printf("  ray %d: device t %.6g, reference %.6g\n", i, t, best);
 	}
-	printf("%s: %s: %d rays, %d hit, %d near another surface left out, %d disagree\n", bad ? "FAIL" : "ok", what,
-	       n_rays, hit, skipped, bad);
+	int checked, host_bad = host_inside_disagrees(&s, root, n_rays / 4, &checked);
+	printf("%s: %s: %d rays, %d hit, %d near another surface left out, %d disagree; host inside: %d points, %d "
+	       "disagree\n", bad || host_bad ? "FAIL" : "ok", what, n_rays, hit, skipped, bad, checked, host_bad);
+	bad += host_bad;
 	if (bad)
 		printf("%s\n", text);
 	failures += bad > 0;
