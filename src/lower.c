@@ -928,9 +928,6 @@ static int cmp_int(const void *a, const void *b)
 	return (x > y) - (x < y);
 }
 
-/* The wide layout: every tree converted once (a mesh placed many times
- * included), the instances pointed at their meshes' wide roots. The binary
- * nodes stay for --stats and the tests. */
 /* Where a placed mesh keeps its root: an instance in its link, a CSG's mesh
  * leaf in its record's a.w; NULL for any other primitive. */
 static int *mesh_root(lower_result *out, int i)
@@ -941,6 +938,9 @@ static int *mesh_root(lower_result *out, int i)
 	return p->type == PRIM_CSG_MESH ? (int *)&out->prims[p->link].a.w : NULL;
 }
 
+/* The wide layout: every tree converted once (a mesh placed many times
+ * included), the instances and CSG mesh leaves pointed at their meshes' wide
+ * roots. The binary nodes stay for --stats and the tests. */
 static int widen_trees(lower_result *out)
 {
 	int *roots = xmalloc((out->n_all_prims + 1) * sizeof *roots), n_roots = 0;

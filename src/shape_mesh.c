@@ -56,7 +56,7 @@ int shape_mesh_crossings(const scene *s, const scene_object *o, const double p[3
 {
 	int n = 0;
 	double t = 0;
-	for (;;) {   /* the nearest hit past the last, as kernels/csg_mesh.cl counts them */
+	for (int c = 0; c < 256; c++) {   /* the nearest hit past the last, as kernels/csg_mesh.cl counts them */
 		shape_hit h = { .t = INFINITY };
 		shape_mesh.trace(s, o, p, d, t, &h);
 		if (h.t == INFINITY)
@@ -64,6 +64,7 @@ int shape_mesh_crossings(const scene *s, const scene_object *o, const double p[3
 		n++;
 		t = h.t;
 	}
+	return n;   /* CSG_CROSSINGS, where the kernels stop too */
 }
 
 /* POV-Ray's Mesh::Inside: an odd number of crossings along its inside_vector. */
