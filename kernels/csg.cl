@@ -42,8 +42,9 @@ static inline bool csg_classify(global const bvh_node *nodes, global const dev_p
 		int code = ((global const int *)&prog[i / CSG_OPS_PER_RECORD])[i % CSG_OPS_PER_RECORD];
 		int op = code >> CSG_OP_SHIFT, arg = code & ((1 << CSG_OP_SHIFT) - 1);
 		if (op == CSG_LEAF) {
-			uint in = arg == k ? 1u : arg >= n ? 0u : (uint)csg_leaf_inside(nodes, prims, &prims[first + arg], x,
-			                                                                   counts, kind);
+			uint in = arg == k ? 1u : 0u;
+			if (arg != k && arg < n)
+				in = (uint)csg_leaf_inside(nodes, prims, &prims[first + arg], x, counts, kind);
 			v1 = v1 << 1 | in;
 			v0 = v0 << 1 | (arg == k ? 0u : in);
 			has = has << 1 | (arg == k ? 1u : 0u);
