@@ -10,11 +10,30 @@
 
 #define CSG_CROSSINGS 256   /* leaf surfaces a ray may cross in one CSG object, at most */
 
+/* A mesh leaf's (PRIM_CSG_MESH), in kernels/csg_mesh.cl after the traversal it
+ * uses: its hit past t (with no inside, only its nearest past start), the
+ * triangle in *tri; and whether x is inside it. */
+static float csg_mesh_intersect(global const bvh_node *nodes, global const dev_prim *prims,
+                                global const dev_prim *leaf, float3 o, float3 d, float start, float t, float tmax,
+                                int *tri, uint *counts, int kind);
+static bool csg_mesh_inside(global const bvh_node *nodes, global const dev_prim *prims, global const dev_prim *leaf,
+                            float3 x, uint *counts, int kind);
+
+/* Whether x is inside the leaf q. */
+static inline bool csg_leaf_inside(global const bvh_node *nodes, global const dev_prim *prims,
+                                   global const dev_prim *q, float3 x, uint *counts, int kind)
+{
+	if (q->type == PRIM_CSG_MESH)
+		return csg_mesh_inside(nodes, prims, q, x, counts, kind);
+	return shape_inside(prims, q, x);
+}
+
 /* Whether the point x of leaf k's surface is on the CSG's surface; *flip when
  * the CSG's inside is on the leaf's outside there. The stacks are bits, the
  * top in bit 0: v1 with the point inside leaf k, v0 with it outside, has for
  * the entries that hold leaf k. */
-static inline bool csg_classify(global const dev_prim *prims, global const dev_prim *csg, int k, float3 x, bool *flip)
+static inline bool csg_classify(global const bvh_node *nodes, global const dev_prim *prims, global const dev_prim *csg,
+                                int k, float3 x, bool *flip, uint *counts, int kind)
 {
 	int first = as_int(csg->a.x), n = as_int(csg->a.y), n_ops = as_int(csg->a.w);
 	global const dev_prim *prog = &prims[as_int(csg->a.z)];
@@ -23,7 +42,9 @@ static inline bool csg_classify(global const dev_prim *prims, global const dev_p
 		int code = ((global const int *)&prog[i / CSG_OPS_PER_RECORD])[i % CSG_OPS_PER_RECORD];
 		int op = code >> CSG_OP_SHIFT, arg = code & ((1 << CSG_OP_SHIFT) - 1);
 		if (op == CSG_LEAF) {
-			uint in = arg == k ? 1u : arg >= n ? 0u : (uint)shape_inside(prims, &prims[first + arg], x);
+			uint in = arg == k ? 1u : 0u;
+			if (arg != k && arg < n)
+				in = (uint)csg_leaf_inside(nodes, prims, &prims[first + arg], x, counts, kind);
 			v1 = v1 << 1 | in;
 			v0 = v0 << 1 | (arg == k ? 0u : in);
 			has = has << 1 | (arg == k ? 1u : 0u);
@@ -54,27 +75,35 @@ static inline bool csg_classify(global const dev_prim *prims, global const dev_p
 	return ((v1 ^ v0) & 1u) != 0u;
 }
 
-/* The nearest point of the CSG's surface in (tmin, tmax), or tmax; *leaf is the
- * leaf's primitive there. */
-static inline float csg_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *csg,
-                           float tmin, float tmax, int *leaf, bool *flip)
+/* The nearest point of the CSG's surface in (tmin, tmax), or tmax; *prim is the
+ * leaf's primitive there, or a mesh leaf's triangle with *inst the leaf (else
+ * -1), as traverse_hit has them. */
+static inline float csg_intersect(float3 o, float3 d, global const bvh_node *nodes, global const dev_prim *prims,
+                                  global const dev_prim *csg, float tmin, float tmax, int *prim, int *inst, bool *flip,
+                                  uint *counts, int kind)
 {
 	int first = as_int(csg->a.x), n = csg->link;   /* the leaves after these are clipped_by's */
 	float t = tmin;
 	for (int c = 0; c < CSG_CROSSINGS; c++) {
 		float best = tmax;
-		int which = -1;
+		int which = -1, tri = -1;
 		for (int k = 0; k < n; k++) {
-			float tk = shape_intersect(o, d, prims, &prims[first + k], t, best);
+			global const dev_prim *q = &prims[first + k];
+			int tk_tri = -1;
+			float tk = q->type == PRIM_CSG_MESH
+			         ? csg_mesh_intersect(nodes, prims, q, o, d, tmin, t, best, &tk_tri, counts, kind)
+			         : shape_intersect(o, d, prims, q, t, best);
 			if (tk < best) {
 				best = tk;
 				which = k;
+				tri = tk_tri;
 			}
 		}
 		if (which < 0)
 			return tmax;
-		if (csg_classify(prims, csg, which, o + best * d, flip)) {
-			*leaf = first + which;
+		if (csg_classify(nodes, prims, csg, which, o + best * d, flip, counts, kind)) {
+			*prim = tri >= 0 ? tri : first + which;
+			*inst = tri >= 0 ? first + which : -1;
 			return best;
 		}
 		t = best;

@@ -81,6 +81,7 @@ enum {
 	PRIM_INSTANCE,   /* a placed mesh: traverse.cl walks the mesh's BVH */
 	PRIM_CSG,        /* a CSG object: kernels/csg.cl classifies its leaves' hits */
 	PRIM_DATA,       /* numbers of the record before it, never hit by itself */
+	PRIM_CSG_MESH,   /* a placed mesh as a CSG's leaf: csg.cl walks the mesh's BVH */
 };
 
 /* A julia_fractal's algebra and function (src/shape_julia_fractal.c). */
@@ -143,6 +144,11 @@ enum { PRISM_OPEN = 1, PRISM_FLAT = 2, PRISM_CONIC = 4 };
  *   answer inside tests). The leaves
  *   and the program's records (PRIM_DATA, CSG_OPS_PER_RECORD ops each in a, b
  *   and c) are after every BVH's primitives, where no BVH points.
+ * CSG mesh: a mesh (height field, parametric...) as a CSG's leaf: as an
+ *   instance, but link is its PRIM_DATA record: a.xyz the direction in the
+ *   mesh's space along which crossings are counted for its inside (POV-Ray's
+ *   inside_vector; 0: it has no inside and offers only its nearest hit),
+ *   a.w (int) the root of the mesh's BVH (kernels/csg_mesh.cl).
  * material: -1 in a mesh's triangle without a texture of its own: the instance's.
  * object: the scene object's number (-1 in a mesh: the instance's). */
 typedef struct {

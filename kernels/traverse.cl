@@ -252,13 +252,15 @@ TRAVERSE_FUNCTION(traverse_top, triangle_ray tri = triangle_setup(d);, {
 			hit.flip = false;
 		}
 	} else if (q->type == PRIM_CSG) {
-		int leaf;
+		int leaf;   /* one name a line: commas would split the macro's argument */
+		int leaf_inst;
 		bool flip;
-		float t = csg_intersect(o, d, prims, q, tmin, hit.t, &leaf, &flip);
+		float t = csg_intersect(o, d, (global const bvh_node *)nodes, prims, q, tmin, hit.t, &leaf, &leaf_inst,
+		                        &flip, counts, kind);
 		if (t < hit.t) {
 			hit.t = t;
 			hit.prim = leaf;
-			hit.inst = -1;
+			hit.inst = leaf_inst;
 			hit.flip = flip;
 		}
 	} else {
@@ -278,20 +280,21 @@ TRAVERSE_FUNCTION(traverse_top, triangle_ray tri = triangle_setup(d);, {
 
 /* The unbounded primitives (planes, quadrics, and CSG objects with no bounds) after the
  * top level's n_prims: every ray tests them. */
-static inline traverse_hit traverse_planes(global const dev_prim *prims, int n_prims, int n_planes,
-                                    float3 o, float3 d, float tmin, traverse_hit hit, uint *counts,
-                                    int kind)
+static inline traverse_hit traverse_planes(global const bvh_node *nodes, global const dev_prim *prims, int n_prims,
+                                           int n_planes, float3 o, float3 d, float tmin, traverse_hit hit,
+                                           uint *counts, int kind)
 {
 	for (int i = n_prims; i < n_prims + n_planes; i++) {
 		counts[COUNT_PRIMS + kind]++;
 		if (prims[i].type == PRIM_CSG) {
-			int leaf;
+			int leaf, leaf_inst;
 			bool flip;
-			float t = csg_intersect(o, d, prims, &prims[i], tmin, hit.t, &leaf, &flip);
+			float t = csg_intersect(o, d, nodes, prims, &prims[i], tmin, hit.t, &leaf, &leaf_inst, &flip, counts,
+			                        kind);
 			if (t < hit.t) {
 				hit.t = t;
 				hit.prim = leaf;
-				hit.inst = -1;
+				hit.inst = leaf_inst;
 				hit.flip = flip;
 			}
 			continue;
@@ -315,7 +318,7 @@ static inline traverse_hit traverse_closest(global const bvh_node *nodes, global
 	traverse_hit hit = { tmax, -1, -1, false };
 	if (n_prims > 0)
 		hit = traverse_top(nodes, prims, 0, o, d, tmin, tmax, false, counts, kind);
-	return traverse_planes(prims, n_prims, n_planes, o, d, tmin, hit, counts, kind);
+	return traverse_planes(nodes, prims, n_prims, n_planes, o, d, tmin, hit, counts, kind);
 }
 
 /* Any hit in (tmin, tmax): shadow rays stop at the first occluder. */
@@ -323,7 +326,7 @@ static inline bool traverse_any(global const bvh_node *nodes, global const dev_p
                          int n_planes, float3 o, float3 d, float tmin, float tmax, uint *counts)
 {
 	traverse_hit none = { tmax, -1, -1, false };
-	if (traverse_planes(prims, n_prims, n_planes, o, d, tmin, none, counts, RAY_SHADOW).prim >= 0)
+	if (traverse_planes(nodes, prims, n_prims, n_planes, o, d, tmin, none, counts, RAY_SHADOW).prim >= 0)
 		return true;
 	return n_prims > 0 &&
 	       traverse_top(nodes, prims, 0, o, d, tmin, tmax, true, counts, RAY_SHADOW).prim >= 0;

@@ -62,6 +62,15 @@ static bool leaf_inside(void *ctx, int k)
 	return shape_of(s)->inside && shape_of(s)->inside(c->sc, s, p);
 }
 
+/* Whether a leaf offers a CSG only its nearest hit: a mesh with no inside,
+ * a parametric, a bicubic patch (shape.h, shape_mesh_inside_dir). */
+static bool nearest_only(const scene *sc, const scene_object *s)
+{
+	double d[3];
+	bool meshed = s->shape == SHAPE_MESH || s->shape == SHAPE_PARAMETRIC || s->shape == SHAPE_BICUBIC_PATCH;
+	return meshed && shape_mesh_inside_dir(sc, s, d) < 0;
+}
+
 /* A CSG object's nearest surface point, as kernels/csg.cl finds it: its
  * leaves' hits one after another, each kept when the program says the CSG's
  * surface is there. */
@@ -77,7 +86,14 @@ static void trace_csg(const scene *sc, const struct objval *obj, const struct ob
 			if (c.leaf[k].clip)
 				continue;   /* clipped_by's leaves are never seen */
 			double before = h.t;
-			trace_shape(sc, &c.leaf[k], o, d, t, &h);
+			if (nearest_only(sc, &c.leaf[k])) {   /* kernels/csg_mesh.cl */
+				shape_hit n = { .t = h.t };
+				trace_shape(sc, &c.leaf[k], o, d, SHAPE_TRACE_EPSILON, &n);
+				if (n.t < h.t && n.t > t)
+					h = n;
+			} else {
+				trace_shape(sc, &c.leaf[k], o, d, t, &h);
+			}
 			which = h.t < before ? k : which;
 		}
 		if (which < 0)

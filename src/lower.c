@@ -506,20 +506,23 @@ static bvh_box world_box(const dev_prim *inst, const float box[2][3]);
  * mesh's tree's, moved. */
 int lower_mesh_instance(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id)
 {
-	if (lower_in_csg(lw)) {   /* triangles have no inside test yet */
-		if (lw->opt->skip_unsupported) {
-			diag_warning(o->loc, "a mesh in CSG is not supported yet; left out");
-			return 0;
-		}
-		diag_error(o->loc, "a mesh in CSG is not supported yet");
-		return -1;
-	}
 	int once = lower_mesh_once(lw, s, o->mesh);
 	if (once)
 		return once < 0 ? -1 : 0;
 	dev_prim p = { .type = PRIM_INSTANCE, .material = mat, .object = id, .link = o->mesh };
 	if (lower_local_rows(&o->xf, &p)) {
 		diag_warning(o->loc, "mesh with a singular transform (a scale of 0?) skipped");
+		return 0;
+	}
+	if (lower_in_csg(lw)) {   /* a leaf: join() puts the mesh's root in its record */
+		double d[3] = { 0, 0, 0 };
+		shape_mesh_inside_dir(s, o, d);
+		int mesh = o->mesh;
+		float4 rec = { (float)d[0], (float)d[1], (float)d[2], 0 };
+		memcpy(&rec.w, &mesh, sizeof mesh);
+		p.type = PRIM_CSG_MESH;
+		p.link = lower_add_data(lw, rec);
+		push_prim(lw->target, p);
 		return 0;
 	}
 	bvh_box b = world_box(&p, lw->meshes[o->mesh].box);
@@ -892,6 +895,13 @@ static int join(struct lowering *lw, const scene *s, lower_result *out)
 		relocate(&out->prims[i], data_base);
 	for (int i = data_base; i < n_prims; i++)
 		relocate(&out->prims[i], data_base);
+	for (int i = data_base; i < n_prims; i++)   /* CSG leaves' meshes: their roots */
+		if (out->prims[i].type == PRIM_CSG_MESH) {
+			float4 *rec = &out->prims[out->prims[i].link].a;
+			int mesh;
+			memcpy(&mesh, &rec->w, sizeof mesh);
+			memcpy(&rec->w, &node_base[mesh], sizeof mesh);
+		}
 	out->n_nodes = n_nodes;
 	out->n_prims = lw->top.n;
 	out->n_planes = lw->planes.n;
@@ -919,15 +929,25 @@ static int cmp_int(const void *a, const void *b)
 	return (x > y) - (x < y);
 }
 
+/* Where a placed mesh keeps its root: an instance in its link, a CSG's mesh
+ * leaf in its record's a.w; NULL for any other primitive. */
+static int *mesh_root(lower_result *out, int i)
+{
+	dev_prim *p = &out->prims[i];
+	if (p->type == PRIM_INSTANCE)
+		return &p->link;
+	return p->type == PRIM_CSG_MESH ? (int *)&out->prims[p->link].a.w : NULL;
+}
+
 /* The wide layout: every tree converted once (a mesh placed many times
- * included), the instances pointed at their meshes' wide roots. The binary
- * nodes stay for --stats and the tests. */
+ * included), the instances and CSG mesh leaves pointed at their meshes' wide
+ * roots. The binary nodes stay for --stats and the tests. */
 static int widen_trees(lower_result *out)
 {
-	int *roots = xmalloc((out->n_prims + 1) * sizeof *roots), n_roots = 0;
-	for (int i = 0; i < out->n_prims; i++)
-		if (out->prims[i].type == PRIM_INSTANCE)
-			roots[1 + n_roots++] = out->prims[i].link;
+	int *roots = xmalloc((out->n_all_prims + 1) * sizeof *roots), n_roots = 0;
+	for (int i = 0; i < out->n_all_prims; i++)
+		if (mesh_root(out, i))
+			roots[1 + n_roots++] = *mesh_root(out, i);
 	qsort(roots + 1, n_roots, sizeof *roots, cmp_int);
 	int unique = 0;
 	for (int i = 0; i < n_roots; i++)
@@ -945,10 +965,10 @@ static int widen_trees(lower_result *out)
 		fprintf(stderr, "eclat: the BVH cannot be converted to the wide layout "
 		                "(out of memory, or more than %d primitives)\n", 1 << BVH_WIDE_FIRST_BITS);
 	}
-	for (int i = 0; rc == 0 && i < out->n_prims; i++)
-		if (out->prims[i].type == PRIM_INSTANCE) {
-			int *r = bsearch(&out->prims[i].link, roots + 1, n_roots - 1, sizeof *roots, cmp_int);
-			out->prims[i].link = w.roots[r - roots];
+	for (int i = 0; rc == 0 && i < out->n_all_prims; i++)
+		if (mesh_root(out, i)) {
+			int *r = bsearch(mesh_root(out, i), roots + 1, n_roots - 1, sizeof *roots, cmp_int);
+			*mesh_root(out, i) = w.roots[r - roots];
 		}
 	free(roots);
 	if (rc != 0) {

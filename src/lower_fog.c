@@ -58,7 +58,7 @@ int lower_fogs(const scene *s, lower_result *out)
 }
 
 /* Whether world point x is inside scene object o (its class's inside test in
- * object space); a shape without one (a mesh, a triangle) holds nothing. */
+ * object space); a shape without one (a triangle, a mesh without inside_vector) holds nothing. */
 static bool object_inside(const scene *s, const scene_object *o, const double x[3])
 {
 	xform inv;

@@ -108,11 +108,20 @@ int lower_media(lower_textures *lt, const scene *s, int head, const xform *to_wo
 	return first;
 }
 
+/* Whether o has an inside: a mesh only with its inside_vector. */
+static bool has_inside(const scene *s, const scene_object *o)
+{
+	double d[3];
+	if (!shape_of(o)->inside)
+		return false;
+	return o->shape != SHAPE_MESH || shape_mesh_inside_dir(s, o, d) == 0;
+}
+
 void lower_media_warn_open(const scene *s)
 {
 	for (int i = 0; i < s->n_objects; i++) {
 		const scene_object *o = &s->objects[i];
-		if (o->material.media && !shape_of(o)->inside && !o->csg)
+		if (o->material.media && !has_inside(s, o) && !o->csg)
 			diag_warning(o->loc, "media in a %s, which has no inside: as in POV-Ray, a ray that passes "
 			             "through it carries them to the next surface it meets", shape_of(o)->name);
 	}

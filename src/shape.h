@@ -84,6 +84,16 @@ void shape_frame(const double n[3], double u[3], double v[3]);
  * min_extent) are POV-Ray's. */
 xform shape_coordinate_xform(const double origin[3], const double up[3], double radius, double length);
 
+/* A placed mesh's inside (shape_mesh.c; the shapes made into meshes too): the
+ * direction d in the mesh's space along which an odd number of crossings puts
+ * a point inside (POV-Ray's inside_vector, a world direction; a height
+ * field's up), and 0; or -1 when it has no inside, and then offers a CSG only
+ * its nearest hit along a ray, as POV-Ray's mesh and parametric do. */
+int shape_mesh_inside_dir(const scene *s, const scene_object *o, double d[3]);
+/* How many times the ray (p, d) in the mesh's space crosses it, each hit the
+ * nearest past the one before (hits at one distance count once). */
+int shape_mesh_crossings(const scene *s, const scene_object *o, const double p[3], const double d[3]);
+
 /* ---- --dump-scene's words (scene.c) ---- */
 
 void scene_dump_num(FILE *out, double v);

@@ -24,6 +24,14 @@ static void trace(const scene *s, const scene_object *o, const double ro[3], con
 		shape_mesh.trace(s, o, ro, rd, tmin, h);
 }
 
+/* POV-Ray's HField::Inside: below the surface over its square, which is one
+ * crossing upward. */
+static bool inside(const scene *s, const scene_object *o, const double p[3])
+{
+	double d[3];
+	return shape_mesh_inside_dir(s, o, d) == 0 && shape_mesh_crossings(s, o, p, d) % 2 == 1;
+}
+
 static int lower(struct lowering *lw, const scene *s, const scene_object *o, int mat, int id)
 {
 	return o->mesh >= 0 ? lower_mesh_instance(lw, s, o, mat, id) : 0;
@@ -37,7 +45,7 @@ static void dump(FILE *out, const scene_object *o)
 
 const shape_class shape_height_field = {
 	.name = AST_WORD_HEIGHT_FIELD, .args = NULL, .needs = "an image or a function",
-	.bounds = bounds, .trace = trace, .lower = lower, .dump = dump,
+	.bounds = bounds, .trace = trace, .inside = inside, .lower = lower, .dump = dump,
 };
 
 const shape_class shape_parametric = {

@@ -14,9 +14,15 @@
  * The reference is a recursion over the tree; the kernels run a flat program
  * (kernels/csg.cl), so the two are independent. Each case is a CSG tree of
  * spheres and boxes, each operation alone and then random trees three levels
- * deep with inverses, and one ok/FAIL line a case: every closest hit of its
+ * deep with inverses, then the same with meshes among the leaves (a box as a
+ * closed mesh2 with inside_vector, inside by the parity of its crossings: the
+ * box's inside; the box's mesh without one and a parametric square, with no
+ * inside and only their nearest hit along a ray, as POV-Ray's mesh and
+ * parametric give a CSG), and one ok/FAIL line a case: every closest hit of its
  * rays agrees, except rays whose reference hit lies within a hair of another
- * leaf's surface or grazes one, where single precision may go either way.
+ * leaf's surface or grazes one, where single precision may go either way,
+ * and the host's inside (each leaf's class in double, as trace() and inside()
+ * use it) agrees with the reference's at random points.
  *
  *   test_csg [RAYS] */
 #include <math.h>
@@ -26,6 +32,7 @@
 #include <string.h>
 
 #include "cast.h"
+#include "csg.h"
 #include "device.h"
 #include "diag.h"
 #include "eval.h"
@@ -39,8 +46,10 @@ static double range(double lo, double hi)
 
 /* ---- the tree and its reference ---- */
 
-enum { SPHERE, BOX, UNION, MERGE, INTERSECTION, DIFFERENCE };
-static const char *const names[] = { "sphere", "box", "union", "merge", "intersection", "difference" };
+enum { SPHERE, BOX, MESH_BOX, OPEN_MESH, SHEET, UNION, MERGE, INTERSECTION, DIFFERENCE };
+static const char *const names[] = { "sphere", "box", "mesh box", "open mesh", "parametric square", "union", "merge",
+                                     "intersection", "difference" };
+static int leaf_kinds = 2;   /* leaf() draws the first of these kinds */
 
 #define MAX_KIDS 3
 #define MAX_HITS 256
@@ -49,7 +58,7 @@ struct node {
 	int kind;
 	bool inverse;
 	double c[3], r;           /* sphere */
-	double lo[3], hi[3];      /* box */
+	double lo[3], hi[3];      /* box, the meshes; a parametric square at z = c[2] */
 	struct node *kid[MAX_KIDS];
 	int n_kids;
 };
@@ -67,11 +76,16 @@ static double dot3(const double a[3], const double b[3])
 /* How far x is from the leaf's surface, roughly: for the margins. */
 static double surface_distance(const struct node *n, const double x[3])
 {
+	if (n->kind == SHEET) {
+		double dx = fmax(0, fmax(n->lo[0] - x[0], x[0] - n->hi[0]));
+		double dy = fmax(0, fmax(n->lo[1] - x[1], x[1] - n->hi[1])), dz = x[2] - n->c[2];
+		return sqrt(dx * dx + dy * dy + dz * dz);
+	}
 	if (n->kind == SPHERE) {
 		double v[3] = { x[0] - n->c[0], x[1] - n->c[1], x[2] - n->c[2] };
 		return fabs(sqrt(dot3(v, v)) - n->r);
 	}
-	if (n->kind == BOX) {
+	if (n->kind == BOX || n->kind == MESH_BOX || n->kind == OPEN_MESH) {
 		double inside = INFINITY, out = 0;
 		for (int k = 0; k < 3; k++) {
 			double a = x[k] - n->lo[k], b = n->hi[k] - x[k];
@@ -92,7 +106,9 @@ static bool inside(const struct node *n, const double x[3])
 	if (n->kind == SPHERE) {
 		double v[3] = { x[0] - n->c[0], x[1] - n->c[1], x[2] - n->c[2] };
 		in = dot3(v, v) < n->r * n->r;
-	} else if (n->kind == BOX) {
+	} else if (n->kind == OPEN_MESH || n->kind == SHEET) {
+		in = false;
+	} else if (n->kind == BOX || n->kind == MESH_BOX) {
 		in = true;
 		for (int k = 0; k < 3; k++)
 			in = in && x[k] > n->lo[k] && x[k] < n->hi[k];
@@ -126,16 +142,23 @@ static void all_hits(const struct node *n, const double o[3], const double d[3],
 		}
 		return;
 	}
-	if (n->kind == BOX) {
+	if (n->kind == SHEET) {
+		double t = (n->c[2] - o[2]) / d[2], x = o[0] + t * d[0], y = o[1] + t * d[1];
+		if (t > 0 && x >= n->lo[0] && x <= n->hi[0] && y >= n->lo[1] && y <= n->hi[1])
+			add(out, t);
+		return;
+	}
+	if (n->kind == BOX || n->kind == MESH_BOX || n->kind == OPEN_MESH) {
 		double t0 = -INFINITY, t1 = INFINITY;
 		for (int k = 0; k < 3; k++) {
 			double a = (n->lo[k] - o[k]) / d[k], b = (n->hi[k] - o[k]) / d[k];
 			t0 = fmax(t0, fmin(a, b));
 			t1 = fmin(t1, fmax(a, b));
 		}
-		if (t0 <= t1) {
+		if (t0 <= t1) {   /* rays start outside every leaf */
 			add(out, t0);
-			add(out, t1);
+			if (n->kind != OPEN_MESH)
+				add(out, t1);
 		}
 		return;
 	}
@@ -162,12 +185,37 @@ static void all_hits(const struct node *n, const double o[3], const double d[3],
 	}
 }
 
+/* Whether the ray passes within a hair of a leaf's silhouette (a box's edge, a
+ * sphere's rim), hit or not: where single precision may see a hit the
+ * reference does not, or miss one it sees. */
+static bool grazes(const struct node *n, const double o[3], const double d[3])
+{
+	if (n->kind == SPHERE) {
+		double oc[3] = { o[0] - n->c[0], o[1] - n->c[1], o[2] - n->c[2] };
+		double b = dot3(oc, d), disc = b * b - (dot3(oc, oc) - n->r * n->r);
+		return fabs(disc) < 1e-5;
+	}
+	if (n->kind == BOX || n->kind == MESH_BOX || n->kind == OPEN_MESH) {
+		double t0 = -INFINITY, t1 = INFINITY;
+		for (int k = 0; k < 3; k++) {
+			double a = (n->lo[k] - o[k]) / d[k], b = (n->hi[k] - o[k]) / d[k];
+			t0 = fmax(t0, fmin(a, b));
+			t1 = fmin(t1, fmax(a, b));
+		}
+		return fabs(t1 - t0) < 1e-4;
+	}
+	for (int i = 0; i < n->n_kids; i++)
+		if (grazes(n->kid[i], o, d))
+			return true;
+	return false;
+}
+
 /* ---- making trees and their text ---- */
 
 static struct node *leaf(void)
 {
 	struct node *n = calloc(1, sizeof *n);
-	n->kind = cast_uniform() < 0.5 ? SPHERE : BOX;
+	n->kind = (int)(cast_uniform() * leaf_kinds);
 	for (int k = 0; k < 3; k++)
 		n->c[k] = range(-0.6, 0.6);
 	n->r = range(0.4, 0.9);
@@ -176,6 +224,7 @@ static struct node *leaf(void)
 		n->lo[k] = n->c[k] - h;
 		n->hi[k] = n->c[k] + h;
 	}
+	n->c[2] = n->kind == SHEET ? range(-0.5, 0.5) : n->c[2];
 	n->inverse = cast_uniform() < 0.1;
 	return n;
 }
@@ -198,9 +247,28 @@ static void free_tree(struct node *n)
 	free(n);
 }
 
+/* A box of 12 triangles, with the inside_vector or without. */
+static void write_mesh_box(FILE *f, const struct node *n)
+{
+	fputs("mesh2 { vertex_vectors { 8", f);
+	for (int v = 0; v < 8; v++)
+		fprintf(f, ", <%.17g, %.17g, %.17g>", v & 1 ? n->hi[0] : n->lo[0], v & 2 ? n->hi[1] : n->lo[1],
+		        v & 4 ? n->hi[2] : n->lo[2]);
+	fputs(" }\n face_indices { 12, <0, 1, 3>, <0, 3, 2>, <4, 7, 5>, <4, 6, 7>, <0, 4, 5>, <0, 5, 1>, <2, 3, 7>, "
+	      "<2, 7, 6>, <0, 2, 6>, <0, 6, 4>, <1, 5, 7>, <1, 7, 3> }\n", f);
+	if (n->kind == MESH_BOX)
+		fputs(" inside_vector <0.31, 0.52, 0.79>\n", f);
+}
+
 static void write_node(FILE *f, const struct node *n)
 {
-	if (n->kind == SPHERE)
+	if (n->kind == MESH_BOX || n->kind == OPEN_MESH)
+		write_mesh_box(f, n);
+	else if (n->kind == SHEET)
+		fprintf(f, "parametric { function { %.17g + u * %.17g } function { %.17g + v * %.17g } function { %.17g }\n"
+		        " <0, 0>, <1, 1> contained_by { box { <-3, -3, -3>, <3, 3, 3> } }\n",
+		        n->lo[0], n->hi[0] - n->lo[0], n->lo[1], n->hi[1] - n->lo[1], n->c[2]);
+	else if (n->kind == SPHERE)
 		fprintf(f, "sphere { <%.17g, %.17g, %.17g>, %.17g", n->c[0], n->c[1], n->c[2], n->r);
 	else if (n->kind == BOX)
 		fprintf(f, "box { <%.17g, %.17g, %.17g>, <%.17g, %.17g, %.17g>", n->lo[0], n->lo[1], n->lo[2], n->hi[0],
@@ -214,9 +282,53 @@ static void write_node(FILE *f, const struct node *n)
 	fprintf(f, "%s }", n->inverse ? " inverse" : "");
 }
 
-/* ---- the device ---- */
+/* ---- the host ---- */
 
 static int failures;
+
+struct host_leaves {
+	const scene *s;
+	const scene_object *leaf;
+	const double *x;
+};
+
+/* A leaf's own inside test on the host, as trace() and inside() make it. */
+static bool host_leaf_inside(void *ctx, int k)
+{
+	const struct host_leaves *c = ctx;
+	const scene_object *o = &c->leaf[k];
+	xform inv;
+	double p[3];
+	if (!shape_of(o)->inside || lower_invert(&o->xf, &inv))
+		return false;
+	scene_xform_point(&inv, c->x, p);
+	return shape_of(o)->inside(c->s, o, p);
+}
+
+/* The host's inside of the CSG object (its program over its leaves' classes'
+ * inside tests, in double) against the reference's at random points, when
+ * the tree is one CSG object (a union at the top is only a group); *checked
+ * gets how many points were compared. */
+static int host_inside_disagrees(const scene *s, const struct node *root, int n_points, int *checked)
+{
+	*checked = 0;
+	if (s->n_csgs != 1 || s->csgs[0].first != 0 || s->csgs[0].n_leaves != s->n_objects)
+		return 0;
+	int bad = 0;
+	for (int i = 0; i < n_points; i++) {
+		double x[3] = { range(-1.6, 1.6), range(-1.6, 1.6), range(-1.6, 1.6) };
+		if (surface_distance(root, x) < 1e-6)
+			continue;
+		struct host_leaves c = { s, s->objects, x };
+		bool host = csg_inside(s->csgs[0].ops, s->csgs[0].n_ops, host_leaf_inside, &c);
+		(*checked)++;
+		if (host != inside(root, x) && bad++ < 3)
+			printf("  point <%g, %g, %g>: host inside %d, reference %d\n", x[0], x[1], x[2], host, !host);
+	}
+	return bad;
+}
+
+/* ---- the device ---- */
 
 /* One case: the tree as a scene, its rays on the device and in the reference. */
 static void run_case(device_ctx *dev, cl_program prog, const char *what, struct node *root, int n_rays)
@@ -283,6 +395,7 @@ static void run_case(device_ctx *dev, cl_program prog, const char *what, struct 
 		for (int j = 0; j < h.n && !close; j++)
 			for (int k = j + 1; k < h.n && !close; k++)
 				close = fabs(h.t[j] - h.t[k]) < 2e-3 && fmin(h.t[j], h.t[k]) <= best + 2e-3;
+		close = close || grazes(root, o, d);
 		float t = hits[4 * i];
 		bool agree = best == INFINITY ? t == INFINITY : fabs(t - best) < 1e-3;
 		if (close) {
@@ -293,8 +406,10 @@ static void run_case(device_ctx *dev, cl_program prog, const char *what, struct 
 		if (!agree && bad++ < 3)
 			printf("  ray %d: device t %.6g, reference %.6g\n", i, t, best);
 	}
-	printf("%s: %s: %d rays, %d hit, %d near another surface left out, %d disagree\n", bad ? "FAIL" : "ok", what,
-	       n_rays, hit, skipped, bad);
+	int checked, host_bad = host_inside_disagrees(&s, root, n_rays / 4, &checked);
+	printf("%s: %s: %d rays, %d hit, %d near another surface left out, %d disagree; host inside: %d points, %d "
+	       "disagree\n", bad || host_bad ? "FAIL" : "ok", what, n_rays, hit, skipped, bad, checked, host_bad);
+	bad += host_bad;
 	if (bad)
 		printf("%s\n", text);
 	failures += bad > 0;
@@ -330,6 +445,28 @@ int main(int argc, char **argv)
 		char what[64];
 		struct node *t = tree(UNION + i % 4, 3);
 		snprintf(what, sizeof what, "tree %d (%s, three deep)", i, names[UNION + i % 4]);
+		run_case(&dev, prog, what, t, n_rays / 4);
+		free_tree(t);
+	}
+	for (int mesh = MESH_BOX; mesh <= SHEET; mesh++)   /* each operation with a mesh first and second */
+		for (int kind = UNION; kind <= DIFFERENCE; kind++)
+			for (int second = 0; second < 2; second++) {
+				char what[96];
+				struct node *t = tree(kind, 1);
+				t->inverse = false;
+				t->kid[second]->kind = mesh;
+				t->kid[second]->inverse = false;
+				if (mesh == SHEET)
+					t->kid[second]->c[2] = range(-0.5, 0.5);
+				snprintf(what, sizeof what, "%s with a %s %s", names[kind], names[mesh], second ? "second" : "first");
+				run_case(&dev, prog, what, t, n_rays / 4);
+				free_tree(t);
+			}
+	leaf_kinds = SHEET + 1;
+	for (int i = 0; i < 16; i++) {   /* meshes anywhere, three levels deep */
+		char what[64];
+		struct node *t = tree(UNION + i % 4, 3);
+		snprintf(what, sizeof what, "tree %d with meshes (%s, three deep)", i, names[UNION + i % 4]);
 		run_case(&dev, prog, what, t, n_rays / 4);
 		free_tree(t);
 	}
