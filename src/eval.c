@@ -1159,6 +1159,7 @@ static void eval_free(struct eval *e)
 {
 	eval_files_close(e);
 	eval_access_free(e);
+	eval_outline_free(e);
 	while (e->scope)
 		scope_pop(e);
 	for (int i = 0; i < e->n_trees; i++)

@@ -144,7 +144,12 @@ struct eval {
 	int n_files;
 	struct eval_access *access;  /* the folders the scene may read and write (eval_access.c) */
 	double memory_used, memory_limit;  /* bytes (eval_memory.c); limit 0: not looked up yet */
+	struct eval_font *fonts; /* the texts' outlines already read (eval_outline.c) */
+	int n_fonts;
 };
+
+/* Frees the texts' outline cache (not the outlines: the scene has them). */
+void eval_outline_free(struct eval *e);
 
 /* Memory for what the scene loads (eval_memory.c): claim bytes before
  * allocating them; -1 after an error at loc that names what and the numbers.

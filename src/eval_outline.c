@@ -701,6 +701,49 @@ static int font_take(int fd, void *arg, char *err, size_t errlen)
 	return 0;
 }
 
+/* A text's outline read once per font, string and offset: a scene that writes
+ * the same letters many times (POV-Ray's stacker blocks: 1,914 texts) starts
+ * FreeType's child once for each, and the copies share the scene's outline.
+ * At most FONT_CACHE entries, the first ones. */
+#define FONT_CACHE 4096
+
+struct eval_font {
+	char *path, *str;
+	double offset[3];
+	int outline;
+};
+
+static int font_cached(const struct eval *e, const char *path, const char *str, const double offset[3])
+{
+	for (int i = 0; i < e->n_fonts; i++) {
+		const struct eval_font *f = &e->fonts[i];
+		if (strcmp(f->path, path) == 0 && strcmp(f->str, str) == 0 && f->offset[0] == offset[0] &&
+		    f->offset[1] == offset[1] && f->offset[2] == offset[2])
+			return f->outline;
+	}
+	return -1;
+}
+
+static void font_remember(struct eval *e, const char *path, const char *str, const double offset[3], int outline)
+{
+	if (e->n_fonts >= FONT_CACHE)
+		return;
+	e->fonts = eval_xrealloc(e->fonts, (size_t)(e->n_fonts + 1) * sizeof *e->fonts);
+	e->fonts[e->n_fonts++] = (struct eval_font){ eval_xstrdup(path), eval_xstrdup(str),
+		                                     { offset[0], offset[1], offset[2] }, outline };
+}
+
+void eval_outline_free(struct eval *e)
+{
+	for (int i = 0; i < e->n_fonts; i++) {
+		free(e->fonts[i].path);
+		free(e->fonts[i].str);
+	}
+	free(e->fonts);
+	e->fonts = NULL;
+	e->n_fonts = 0;
+}
+
 static int text_args(struct eval *e, struct cursor *c, const ast_node *b, scene_object *o)
 {
 	int err = 0;
@@ -763,6 +806,8 @@ static int text_args(struct eval *e, struct cursor *c, const ast_node *b, scene_
 		eval_error(e, font_loc, "cannot find the font file '%s'", font);
 	} else if (eval_access(e, path, false, font_loc, "text")) {
 		/* refused, and said so */
+	} else if ((o->outline = font_cached(e, path, str, offset)) >= 0) {
+		rc = 0;
 	} else {
 		struct font_job j = { .path = path, .str = str, .offset = offset };
 		char why[512];
@@ -777,6 +822,7 @@ static int text_args(struct eval *e, struct cursor *c, const ast_node *b, scene_
 			eval_error(e, arg->loc, "text: the font has no outline for glyph %u", j.bad_glyph);
 		else {
 			store(e, &j.b, o);
+			font_remember(e, path, str, offset, o->outline);
 			rc = 0;
 		}
 		if (rc) {
