@@ -12,6 +12,8 @@
 # (camera, diffuse and shadow rays, eclat's traversal-only kernel against
 # rtcIntersect1/rtcOccluded1 on 2 threads), paths per second of the render
 # against a minimal Embree path tracer, and BVH build times.
+# With POV-Ray, --integrator whitted against povray +WT2 on the bunny and the
+# dragon (tests/bench/whitted_mesh.scn), wall times interleaved the same way.
 set -u
 : "${ECLAT:?}" "${top_srcdir:?}" "${MESH_DIR:?}"
 EMBREE_BENCH=${EMBREE_BENCH:-}
@@ -99,6 +101,46 @@ else
 	echo "== against Embree: left out, configure found no Embree 3 (apt-get install libembree-dev; ./bootstrap installs it)"
 fi
 
+# --integrator whitted against POV-Ray with 2 threads (+WT2) on the bunny and the
+# dragon, 1280x960, wall time of the whole command (start-up, parsing the mesh2
+# and writing the PNG included), the two programs interleaved round by round on
+# the same scene file and the same mesh2 include (eclat --export-mesh2).
+whitted_ratio=
+if command -v povray > /dev/null 2>&1; then
+	echo "== --integrator whitted against povray +WT2, 1280x960, $ROUNDS rounds (wall time, start-up included)"
+	cp "$top_srcdir/tests/bench/whitted_mesh.scn" "$out/whitted.pov"
+	: > "$out/empty.ini"
+	wall_s() { # wall_s COMMAND...: the seconds it took, or nothing when it failed
+		t0=$(date +%s.%N)
+		"$@" > "$out/whitted.log" 2>&1 || { sed 's/^/    /' "$out/whitted.log" | tail -n 5 >&2; return 1; }
+		echo "$t0 $(date +%s.%N)" | awk '{ printf "%.3f\n", $2 - $1 }'
+	}
+	for m in bunny.ply dragon.obj; do
+		name=${m%.*}
+		"$ECLAT" --export-mesh2 "$MESH_DIR/$m" -o "$out/${name}_mesh2.inc" || exit 1
+		decl=$(sed -n 's/^#declare \([A-Za-z_0-9]*\) = mesh2.*/\1/p' "$out/${name}_mesh2.inc")
+		printf '#include "%s_mesh2.inc"\n#declare Mesh = %s;\n' "$name" "$decl" > "$out/mesh.inc"
+		: > "$out/eclat_s"
+		: > "$out/povray_s"
+		r=0
+		while [ "$r" -lt "$ROUNDS" ]; do
+			e=$(cd "$out" && wall_s "$ECLAT" -q --integrator whitted -W 1280 -H 960 whitted.pov -o whitted.png) || exit 1
+			p=$(cd "$out" && POVINI="$out/empty.ini" wall_s povray +Iwhitted.pov +Owhitted_pov.png +W1280 +H960 +WT2 -D -V -P +FN) ||
+				exit 1
+			echo "$e" >> "$out/eclat_s"
+			echo "$p" >> "$out/povray_s"
+			r=$((r + 1))
+			echo "  round $r: $name, eclat $e s, povray $p s"
+		done
+		# best_median gives the highest and the median: of the negated times, the fastest
+		set -- $(sed 's/^/-/' "$out/eclat_s" | best_median) $(sed 's/^/-/' "$out/povray_s" | best_median)
+		echo "$@" | awk -v name="$name" '{ printf "  summary: %s, s best and median: eclat %.2f %.2f, povray +WT2 %.2f %.2f: povray/eclat %.2fx (target 3x)\n", name, -$1, -$2, -$3, -$4, $4 / $2 }'
+		whitted_ratio="$whitted_ratio $name $(echo "$@" | awk '{ printf "%.2fx", $4 / $2 }')"
+	done
+else
+	echo "== --integrator whitted against POV-Ray: left out, no povray on the PATH (./bootstrap installs it)"
+fi
+
 run "path tracer, SAH BVH, binary layout, $SAMPLES samples" -s "$SAMPLES" --bvh-layout binary
 paths_binary=$(paths_of)
 sah=$(sed -n 's/^rays: all: .*, \([0-9.]*\) tests per path.*/\1/p' "$out/log")
@@ -141,3 +183,4 @@ echo "$paths $sah $median $sah_camera $median_camera $paths_binary $wide_camera 
 	printf "  per path (all rays of a pixel sample): SAH %.1f, median split %.1f\n", $2, $3
 	printf "  SAH build, best and median of %d: bunny (69,451 triangles) %.1f and %.1f ms (target 20),\n", $12, $8, $9
 	printf "  igea (268,686) %.1f and %.1f ms (target 80)\n", $10, $11 }'
+[ -z "$whitted_ratio" ] || echo "  --integrator whitted, faster than povray +WT2 by (medians, 1280x960, target 3x):$whitted_ratio"
