@@ -16,3 +16,15 @@ static inline bool camera_view(const scene_data *sc, int px, int py, float jx, f
 	*dir = ray[1].xyz;
 	return true;
 }
+
+/* How far a camera ray looks for its first hit: a mesh_camera's max_distance
+ * (POV-Ray's TraceRay maxDepth for the camera's rays; 0 is no limit), which
+ * lower_camera_mesh.c keeps in every ray's w. Both integrators normalise the
+ * direction, so it is a distance, as in POV-Ray. */
+static inline float camera_max_distance(const scene_data *sc)
+{
+	if ((int)sc->p->lens.z != CAMERA_MESH)
+		return INFINITY;
+	float m = sc->camera_rays[1].w;
+	return m > 0.0f ? m : INFINITY;
+}

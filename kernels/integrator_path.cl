@@ -46,7 +46,8 @@ static inline float3 path_radiance(const scene_data *sc, int px, int py, uint ke
 	media_stack ms = media_around(sc, p->cam_location.xyz);   /* the interiors with media around the ray */
 	sc->counts[COUNT_RAYS + RAY_CAMERA]++;
 	for (int depth = 0;; depth++) {
-		traverse_hit hit = visibility_closest(sc, o, d, 0.0f, INFINITY, path_skip(depth, reflected),
+		traverse_hit hit = visibility_closest(sc, o, d, 0.0f, depth == 0 ? camera_max_distance(sc) : INFINITY,
+		                                      path_skip(depth, reflected),
 		                                      depth == 0 ? RAY_CAMERA : RAY_BOUNCE);
 		uint dim = RNG_DIMS_PER_BOUNCE * (uint)(depth + 1);
 		media_list ml = media_list_at(sc, &ms, solids);

@@ -447,7 +447,7 @@ static inline void whitted_texture(const scene_data *sc, whitted_frame *fr, shad
 }
 
 /* Traces one ray: its surface's own colour, and the rays it spawns as children. */
-static inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, first_hit *first)
+static inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray, float tmax, first_hit *first)
 {
 	whitted_frame fr;
 	fr.ray = ray;
@@ -461,7 +461,7 @@ static inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray,
 		return fr;   /* black, and unfogged, as POV-Ray's TraceRay returns early */
 	int skip = ray.kind & WRAY_REFLECTED ? OBJECT_NO_REFLECTION : OBJECT_NO_IMAGE;
 	int kind = ray.level == 0 ? RAY_CAMERA : RAY_BOUNCE;
-	traverse_hit hit = visibility_closest(sc, ray.o, ray.d, 0.0f, INFINITY, skip, kind);
+	traverse_hit hit = visibility_closest(sc, ray.o, ray.d, 0.0f, tmax, skip, kind);
 	if (ray.solids == 0 && (p->n_fogs > 0 || p->n_atmosphere > 0))
 		fr.fog_t = hit.prim < 0 ? INFINITY : hit.t;
 	if (ray.solids == 0 && ray.media.n > 0 && hit.prim >= 0)
@@ -487,14 +487,14 @@ static inline float3 whitted_radiance(const scene_data *sc, whitted_ray camera, 
 	global const dev_params *p = sc->p;
 	whitted_frame stack[WHITTED_FRAMES];
 	int sp = 0;
-	stack[sp++] = whitted_shade(sc, camera, first);
+	stack[sp++] = whitted_shade(sc, camera, camera_max_distance(sc), first);
 	float3 result = (float3)(0.0f);
 	while (sp > 0) {
 		whitted_frame *top = &stack[sp - 1];
 		if (top->next < top->n_child && sp < WHITTED_FRAMES) {
 			whitted_ray r = top->child[top->next++];
 			sc->counts[COUNT_RAYS + RAY_BOUNCE]++;
-			stack[sp++] = whitted_shade(sc, r, first);
+			stack[sp++] = whitted_shade(sc, r, INFINITY, first);
 			continue;
 		}
 		float3 c = top->colour;

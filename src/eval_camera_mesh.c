@@ -65,8 +65,6 @@ static int camera_mesh_check(struct eval *e, const ast_node *b, scene_camera *c,
 		           "method 0", c->mesh_rays, c->mesh_count);
 		return -1;
 	}
-	if (c->mesh_max_distance > 0)
-		eval_warning(e, loc[2], "a mesh_camera's maximum ray distance is not supported yet; ignored");
 	if (c->mesh_method == 3 && c->mesh_count > 1)
 		eval_warning(e, b->loc, "the meshes after the first are ignored for distribution method 3");
 	c->mesh_smooth = smooth;
