@@ -6,6 +6,15 @@
  * The ray's direction is POV-Ray's before it normalizes it, since its focal
  * blur focuses each ray at that direction times a fixed length. */
 
+/* The angle of (x, y) from the right, as POV-Ray's fisheye and omnimax
+ * cameras take it (its image point for a camera's normal). */
+static inline float camera_phi(float x, float y, float rad)
+{
+	if (rad == 0.0f)
+		return 0.0f;
+	return x < 0.0f ? M_PI_F - asin(y / rad) : asin(y / rad);
+}
+
 /* cos and sin of the angle of (x, y), with angle 0 at the centre. */
 static inline float2 camera_polar(float x, float y, float rad)
 {
@@ -23,21 +32,23 @@ static inline float3 camera_sphere(float3 r, float3 u, float3 d, float2 phi, flo
 /* The fisheye: the circle of radius 1 in units of |right| and |up| about the
  * image's centre sees the angle right.w across; outside it, no ray. */
 static inline bool camera_fisheye(global const dev_params *p, float x, float y, float lr, float lu,
-                           float3 r, float3 u, float3 d, float3 *dir)
+                           float3 r, float3 u, float3 d, float3 *dir, float2 *xy)
 {
 	x *= 2.0f * lr;
 	y *= 2.0f * lu;
 	float rad = sqrt(x * x + y * y);
 	if (rad > 1.0f)
 		return false;
-	*dir = camera_sphere(r, u, d, camera_polar(x, y, rad), rad * 0.5f * p->cam_right.w);
+	*xy = (float2)(camera_phi(x, y, rad), rad * 0.5f * p->cam_right.w);
+	*dir = camera_sphere(r, u, d, camera_polar(x, y, rad), xy->y);
 	return true;
 }
 
 /* The omnimax projection (a polynomial fit of the dome's lens), its circle
  * moved to the image's top when the image is wider than tall, and nothing
  * more than 45 degrees below the axis. */
-static inline bool camera_omnimax(float x, float y, float lr, float lu, float3 r, float3 u, float3 d, float3 *dir)
+static inline bool camera_omnimax(float x, float y, float lr, float lu, float3 r, float3 u, float3 d, float3 *dir,
+                                  float2 *xy)
 {
 	const float wide = 1.283458f;
 	float aspect = lr / lu;
@@ -59,6 +70,7 @@ static inline bool camera_omnimax(float x, float y, float lr, float lu, float3 r
 	float2 phi = camera_polar(x, y, rad);
 	if (phi.y * sin(theta) < -cos(theta))   /* tan(135 degrees) * cos(theta) */
 		return false;
+	*xy = (float2)(camera_phi(x, y, rad), theta);
 	*dir = camera_sphere(r, u, d, phi, theta);
 	return true;
 }
@@ -93,46 +105,58 @@ static inline float3 camera_spherical(global const dev_params *p, float x, float
 }
 
 /* The types that turn their rays: unit right, up and direction, the lengths
- * of right and up as the image's proportions, the angle in right.w. */
-static inline bool camera_bent(global const dev_params *p, int type, float x, float y, float3 *o, float3 *dir)
+ * of right and up as the image's proportions, the angle in right.w. xy is
+ * POV-Ray's point of the ray on the image for a camera's normal: the angles or
+ * lengths it makes the ray from. */
+static inline bool camera_bent(global const dev_params *p, int type, float x, float y, float3 *o, float3 *dir,
+                               float2 *xy)
 {
 	float lr = length(p->cam_right.xyz), lu = length(p->cam_up.xyz), angle = p->cam_right.w;
 	float3 r = p->cam_right.xyz / lr, u = p->cam_up.xyz / lu, d = normalize(p->cam_direction.xyz);
 	switch (type) {
 	case CAMERA_FISHEYE:
-		return camera_fisheye(p, x, y, lr, lu, r, u, d, dir);
+		return camera_fisheye(p, x, y, lr, lu, r, u, d, dir, xy);
 	case CAMERA_OMNIMAX:
-		return camera_omnimax(x, y, lr, lu, r, u, d, dir);
+		return camera_omnimax(x, y, lr, lu, r, u, d, dir, xy);
 	case CAMERA_ULTRA_WIDE_ANGLE:   /* the vertical angle in proportion to |up| / |right| */
 		x *= angle;
 		y *= angle * lu / lr;
+		*xy = (float2)(x, y);
 		*dir = sin(x) * r + sin(y) * u + (cos(x) * cos(y)) * d;
 		return true;
 	case CAMERA_CYLINDER_1:   /* a vertical cylinder's axis along up, |up| high */
-		*dir = sin(x * angle) * r + (y * lu) * u + cos(x * angle) * d;
+		*xy = (float2)(x * angle, y * lu);
+		*dir = sin(xy->x) * r + xy->y * u + cos(xy->x) * d;
 		return true;
 	case CAMERA_CYLINDER_2:   /* a horizontal cylinder's axis along right, |right| wide */
-		*dir = (x * lr) * r + sin(y * angle) * u + cos(y * angle) * d;
+		*xy = (float2)(x * lr, y * angle);
+		*dir = xy->x * r + sin(xy->y) * u + cos(xy->y) * d;
 		return true;
 	case CAMERA_CYLINDER_3:   /* as 1, the rays parallel along up */
-		*o += (y * lu) * u;
-		*dir = sin(x * angle) * r + cos(x * angle) * d;
+		*xy = (float2)(x * angle, y * lu);
+		*o += xy->y * u;
+		*dir = sin(xy->x) * r + cos(xy->x) * d;
 		return true;
 	default:                  /* CAMERA_CYLINDER_4: as 2, the rays parallel along right */
-		*o += (x * lr) * r;
-		*dir = sin(y * angle) * u + cos(y * angle) * d;
+		*xy = (float2)(x * lr, y * angle);
+		*o += xy->x * r;
+		*dir = sin(xy->y) * u + cos(xy->y) * d;
 		return true;
 	}
 }
 
 /* The ray of the image point (px + jx, py + jy) in pixels from the top left:
- * false where the camera makes none. dir is not normalized. */
-static inline bool camera_ray(global const dev_params *p, int px, int py, float jx, float jy, float3 *o, float3 *dir)
+ * false where the camera makes none. dir is not normalized. xy is the point
+ * where a camera's normal perturbs the ray (POV-Ray's x0, y0 as its type
+ * leaves them: the image point, or the angles made from it). */
+static inline bool camera_ray(global const dev_params *p, int px, int py, float jx, float jy, float3 *o, float3 *dir,
+                              float2 *xy)
 {
 	float x = ((float)px + jx) / (float)p->width - 0.5f;
 	float y = 0.5f - ((float)py + jy) / (float)p->height;
 	int type = (int)p->lens.z;
 	*o = p->cam_location.xyz;
+	*xy = (float2)(x, y);
 	switch (type) {
 	case CAMERA_PERSPECTIVE:
 		*dir = p->cam_direction.xyz + x * p->cam_right.xyz + y * p->cam_up.xyz;
@@ -142,13 +166,15 @@ static inline bool camera_ray(global const dev_params *p, int px, int py, float 
 		*dir = p->cam_direction.xyz;
 		return true;
 	case CAMERA_PANORAMIC:
+		*xy = (float2)((0.5f - x) * M_PI_F, M_PI_F * y);
 		*dir = camera_panoramic(p, x, y);
 		return true;
 	case CAMERA_SPHERICAL:
+		*xy = (float2)(x * p->cam_right.w, y * p->cam_up.w);
 		*dir = camera_spherical(p, x, y);
 		return true;
 	default:
-		return camera_bent(p, type, x, y, o, dir);
+		return camera_bent(p, type, x, y, o, dir, xy);
 	}
 }
 

@@ -2,11 +2,13 @@
  * mesh_camera reads the rays lower_camera_mesh.c made for each pixel; the
  * other types are camera.cl's. With several rays a pixel, a sample's
  * sub-pixel place picks its ray, so the samples share the rays out evenly. */
-static inline bool camera_view(const scene_data *sc, int px, int py, float jx, float jy, float3 *o, float3 *dir)
+static inline bool camera_view(const scene_data *sc, int px, int py, float jx, float jy, float3 *o, float3 *dir,
+                               float2 *xy)
 {
 	global const dev_params *p = sc->p;
+	*xy = (float2)(0.0f);   /* POV-Ray's image point of a mesh camera's ray */
 	if ((int)p->lens.z != CAMERA_MESH)
-		return camera_ray(p, px, py, jx, jy, o, dir);
+		return camera_ray(p, px, py, jx, jy, o, dir, xy);
 	int rays = (int)p->lens.w;
 	int r = clamp((int)(jx * (float)rays), 0, rays - 1);
 	global const float4 *ray = sc->camera_rays + (((size_t)r * p->height + py) * p->width + px) * 2;

@@ -35,9 +35,11 @@ static inline float3 path_radiance(const scene_data *sc, int px, int py, uint ke
 {
 	global const dev_params *p = sc->p;
 	float3 o, d;
-	if (!camera_view(sc, px, py, rng_uniform(key, 0), rng_uniform(key, 1), &o, &d))
+	float2 xy;
+	if (!camera_view(sc, px, py, rng_uniform(key, 0), rng_uniform(key, 1), &o, &d, &xy))
 		return (float3)(0.0f);   /* no ray there: POV-Ray's pixel is black */
 	o = camera_lens(p, o, &d, light_square_to_disc(rng_uniform(key, 2), rng_uniform(key, 3)));
+	d = camera_perturb(sc, xy, d);
 	float3 radiance = (float3)(0.0f), beta = (float3)(1.0f), sigma = (float3)(0.0f);
 	float last_pdf = 0.0f;   /* 0: the last bounce was a single direction, or the camera */
 	bool reflected = false;

@@ -488,6 +488,9 @@ typedef struct {
 	                     * camera ray inside one */
 	int atmosphere, n_atmosphere;  /* the scene-level media's dev_media records */
 	int sky_sampled;    /* 1: the path tracer samples the sky by sky_dist (kernels/sky_sample.cl) */
+	int camera_normal;  /* the camera's normal { }: the pattern (dev_pattern) that perturbs every
+	                     * camera ray's direction (kernels/texture.cl, camera_perturb), or -1 */
+	int pad_params[3];
 } dev_params;
 /* SCENE_SHADOWS_PASS: some surface lets shadow rays through (no_shadow, filter,
  * transmit), so shadow rays look at what they meet instead of stopping at the first.

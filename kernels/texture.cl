@@ -209,6 +209,17 @@ static float3 texture_normal(const scene_data *sc, int normal, float3 x, float2 
 	return length(sum) > 0.0f ? normalize(sum) : n;
 }
 
+/* A camera's normal { } turns each camera ray's direction as a surface's
+ * turns its normal, at POV-Ray's image point of the ray (camera_ray's xy, z
+ * 0): its TracePixel::CreateCameraRay, after the focal blur. */
+static inline float3 camera_perturb(const scene_data *sc, float2 xy, float3 d)
+{
+	int normal = sc->p->camera_normal;
+	if (normal < 0)
+		return d;
+	return normalize(texture_normal(sc, normal, (float3)(xy, 0.0f), (float2)(0.0f), normalize(d)));
+}
+
 #define TEXTURE_STACK 8   /* nested pigments waiting; lower.c keeps maps shallower */
 
 /* The pigment whose pattern is root at p (world space: each pattern's rows

@@ -75,13 +75,15 @@ static inline bool whitted_camera(const scene_data *sc, real x, real y, int ray_
 	if ((int)p->lens.z == CAMERA_MESH) {   /* a face a pixel: the pixel the point is in */
 		int px = clamp((int)floor(ix), 0, p->width - 1), py = clamp((int)floor(iy), 0, p->height - 1);
 		int rays = max((int)p->lens.w, 1);
-		if (!camera_view(sc, px, py, ((float)ray_number + 0.5f) / (float)rays, 0.5f, o, d))
+		float2 xy;
+		if (!camera_view(sc, px, py, ((float)ray_number + 0.5f) / (float)rays, 0.5f, o, d, &xy))
 			return false;
-		*d = normalize(*d);
+		*d = camera_perturb(sc, xy, normalize(*d));
 		return true;
 	}
 	int px = (int)floor(ix), py = (int)floor(iy);
-	if (!camera_ray(p, px, py, (float)(ix - (real)px), (float)(iy - (real)py), o, d))
+	float2 xy;
+	if (!camera_ray(p, px, py, (float)(ix - (real)px), (float)(iy - (real)py), o, d, &xy))
 		return false;
 	if (p->lens.x > 0.0f) {
 		global const float4 *lens = sc->camera_rays;
@@ -93,7 +95,7 @@ static inline bool whitted_camera(const scene_data *sc, real x, real y, int ray_
 		*o += defl;
 		*d = *d * xperp.w - defl;
 	}
-	*d = normalize(*d);
+	*d = camera_perturb(sc, xy, normalize(*d));
 	return true;
 }
 

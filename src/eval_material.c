@@ -1440,13 +1440,9 @@ static bool ignored_item(struct eval *e, const ast_node *item)
 /* normal { [NORMAL_IDENTIFIER] [PATTERN [Amount]] [bump_size Amount]
  *          [accuracy Accuracy] [PATTERN_MODIFIER...] [TRANSFORMATION...] }:
  * the pattern perturbs the surface normal where the kernels shade
- * (pattern_perturb). m is NULL for a camera's normal, which eclat ignores. */
+ * (pattern_perturb); a camera's perturbs its rays (eval_world.c). */
 static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 {
-	if (!m) {
-		eval_warn_once(e, b->loc, "camera normal", "a camera's 'normal' is not supported yet; ignored");
-		return 0;
-	}
 	struct pattern p = { .kind = -1 };
 	struct cursor c;
 	int err = 0, rc = 0;

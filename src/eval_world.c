@@ -294,8 +294,13 @@ static int camera_item(struct eval *e, struct cursor *c, const ast_node *item, s
 		return rc;
 	if (item->kind == AST_ARG && (rc = camera_float(e, c, item, ci)) <= 0)
 		return rc;
-	if (item->kind == AST_BLOCK && item->kw == KW_NORMAL)
-		return eval_material_block(e, item, NULL);
+	if (item->kind == AST_BLOCK && item->kw == KW_NORMAL) {   /* perturbs the rays (kernels/texture.cl) */
+		scene_material m = scene_default_material();
+		if (eval_material_block(e, item, &m))
+			return -1;
+		ci->c.normal = m.normal;
+		return 0;
+	}
 	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_MESH_CAMERA) == 0)
 		return eval_camera_mesh(e, item, &ci->c);
 	return eval_not_valid(e, item, "a camera");

@@ -29,7 +29,7 @@ _Static_assert(sizeof(dev_pattern) == 144 && offsetof(dev_pattern, params) == 80
 _Static_assert(sizeof(dev_map_entry) == 32, "dev_map_entry is 32 bytes");
 _Static_assert(sizeof(dev_image) == 16, "dev_image is 16 bytes");
 _Static_assert(sizeof(dev_emitter) == 16, "dev_emitter is 16 bytes");
-_Static_assert(sizeof(dev_params) == 192, "dev_params is 192 bytes");
+_Static_assert(sizeof(dev_params) == 208, "dev_params is 208 bytes");
 _Static_assert(sizeof(dev_fog) == 80 && offsetof(dev_fog, distance) == 48, "dev_fog layout");
 _Static_assert(sizeof(dev_media) == 128 && offsetof(dev_media, method) == 80, "dev_media layout");
 _Static_assert(sizeof(dev_sky) == 112 && offsetof(dev_sky, width) == 96, "dev_sky layout");
@@ -1029,6 +1029,9 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	}
 	xform world = scene_xform_identity();
 	int n_atmosphere, atmosphere = lower_media(&lw.textures, s, s->atmosphere, &world, &n_atmosphere);
+	/* the camera's normal, in the space of its image points: only its own transformations */
+	int camera_normal = s->camera.normal >= 0 && s->camera.normal < s->n_pigments
+	                    ? lower_texture_pigment(&lw.textures, s, s->camera.normal) : -1;
 	lower_textures_append(&lw.textures, &lw.mats, &lw.n_mats);
 	out->materials = lw.mats;
 	out->n_materials = lw.n_mats;
@@ -1051,6 +1054,7 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	out->params.atmosphere = atmosphere;
 	out->params.n_atmosphere = n_atmosphere;
 	out->params.camera_solids = out->n_fogs || out->textures.n_media ? lower_camera_solids(s) : 0;
+	out->params.camera_normal = camera_normal;
 	lower_media_warn_open(s);
 	if (rc == 0 && join(&lw, s, out))
 		rc = -1;

@@ -331,6 +331,7 @@ scene_camera scene_default_camera(void)
 		.angle = 90,
 		.h_angle = 360,
 		.v_angle = 180,
+		.normal = -1,
 	};
 }
 

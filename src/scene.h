@@ -321,6 +321,8 @@ typedef struct {
 	int mesh_first, mesh_count, mesh_rays, mesh_method;
 	double mesh_max_distance;
 	bool mesh_smooth;
+	int normal;             /* normal { }: its pattern (scene.pigments), which perturbs each ray's
+	                         * direction at POV-Ray's image point of the ray, or -1: none */
 } scene_camera;
 
 /* A mesh of a mesh_camera: scene.meshes[mesh] placed by xf. */
