@@ -813,7 +813,7 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	catch_signals();
 	int ran = -1;   /* 1: failed after some passes, whose samples f holds */
 	int several = o->n_devices < 0 || o->n_devices > 1;
-	if (window && !several) {   /* several devices' films add up only at the end */
+	if (window) {   /* several devices: render_multi adds their films up for it */
 		rs.on_show = show_film;
 		rs.show_ctx = window;
 		rs.show_every = PREVIEW_EVERY;

@@ -245,6 +245,28 @@ static int launch_whitted(struct pass_loop *pl, size_t first, size_t n, size_t l
 	return 0;
 }
 
+/* The Whitted integrator's anti-aliased pass (render_aa.c). When a window shows
+ * the render, in about 16 bands of whole blocks of rows (method 1's blocks
+ * start at the first row, so each band's pixels are the whole pass's), each
+ * shown as it ends. */
+static int launch_whitted_aa(struct pass_loop *pl, int count)
+{
+	const render_settings *rs = pl->rs;
+	int first = rs->rows ? rs->row_first : 0, rows = rs->rows ? rs->rows : rs->height, band = rows;
+	if (rs->on_show && pl->st->samples == 0 && count == rs->samples)
+		band = ((rows + 15) / 16 + RENDER_AA_BLOCK - 1) / RENDER_AA_BLOCK * RENDER_AA_BLOCK;
+	for (int done = 0; done < rows; done += band) {
+		render_settings part = *rs;
+		part.row_first = first + done;
+		part.rows = rows - done < band ? rows - done : band;
+		if (render_aa_pass(pl->d, pl->prog, pl->bufs, BUF_COUNT, &part))
+			return -1;
+		if (done + part.rows < rows && show(pl, count) < 0)
+			return -1;
+	}
+	return 0;
+}
+
 /* ECLAT_TEST_FAIL_PASS=N makes pass N (from 1) fail as a lost device would, so
  * that tests can check that the samples before it are kept. */
 static int injected_failure(void)
@@ -276,7 +298,7 @@ static int run_pass(struct pass_loop *pl, int base, int count)
 	size_t first = rs->rows ? (size_t)rs->row_first * rs->width : 0;
 	size_t n = rs->rows ? (size_t)rs->rows * rs->width : pl->npix;
 	if (pl->params.integrator == INTEGRATOR_WHITTED && rs->aa_method > 0) {
-		if (render_aa_pass(pl->d, pl->prog, pl->bufs, BUF_COUNT, rs))
+		if (launch_whitted_aa(pl, count))
 			return -1;
 	} else if (pl->params.integrator == INTEGRATOR_WHITTED) {
 		if (launch_whitted(pl, first, n, WHITTED_GROUP, count))

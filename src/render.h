@@ -73,16 +73,20 @@ double render_rays(const render_stats *st);
 /* Seconds on a monotonic clock. */
 double render_now(void);
 
+/* One pass of the Whitted integrator's anti-aliasing over rs's rows into the
+ * film buffer, whose kernels take bufs[0 .. n_bufs - 1] first (render_aa.c).
+ * Method 1 supersamples in blocks of RENDER_AA_BLOCK rows and columns from the
+ * first row (kernels/whitted_pixel.cl's WHITTED_AA_BLOCK), so rows split at
+ * block edges give the same pixels. Returns 0, or -1 after printing the
+ * OpenCL error. */
+#define RENDER_AA_BLOCK 32
+int render_aa_pass(device_ctx *d, cl_program prog, const cl_mem *bufs, int n_bufs, const render_settings *rs);
+
 /* Renders up to rs->samples samples per pixel into f (film_init'ed here). Returns
  * 0 with f holding the samples done (fewer when stopped or out of time), or -1
  * after printing the OpenCL error. A failure after some passes that still lets
  * the film be read back returns 1, with f holding the samples before it: no
  * lost work. */
-/* One pass of the Whitted integrator's anti-aliasing over rs's rows into the
- * film buffer, whose kernels take bufs[0 .. n_bufs - 1] first (render_aa.c).
- * Returns 0, or -1 after printing the OpenCL error. */
-int render_aa_pass(device_ctx *d, cl_program prog, const cl_mem *bufs, int n_bufs, const render_settings *rs);
-
 int render_run(device_ctx *d, cl_program prog, lower_result *lr, const render_settings *rs, film *f,
                render_stats *st);
 

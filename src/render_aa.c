@@ -8,7 +8,6 @@
 #include "render.h"
 
 #define AA_GROUP 16      /* as the Whitted kernel's: private stacks stay small on PoCL */
-#define AA_BLOCK 32      /* WHITTED_AA_BLOCK */
 
 static size_t round_up(size_t n)
 {
@@ -65,7 +64,8 @@ int render_aa_pass(device_ctx *d, cl_program prog, const cl_mem *bufs, int n_buf
 	if (scratch && err == CL_SUCCESS)
 		err = run(d, k_grid, bufs, n_bufs, scratch, first_row, rows, &method, sizeof method, grid);
 	if (scratch && err == CL_SUCCESS) {
-		size_t blocks = (size_t)((rs->width + AA_BLOCK - 1) / AA_BLOCK) * ((rows + AA_BLOCK - 1) / AA_BLOCK);
+		size_t blocks = (size_t)((rs->width + RENDER_AA_BLOCK - 1) / RENDER_AA_BLOCK) *
+		                ((rows + RENDER_AA_BLOCK - 1) / RENDER_AA_BLOCK);
 		err = run(d, k_aa, bufs, n_bufs, scratch, first_row, rows, &aa, sizeof aa,
 		          rs->aa_method == 1 ? blocks : pixels);
 	}
