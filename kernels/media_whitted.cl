@@ -7,8 +7,8 @@
  * interval is sampled by method 3 (adaptive, as POV-Ray 3.7.0 does it:
  * samples / 2 + 1 sub-intervals, each end sampled and the middle refined while
  * neighbours differ by more than aa_threshold, down aa_level) or by methods 1
- * and 2 (samples stratified in each interval, without POV-Ray's extra samples
- * for the variance); a sample's colour is the emission plus, for every
+ * and 2 (samples stratified in each interval, then POV-Ray's extra samples
+ * while the variance of their mean is high); a sample's colour is the emission plus, for every
  * light_source that lights it, the light reaching the point (shadowed, and
  * dimmed by the media on its way) times POV-Ray's phase function, averaged
  * over the media, times the scattering. */
@@ -236,25 +236,50 @@ static inline void media_interval3(const scene_data *sc, const media_list *l, me
 	*od = sum_od * n;
 }
 
+/* POV-Ray's Sample_Threshold for k samples: the chi-square quantile at the
+ * media's confidence for k degrees of freedom (exact for 1, Wilson and
+ * Hilferty's approximation above, within 7% at 2 and closer after), scaled. */
+static inline float media_threshold(global const dev_media *im, int k)
+{
+	if (k <= 1)
+		return im->sampling.w * im->chi_1;
+	float a = 2.0f / (9.0f * (float)k), c = 1.0f - a + im->chi_z * sqrt(a);
+	return im->sampling.w * (float)k * fmax(c, 0.0f) * c * c;
+}
+
 /* One interval by methods 1 and 2: min_samples stratified samples (random
  * within their strata by jitter; method 1: anywhere in the interval), each
- * attenuated from the interval's start as POV-Ray's regular sampling does. */
+ * attenuated from the interval's start as POV-Ray's regular sampling does;
+ * then, up to max_samples, more at random while the variance of their mean
+ * in some channel is at its threshold or over (POV-Ray's confidence test). */
 static inline void media_interval12(const scene_data *sc, const media_list *l, media_stack s, float3 o, float3 d, float s0,
                              float ds, const media_spans *lit, global const dev_media *im, float3 *te, float3 *od,
                              uint *rnd)
 {
-	int n = max(1, im->min_samples);
-	float3 sum_te = (float3)(0.0f), sum_od = (float3)(0.0f);
-	for (int j = 0; j < n; j++) {
-		float u = im->method == 1 ? media_jitter(rnd) + 0.5f
-		                          : ((float)j + 0.5f + im->sampling.x * (media_jitter(rnd) + 0.5f)) / (float)n;
+	int n = max(1, im->min_samples), k = 0;
+	float3 sum_te = (float3)(0.0f), sum_te2 = (float3)(0.0f), sum_od = (float3)(0.0f);
+	for (;;) {
+		if (k >= n) {   /* the extra samples: ComputeMediaRegularSampling */
+			if (im->max_samples <= n || k > im->max_samples)
+				break;
+			float inv = 1.0f / (float)k;
+			float3 va = (sum_te2 * inv - (sum_te * inv) * (sum_te * inv)) * inv;
+			float th = media_threshold(im, k);
+			if (!(va.x >= th || va.y >= th || va.z >= th))
+				break;
+		}
+		float u = im->method == 1 || k >= n ? media_jitter(rnd) + 0.5f
+		                                    : ((float)k + 0.5f + im->sampling.x * (media_jitter(rnd) + 0.5f)) / (float)n;
 		float3 o1;
 		float3 c = media_sample(sc, l, s, o, d, s0 + u * ds, ds, lit, &o1);
-		sum_te += c * exp(-o1 * u);
+		float3 e = c * exp(-o1 * u);
+		sum_te += e;
+		sum_te2 += e * e;
 		sum_od += o1;
+		k++;
 	}
-	*te = sum_te / (float)n;
-	*od = sum_od / (float)n;
+	*te = sum_te / (float)k;
+	*od = sum_od / (float)k;
 }
 
 /* POV-Ray's ComputeMedia over (o, o + t d) for the media of l, on colour, the

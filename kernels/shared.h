@@ -395,9 +395,13 @@ typedef struct {
 	                      * w * the largest channel of absorption + scattering) */
 	float4 scattering;   /* rgb; w: scattering's share of the extinction */
 	float4 density_rgb;  /* rgb: the constant densities' product; w: 1 */
-	float4 sampling;     /* x: jitter, y: aa_threshold, z: ratio */
+	float4 sampling;     /* x: jitter, y: aa_threshold, z: ratio, w: see chi_1 */
 	int method, intervals, min_samples, max_samples;
-	int aa_level, type, pad[2];
+	int aa_level, type;
+	float chi_1, chi_z;  /* methods 1 and 2's extra samples (kernels/media_whitted.cl): the
+	                      * chi-square quantile at confidence for 1 degree of freedom, and
+	                      * the normal one Wilson and Hilferty's approximation takes for more;
+	                      * sampling.w: variance over the quantile at max_samples - 1 */
 	int density[MEDIA_DENSITIES];
 } dev_media;
 

@@ -143,6 +143,11 @@ int lower_sky_table(const float *weight, int width, int height, const float rows
 /* A mesh_camera's rays for an image of width x height into out->camera_rays
  * (lower_camera_mesh.c); nothing for the other cameras. -1 after an error. */
 int lower_camera_mesh(const scene *s, int width, int height, lower_result *out);
+/* Cephes' chdtri, which POV-Ray's focal blur and media use for their confidence
+ * tests: the x whose upper tail of the chi-square distribution with df degrees
+ * of freedom is y (lower_camera_lens.c). */
+double lower_chdtri(double df, double y);
+
 /* The Whitted integrator's focal blur (lower_camera_lens.c): the lens's samples
  * and its confidence test's thresholds into out->camera_rays, when the camera
  * blurs (out->params.lens.x > 0; never a mesh_camera). -1 after an error. */

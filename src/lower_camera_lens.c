@@ -74,10 +74,9 @@ static double gamma_q(double a, double x)
 	return exp(lead) * h;
 }
 
-/* Cephes' chdtri, which POV-Ray uses: the x whose upper tail of the chi-square
- * distribution with df degrees of freedom is y. Found by bisection, since Q
+/* Cephes' chdtri, which POV-Ray uses (lower.h). Found by bisection, since Q
  * falls with x. */
-static double chdtri(double df, double y)
+double lower_chdtri(double df, double y)
 {
 	double lo = 0, hi = df + 10;
 	while (gamma_q(df / 2, hi / 2) > y)
@@ -213,9 +212,9 @@ int lower_camera_lens(const scene *s, lower_result *out)
 	t[0] = (float4){ (float)x[0], (float)x[1], (float)x[2], (float)(dl > 0 ? focal / dl : focal) };
 	t[1] = (float4){ (float)y[0], (float)y[1], (float)y[2], max_jitter };
 	t[2] = (float4){ (float)n, (float)c->blur_samples_min, 0, 0 };
-	double t1 = n > 1 ? c->variance / chdtri(n - 1, c->confidence) : 0;
+	double t1 = n > 1 ? c->variance / lower_chdtri(n - 1, c->confidence) : 0;
 	for (int i = 0; i < n; i++)
-		t[LENS_HEADER + i].z = n > 1 ? (float)(t1 * chdtri(i + 1, c->confidence)) : 0;
+		t[LENS_HEADER + i].z = n > 1 ? (float)(t1 * lower_chdtri(i + 1, c->confidence)) : 0;
 	out->camera_rays = t;
 	out->n_camera_rays = n + LENS_HEADER;
 	return 0;

@@ -41,6 +41,33 @@ static float density_bound(const lower_textures *lt, int pattern, int depth)
 	return b;
 }
 
+/* The normal distribution's quantile p, by bisection on erfc. */
+static double normal_quantile(double p)
+{
+	double lo = -40, hi = 40;
+	for (int i = 0; i < 200; i++) {
+		double mid = 0.5 * (lo + hi);
+		if (0.5 * erfc(-mid / sqrt(2)) < p)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return 0.5 * (lo + hi);
+}
+
+/* What methods 1 and 2's extra samples need (POV-Ray's Sample_Threshold: the
+ * variance over the chi-square quantile at confidence for max_samples - 1
+ * degrees of freedom, times that for the samples so far). */
+static void extra_samples(const scene_media *m, dev_media *d)
+{
+	if (m->max_samples <= 1)
+		return;
+	double q = lower_chdtri(m->max_samples - 1, m->confidence);
+	d->sampling.w = (float)(q > 0 ? m->variance / q : m->variance * 1e-10);
+	d->chi_1 = (float)lower_chdtri(1, m->confidence);
+	d->chi_z = (float)normal_quantile(1 - m->confidence);
+}
+
 static dev_media lower_one_media(lower_textures *lt, const scene *s, const scene_media *m, const xform *to_world)
 {
 	dev_media d = {
@@ -59,6 +86,7 @@ static dev_media lower_one_media(lower_textures *lt, const scene *s, const scene
 		.type = m->type >= MEDIA_ISOTROPIC && m->type <= MEDIA_HG ? m->type : MEDIA_ISOTROPIC,
 		.density = { -1, -1, -1, -1 },
 	};
+	extra_samples(m, &d);
 	xform place = scene_xform_then(&m->xf, to_world);
 	int n = 0;
 	for (int k = 0; k < m->n_density && k < MEDIA_DENSITIES; k++) {
