@@ -5,9 +5,11 @@
  * (image_value), a bump_map a tilt of the normal (image_bump), a
  * material_map the entry of its map (image_material). The pattern's
  * params[0] say which image and how: x the dev_image, y map_type, z
- * interpolate, w once.
+ * interpolate, w once. A density_file's voxels are an image too, four
+ * voxels to a texel (density_file_value).
  *
- * Exported: image_pos, image_at, image_value, image_bump, image_material. */
+ * Exported: image_pos, image_at, image_value, image_bump, image_material,
+ * density_file_value. */
 
 /* POV-Ray's wrap: v into [0, n). */
 static inline float image_wrap(float v, float n)
@@ -187,4 +189,73 @@ static float image_material(const scene_data *sc, global const dev_pattern *pt, 
 	if (n > count)
 		n = fmod(n, count);
 	return fmin(n, count - 1.0f);
+}
+
+/* ---- density_file: a df3 file's voxels (src/eval_df3.c) ----
+ * params[0].x the dev_image, yzw the sizes nx, ny, nz; params[1].x the
+ * interpolation: 0 nearest, 1 trilinear, 2 tricubic. Voxel x + nx (y + ny z)
+ * is component i % 4 of texel i / 4. */
+
+static inline float df3_voxel(const scene_data *sc, int first, int nx, int ny, int x, int y, int z)
+{
+	int i = (z * ny + y) * nx + x;
+	float4 t = sc->texels[first + (i >> 2)];
+	int k = i & 3;
+	return k == 0 ? t.x : k == 1 ? t.y : k == 2 ? t.z : t.w;
+}
+
+/* POV-Ray's neighbour of a voxel for the tricubic: i + 1, i + 2 wrap around;
+ * i - 1 below 0 is POV-Ray's unsigned -1 taken modulo n (its size_t test for
+ * a negative index never holds), which we follow to give its pixels. */
+static inline int df3_wrap(int i, int n)
+{
+	return i < 0 ? (int)(0xFFFFFFFFFFFFFFFFUL % (ulong)n) : i % n;
+}
+
+/* POV-Ray's cubic through fa, fb, fc, fd at t in [0, 1] between fb and fc. */
+static inline float df3_cubic(float t, float fa, float fb, float fc, float fd)
+{
+	float b = (fc - fa) * 0.5f, d = (fd - fb) * 0.5f;
+	float e = 2.0f * (fb - fc) + b + d, f = -3.0f * (fb - fc) - 2.0f * b - d;
+	return ((e * t + f) * t + b) * t + fb;
+}
+
+/* The density at p (warped): the unit cube holds the voxels, 0 outside it. */
+static float density_file_value(const scene_data *sc, global const dev_pattern *pt, float3 p)
+{
+	if (!(p.x >= 0.0f && p.x < 1.0f && p.y >= 0.0f && p.y < 1.0f && p.z >= 0.0f && p.z < 1.0f))
+		return 0.0f;
+	int first = sc->images[(int)pt->params[0].x].first;
+	int nx = (int)pt->params[0].y, ny = (int)pt->params[0].z, nz = (int)pt->params[0].w;
+	int mode = (int)pt->params[1].x;
+	float xx = p.x * (float)nx, yy = p.y * (float)ny, zz = p.z * (float)nz;
+	/* a point a hair below 1 can round to the size: the last voxel */
+	int x1 = min((int)xx, nx - 1), y1 = min((int)yy, ny - 1), z1 = min((int)zz, nz - 1);
+	if (mode == 0)
+		return df3_voxel(sc, first, nx, ny, x1, y1, z1);
+	float a = xx - floor(xx), b = yy - floor(yy), c = zz - floor(zz), v;
+	if (mode == 1) {   /* trilinear, the far neighbours wrapped as POV-Ray does */
+		int x2 = (x1 + 1) % nx, y2 = (y1 + 1) % ny, z2 = (z1 + 1) % nz;
+		float f111 = df3_voxel(sc, first, nx, ny, x1, y1, z1), f112 = df3_voxel(sc, first, nx, ny, x2, y1, z1);
+		float f121 = df3_voxel(sc, first, nx, ny, x1, y2, z1), f122 = df3_voxel(sc, first, nx, ny, x2, y2, z1);
+		float f211 = df3_voxel(sc, first, nx, ny, x1, y1, z2), f212 = df3_voxel(sc, first, nx, ny, x2, y1, z2);
+		float f221 = df3_voxel(sc, first, nx, ny, x1, y2, z2), f222 = df3_voxel(sc, first, nx, ny, x2, y2, z2);
+		v = ((f111 * (1.0f - a) + f112 * a) * (1.0f - b) + (f121 * (1.0f - a) + f122 * a) * b) * (1.0f - c) +
+		    ((f211 * (1.0f - a) + f212 * a) * (1.0f - b) + (f221 * (1.0f - a) + f222 * a) * b) * c;
+	} else {           /* tricubic: along z, then y, then x */
+		int k0 = df3_wrap(z1 - 1, nz), k1 = df3_wrap(z1, nz), k2 = df3_wrap(z1 + 1, nz), k3 = df3_wrap(z1 + 2, nz);
+		float row[4];
+		for (int i = 0; i < 4; i++) {
+			int ii = df3_wrap(x1 + i - 1, nx);
+			float col[4];
+			for (int j = 0; j < 4; j++) {
+				int jj = df3_wrap(y1 + j - 1, ny);
+				col[j] = df3_cubic(c, df3_voxel(sc, first, nx, ny, ii, jj, k0), df3_voxel(sc, first, nx, ny, ii, jj, k1),
+				                   df3_voxel(sc, first, nx, ny, ii, jj, k2), df3_voxel(sc, first, nx, ny, ii, jj, k3));
+			}
+			row[i] = df3_cubic(b, col[0], col[1], col[2], col[3]);
+		}
+		v = df3_cubic(a, row[0], row[1], row[2], row[3]);
+	}
+	return fmax(v, 0.0f);
 }

@@ -235,6 +235,7 @@ enum {                       /* ORDER: the names in src/eval_pattern.c */
 	PATTERN_IMAGE_PATTERN,   /* an image's grey (or alpha) as the value: image.cl */
 	PATTERN_BUMP_MAP,    /* a normal only, from an image's greys: image.cl */
 	PATTERN_MATERIAL_MAP,   /* a texture's: an image's material numbers pick textures: image.cl */
+	PATTERN_DENSITY_FILE,   /* a df3 file's voxels in the unit cube: image.cl */
 	PATTERN_COUNT
 };
 /* POV-Ray's wave types, applied to a continuous pattern's value. */
@@ -307,6 +308,9 @@ typedef struct {
  *   material_map: params[0] as image_map's, the image's texels' x its
  *              material numbers (lower_texture.c); its map, the textures at
  *              0, 1, 2...
+ *   density_file: params[0].x the voxels' dev_image (four voxels a texel,
+ *              src/eval_df3.c), yzw the sizes nx, ny, nz; params[1].x the
+ *              interpolation (0 nearest, 1 trilinear, 2 tricubic)
  *   function:  params[0].x the scene's function (scene.functions)
  *   slope:     params[0].xyz the slope's unit direction, params[1].xyz the
  *              altitude's, each times its share of their summed lengths;

@@ -109,24 +109,31 @@ static inline pigment_colour texture_image(const scene_data *sc, global const de
 	return out;
 }
 
-/* A pattern's value at q (its space, before its warps): pattern_value, or an
- * image_pattern's, which reads the image (frequency, phase and wave after it,
- * as POV-Ray's Evaluate_TPat). */
+/* The value of a pattern that reads an image (image_pattern, density_file)
+ * at t (warped), frequency, phase and wave after it, as POV-Ray's Evaluate_TPat. */
+static inline float texture_image_value(const scene_data *sc, global const dev_pattern *pt, float3 t)
+{
+	return pattern_wave(pt, pt->kind == PATTERN_DENSITY_FILE ? density_file_value(sc, pt, t) : image_value(sc, pt, t));
+}
+
+/* A pattern's value at q (its space, before its warps): pattern_value, or
+ * that of one that reads an image. */
 static inline float texture_value(const scene_data *sc, global const dev_pattern *pt, float3 q, float3 n, float3 d)
 {
-	if (pt->kind == PATTERN_IMAGE_PATTERN)
-		return pattern_wave(pt, image_value(sc, pt, pattern_warp_point(pt, sc->warps, q)));
+	if (pt->kind == PATTERN_IMAGE_PATTERN || pt->kind == PATTERN_DENSITY_FILE)
+		return texture_image_value(sc, pt, pattern_warp_point(pt, sc->warps, q));
 	if (pt->kind == PATTERN_MATERIAL_MAP)   /* the number of a map entry */
 		return image_material(sc, pt, pattern_warp_point(pt, sc->warps, q));
 	return pattern_value(sc, pt, q, n, d);
 }
 
 /* pattern_perturb, or the tilt of a pattern that reads an image: a
- * bump_map's, or an image_pattern's slope at POV-Ray's pyramid of points
- * (pattern_perturb's for every pattern without a normal of its own). */
+ * bump_map's, or an image_pattern's or density_file's slope at POV-Ray's
+ * pyramid of points (pattern_perturb's for every pattern without a normal of
+ * its own). */
 static inline float3 texture_perturb(const scene_data *sc, global const dev_pattern *pt, float3 x, float3 n)
 {
-	if (pt->kind != PATTERN_BUMP_MAP && pt->kind != PATTERN_IMAGE_PATTERN)
+	if (pt->kind != PATTERN_BUMP_MAP && pt->kind != PATTERN_IMAGE_PATTERN && pt->kind != PATTERN_DENSITY_FILE)
 		return pattern_perturb(sc, pt, x, n);
 	float3 v = normal_warp_in(pt, sc->warps, n);
 	float3 t = pattern_warp_point(pt, sc->warps, texture_pattern_point(pt, x));
@@ -135,7 +142,7 @@ static inline float3 texture_perturb(const scene_data *sc, global const dev_patt
 	float accuracy = pt->normal.x, k = pt->bump_size * -5.0f * (0.02f / accuracy);
 	for (int i = 0; i < 4; i++) {
 		float3 dir = normal_pyramid[i].xyz;
-		float val = pattern_wave(pt, image_value(sc, pt, t + accuracy * dir));
+		float val = texture_image_value(sc, pt, t + accuracy * dir);
 		v += k * normal_slope_map(sc->maps + pt->map_first, pt->map_count, val) * dir;
 	}
 	return normal_warp_out(pt, sc->warps, v);

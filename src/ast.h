@@ -376,6 +376,8 @@ enum kw_class {
 #define AST_WORD_IMAGE_PATTERN "image_pattern"
 #define AST_WORD_BUMP_MAP "bump_map"
 #define AST_WORD_MATERIAL_MAP "material_map"
+#define AST_WORD_DENSITY_FILE "density_file"
+#define AST_WORD_DF3 "df3"
 #define AST_WORD_PNG "png"
 #define AST_WORD_JPEG "jpeg"
 #define AST_WORD_TIFF "tiff"

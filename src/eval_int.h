@@ -289,6 +289,11 @@ int eval_bump_map(struct eval *e, const ast_node *b, scene_pigment *pg);
  * an error reported). */
 int eval_material_map(struct eval *e, const ast_node *b, scene_pigment *pg,
                       int (*texture)(struct eval *, const ast_node *, void *), void *ctx);
+/* density_file df3 "File" (eval_df3.c), item the word density_file: reads df3
+ * and the name from c, the file into the scene's images, and pg's params.
+ * interpolate N's argument arg into a density_file's pg. -1 after an error. */
+int eval_density_file(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg);
+int eval_density_file_interpolate(struct eval *e, const ast_node *arg, scene_pigment *pg);
 
 /* ---- #fopen, #read, #write, #fclose (eval_fileio.c) ---- */
 void eval_file_io(struct eval *e, const ast_node *d);

@@ -538,7 +538,7 @@ static int pattern_start(struct eval *e, struct cursor *c, const ast_node *item,
 	}
 	if (item->kind == AST_IDENT && !eval_lookup(e, item->str) && eval_pattern_kind(item->str) > 0) {
 		start_pattern(p, item, item->str);
-		return 0;
+		return p->kind == PATTERN_DENSITY_FILE ? eval_density_file(e, c, item, &p->pg) : 0;
 	}
 	bool grey = item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, "pigment_pattern") == 0;
 	if (item->kind == AST_FUNCTION || grey) {   /* function { }: the device runs it */
@@ -1044,15 +1044,6 @@ static int interior_block(struct eval *e, const ast_node *b, scene_material *m)
 /* density { [DENSITY_IDENTIFIER] [PATTERN] [COLOR_MAP] [MODIFIERS...] }: read as
  * a pigment is (POV-Ray's density_map is its colour map), white by default; a
  * media's densities multiply. */
-static bool density_file(const ast_node *b)
-{
-	for (int i = 0; i < b->n_kids; i++) {
-		const ast_node *k = b->kids[i];
-		if ((k->kind == AST_IDENT || k->kind == AST_BLOCK) && k->str && strcmp(k->str, "density_file") == 0)
-			return true;
-	}
-	return false;
-}
 
 /* density { ... } as a value (#declare D = density { }): a white pigment. */
 int eval_density_value(struct eval *e, const ast_node *b, value *out)
@@ -1068,10 +1059,6 @@ int eval_media_density(struct eval *e, const ast_node *b, scene_media *md)
 	scene_material d = scene_default_material();
 	for (int k = 0; k < 3; k++)
 		d.pigment[k] = 1;
-	if (density_file(b)) {   /* a df3 voxel file */
-		eval_warn_once(e, b->loc, "density_file", "'density_file' is not supported yet; the density is 1");
-		return 0;
-	}
 	if (pigment_block(e, b, &d, NULL))
 		return -1;
 	if (md->n_density == SCENE_MEDIA_DENSITIES) {

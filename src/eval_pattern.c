@@ -358,6 +358,13 @@ int eval_pattern_modifier(struct eval *e, struct cursor *c, const ast_node *item
 		pg->no_bump_scale = true;
 		return 0;
 	}
+	if (strcmp(name, AST_WORD_INTERPOLATE) == 0 && pg->kind == PATTERN_DENSITY_FILE) {
+		int err = 0;
+		const ast_node *arg = eval_next_expr(c, &err);
+		if (!arg && !err)
+			eval_error(e, item->loc, "'interpolate' needs a value");
+		return arg ? eval_density_file_interpolate(e, arg, pg) : -1;
+	}
 	if (strcmp(name, AST_WORD_NOISE_GENERATOR) == 0) {
 		double g;
 		if (next_float(e, c, item, &g))

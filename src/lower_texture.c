@@ -206,7 +206,8 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 		if (!sf && (e->colour[3] != 0 || e->colour[4] != 0))
 			lt->see_through = 1;
 	}
-	if (pg->kind == PATTERN_IMAGE_PATTERN || pg->kind == PATTERN_BUMP_MAP || pg->kind == PATTERN_MATERIAL_MAP)
+	if (pg->kind == PATTERN_IMAGE_PATTERN || pg->kind == PATTERN_BUMP_MAP || pg->kind == PATTERN_MATERIAL_MAP ||
+	    pg->kind == PATTERN_DENSITY_FILE)
 		lower_images(lt, s);
 	if (pg->kind == PATTERN_IMAGE_MAP) {
 		/* its one map entry is its average; texture_image reads the image */

@@ -634,7 +634,7 @@ static const char *const pattern_names[] = {
 	"triangular", "waves", "wood", "wrinkles", "image_map", "function",
 	"average", "slope",
 	"mandel", "julia", "magnet", "image_pattern", "bump_map",
-	"material_map",
+	"material_map", "density_file",
 };
 _Static_assert(sizeof pattern_names / sizeof *pattern_names == PATTERN_COUNT, "a name for each pattern");
 
