@@ -1041,10 +1041,6 @@ static int interior_block(struct eval *e, const ast_node *b, scene_material *m)
 	return material_items(e, b, m, interior_item);
 }
 
-/* density { [DENSITY_IDENTIFIER] [PATTERN] [COLOR_MAP] [MODIFIERS...] }: read as
- * a pigment is (POV-Ray's density_map is its colour map), white by default; a
- * media's densities multiply. */
-
 /* density { ... } as a value (#declare D = density { }): a white pigment. */
 int eval_density_value(struct eval *e, const ast_node *b, value *out)
 {
@@ -1054,6 +1050,9 @@ int eval_density_value(struct eval *e, const ast_node *b, value *out)
 	return pigment_block(e, b, &out->mat, NULL);
 }
 
+/* density { [DENSITY_IDENTIFIER] [PATTERN] [COLOR_MAP] [MODIFIERS...] }: read as
+ * a pigment is (POV-Ray's density_map is its colour map), white by default; a
+ * media's densities multiply. */
 int eval_media_density(struct eval *e, const ast_node *b, scene_media *md)
 {
 	scene_material d = scene_default_material();
