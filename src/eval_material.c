@@ -1423,10 +1423,25 @@ static bool ignored_item(struct eval *e, const ast_node *item)
 	       item->kind == AST_FLAG || eval_transform_item(e, NULL, item, &t) > 0;
 }
 
+/* p as a copy of the normal pattern base (its slope_map too), started at at. */
+static void copy_normal(struct eval *e, struct pattern *p, int base_index, const ast_node *at)
+{
+	const scene_pigment *base = &e->s->pigments[base_index];
+	p->at = at;
+	p->kind = base->kind;
+	p->pg = *base;
+	p->pg.map = base->n_map ? eval_xrealloc(NULL, base->n_map * sizeof *base->map) : NULL;
+	if (base->n_map)
+		memcpy(p->pg.map, base->map, base->n_map * sizeof *base->map);
+}
+
 /* normal { [NORMAL_IDENTIFIER] [PATTERN [Amount]] [bump_size Amount]
  *          [accuracy Accuracy] [PATTERN_MODIFIER...] [TRANSFORMATION...] }:
  * the pattern perturbs the surface normal where the kernels shade
- * (pattern_perturb); a camera's perturbs its rays (eval_world.c). */
+ * (pattern_perturb); a camera's perturbs its rays (eval_world.c). Without a
+ * pattern of its own it modifies the normal m has (normal { slope_map { } }
+ * after a texture's normal), as POV-Ray's does; a new pattern is placed by
+ * its own transformations only, not by those m's texture took before it. */
 static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 {
 	struct pattern p = { .kind = -1 };
@@ -1434,6 +1449,8 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 	int err = 0, rc = 0;
 	bool first = true, amount = false;
 	const ast_node *item;
+	if (m->normal >= 0 && m->normal < e->s->n_pigments)
+		copy_normal(e, &p, m->normal, b);
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
 		value v;
@@ -1453,13 +1470,8 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		if (first && AST_IS_EXPRESSION(item->kind) && !eval_pov_word_item(e, item) &&
 		    (item->kind != AST_IDENT || eval_lookup(e, item->str))) {   /* a declared normal */
 			if ((rc = eval_expect_kind(e, item, V_NORMAL, &v)) == 0 && v.mat.normal >= 0) {
-				p.at = item;
-				p.kind = e->s->pigments[v.mat.normal].kind;
-				const scene_pigment *base = &e->s->pigments[v.mat.normal];
-				p.pg = *base;   /* its slope_map too */
-				p.pg.map = base->n_map ? eval_xrealloc(NULL, base->n_map * sizeof *base->map) : NULL;
-				if (base->n_map)
-					memcpy(p.pg.map, base->map, base->n_map * sizeof *base->map);
+				free(p.pg.map);   /* the normal m had, replaced */
+				copy_normal(e, &p, v.mat.normal, item);
 				amount = true;
 			}
 		} else if ((rc = pattern_start(e, &c, item, &p)) <= 0) {
@@ -1514,10 +1526,17 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 	if (p.at && p.kind < 0 && p.name[0])
 		eval_warn_once(e, p.at->loc, p.name, "pattern '%s' is not supported yet in a normal; ignored", p.name);
 	p.pg.uv |= p.uv;
-	if (p.at && p.kind > 0)
+	xform id = scene_xform_identity();
+	bool moved = p.at != b && m->uv == SCENE_UV_NONE && !p.pg.uv && memcmp(&m->tex_xf, &id, sizeof id) != 0;
+	if (p.at && p.kind > 0) {
 		m->normal = scene_add_pigment(e->s, &p.pg);
-	else
+		if (moved) {   /* so that tex_xf brings it back to where it is written */
+			xform back = eval_xform_inverse(&m->tex_xf);
+			return eval_pattern_transform(e, &e->s->pigments[m->normal], &back, b->loc);
+		}
+	} else {
 		free(p.pg.map);
+	}
 	return 0;
 }
 

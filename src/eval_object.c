@@ -355,30 +355,12 @@ static void object_uv(scene_material *m)
 	m->uv_xf = m->tex_xf;
 }
 
-/* A pattern that a pigment or normal written after the object's
- * transformations gave m (new, not the one m had: old): placed by its own
- * transformations only, as POV-Ray places it, though m's texture space has
- * moved with those transformations (tex_xf), so it starts in the world. */
-static int unmoved_pattern(struct eval *e, const ast_node *item, const scene_material *m, int old, int now)
-{
-	xform id = scene_xform_identity();
-	if (now < 0 || now == old || m->uv != SCENE_UV_NONE || !memcmp(&m->tex_xf, &id, sizeof id))
-		return 0;
-	xform back = eval_xform_inverse(&m->tex_xf);
-	return eval_pattern_transform(e, &e->s->pigments[now], &back, item->loc);
-}
-
 static int material_modifier(struct eval *e, const ast_node *item, struct objval *o)
 {
 	bool textured;
 	scene_material *m = target(e, o, &textured);
 	if (item->kw != KW_TEXTURE && item->kw != KW_MATERIAL) {
-		int pattern = m->pattern, normal = m->normal;
 		int rc = eval_material_block(e, item, m);
-		if (rc == 0 && textured && item->kw == KW_PIGMENT)
-			rc = unmoved_pattern(e, item, m, pattern, m->pattern);
-		if (rc == 0 && textured && item->kw == KW_NORMAL)
-			rc = unmoved_pattern(e, item, m, normal, m->normal);
 		if (o->uv && item->kw != KW_INTERIOR)
 			object_uv(m);
 		return rc;
