@@ -34,27 +34,24 @@ static int df3_read(struct eval *e, const char *path, const char *name, src_loc 
 		return -1;
 	}
 	FILE *f = fopen(path, "rb");
+	float *v = NULL;
 	struct stat st;
 	if (!f || fstat(fileno(f), &st) != 0) {
 		eval_error(e, loc, "cannot read density_file '%s': %s", name, strerror(errno));
-		if (f)
-			fclose(f);
-		return -1;
+		goto fail;
 	}
 	unsigned char h[6];
 	if (st.st_size < 6 || fread(h, 1, 6, f) != 6) {
 		eval_error(e, loc, "density_file '%s' is %lld bytes, too short for a df3 file's 6-byte header", name,
 		           (long long)st.st_size);
-		fclose(f);
-		return -1;
+		goto fail;
 	}
 	for (int k = 0; k < 3; k++)
 		size[k] = h[2 * k] << 8 | h[2 * k + 1];
 	if (size[0] == 0 || size[1] == 0 || size[2] == 0) {
 		eval_error(e, loc, "density_file '%s' has sizes %ld x %ld x %ld: a df3 file needs at least one voxel",
 		           name, size[0], size[1], size[2]);
-		fclose(f);
-		return -1;
+		goto fail;
 	}
 	uint64_t n = (uint64_t)size[0] * size[1] * size[2], len = (uint64_t)st.st_size - 6;   /* < 2^48: no overflow */
 	int width = len == n ? 1 : len == 2 * n ? 2 : len == 4 * n ? 4 : 0;
@@ -63,25 +60,19 @@ static int df3_read(struct eval *e, const char *path, const char *name, src_loc 
 		           "%llu bytes after the header (1, 2 or 4 a voxel); it has %llu", name, size[0], size[1],
 		           size[2], (unsigned long long)n, (unsigned long long)n, (unsigned long long)(2 * n),
 		           (unsigned long long)(4 * n), (unsigned long long)len);
-		fclose(f);
-		return -1;
+		goto fail;
 	}
 	if (n > DF3_MAX_VOXELS) {
 		eval_error(e, loc, "density_file '%s' has %llu voxels, more than eclat's limit of %ld", name,
 		           (unsigned long long)n, DF3_MAX_VOXELS);
-		fclose(f);
-		return -1;
+		goto fail;
 	}
 	size_t texels = (size_t)(n + 3) / 4;
-	if (eval_memory_claim(e, loc, (double)texels * 4 * sizeof(float), "the density_file")) {
-		fclose(f);
-		return -1;
-	}
-	float *v = calloc(texels * 4, sizeof *v);
-	if (!v) {
+	if (eval_memory_claim(e, loc, (double)texels * 4 * sizeof(float), "the density_file"))
+		goto fail;
+	if (!(v = calloc(texels * 4, sizeof *v))) {
 		eval_error(e, loc, "out of memory for density_file '%s'", name);
-		fclose(f);
-		return -1;
+		goto fail;
 	}
 	double top = width == 1 ? 255.0 : width == 2 ? 65535.0 : 4294967295.0, sum = 0;
 	unsigned char buf[65536];
@@ -90,9 +81,7 @@ static int df3_read(struct eval *e, const char *path, const char *name, src_loc 
 		size_t want = (size_t)((n - done) * width < sizeof buf ? (n - done) * width : sizeof buf);
 		if (fread(buf, 1, want, f) != want) {   /* it shrank since it was measured */
 			eval_error(e, loc, "cannot read density_file '%s': it ends early", name);
-			free(v);
-			fclose(f);
-			return -1;
+			goto fail;
 		}
 		for (size_t i = 0; i < want; i += width, done++) {
 			uint32_t x = 0;
@@ -107,6 +96,11 @@ static int df3_read(struct eval *e, const char *path, const char *name, src_loc 
 	*im = (scene_image){ .rgba = v, .width = (int)texels, .height = 1, .decode = SCENE_DECODE_NONE, .data = true,
 	                     .average = { mean, mean, mean, 1 }, .loc = loc };
 	return 0;
+fail:
+	free(v);
+	if (f)
+		fclose(f);
+	return -1;
 }
 
 /* The scene image of the file name (looked for as #include looks, then with
