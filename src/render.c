@@ -219,16 +219,24 @@ static int show(struct pass_loop *pl, long samples)
 	return stop;
 }
 
-/* The Whitted kernel over pixels first to first + n - 1 (in groups of local:
- * see run_pass). When a window shows the render and this pass holds all the
- * samples (POV-Ray's one pass), in 16 bands of rows, each shown as it ends:
- * a band done is final. A stop asked for then waits for the pass's end. */
-static int launch_whitted(struct pass_loop *pl, size_t first, size_t n, size_t local, int count)
+/* The size of the bands a Whitted pass of n units runs in: all n at once, or
+ * when a window shows the render and this pass holds all the samples
+ * (POV-Ray's one pass), about a sixteenth of them in whole multiples of unit,
+ * each band shown as it ends: a band done is final. */
+static size_t whitted_band(const struct pass_loop *pl, int count, size_t n, size_t unit)
 {
 	const render_settings *rs = pl->rs;
-	size_t band = n;
-	if (rs->on_show && pl->st->samples == 0 && count == rs->samples)
-		band = ((n + 15) / 16 + local - 1) / local * local;   /* whole groups: no pixel twice */
+	if (!rs->on_show || pl->st->samples != 0 || count != rs->samples)
+		return n;
+	return ((n + 15) / 16 + unit - 1) / unit * unit;
+}
+
+/* The Whitted kernel over pixels first to first + n - 1 (in groups of local:
+ * see run_pass), in whitted_band's bands of whole groups (no pixel twice). A
+ * stop asked for waits for the pass's end. */
+static int launch_whitted(struct pass_loop *pl, size_t first, size_t n, size_t local, int count)
+{
+	size_t band = whitted_band(pl, count, n, local);
 	for (size_t done = 0; done < n; done += band) {
 		size_t at = first + done, m = n - done < band ? n - done : band;
 		size_t global = (m + local - 1) / local * local;
@@ -245,16 +253,14 @@ static int launch_whitted(struct pass_loop *pl, size_t first, size_t n, size_t l
 	return 0;
 }
 
-/* The Whitted integrator's anti-aliased pass (render_aa.c). When a window shows
- * the render, in about 16 bands of whole blocks of rows (method 1's blocks
- * start at the first row, so each band's pixels are the whole pass's), each
- * shown as it ends. */
+/* The Whitted integrator's anti-aliased pass (render_aa.c), in whitted_band's
+ * bands of whole blocks of rows (method 1's blocks start at the first row, so
+ * each band's pixels are the whole pass's). */
 static int launch_whitted_aa(struct pass_loop *pl, int count)
 {
 	const render_settings *rs = pl->rs;
-	int first = rs->rows ? rs->row_first : 0, rows = rs->rows ? rs->rows : rs->height, band = rows;
-	if (rs->on_show && pl->st->samples == 0 && count == rs->samples)
-		band = ((rows + 15) / 16 + RENDER_AA_BLOCK - 1) / RENDER_AA_BLOCK * RENDER_AA_BLOCK;
+	int first = rs->rows ? rs->row_first : 0, rows = rs->rows ? rs->rows : rs->height;
+	int band = (int)whitted_band(pl, count, (size_t)rows, RENDER_AA_BLOCK);
 	for (int done = 0; done < rows; done += band) {
 		render_settings part = *rs;
 		part.row_first = first + done;

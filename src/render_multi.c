@@ -174,15 +174,10 @@ int render_multi(const int *idx, int n, const char *kernel_dir, lower_result *lr
 		w[i].ho = window ? &ho : NULL;
 		if (i > 0)
 			w[i].rs.start_sums = NULL;    /* a resumed render's sums are added once */
-		if (window) {
+		w[i].started = pthread_create(&w[i].thread, NULL, work, &w[i]) == 0;
+		if (w[i].started && window) {   /* it may be done already: running is read only by watch, after */
 			pthread_mutex_lock(&ho.lock);
 			ho.running++;
-			pthread_mutex_unlock(&ho.lock);
-		}
-		w[i].started = pthread_create(&w[i].thread, NULL, work, &w[i]) == 0;
-		if (!w[i].started && window) {
-			pthread_mutex_lock(&ho.lock);
-			ho.running--;
 			pthread_mutex_unlock(&ho.lock);
 		}
 		rc = w[i].started ? 0 : -1;
