@@ -41,18 +41,13 @@ static float density_bound(const lower_textures *lt, int pattern, int depth)
 	return b;
 }
 
-/* The normal distribution's quantile p, by bisection on erfc. */
+/* The normal distribution's quantile p, from the chi-square one's for one
+ * degree of freedom (the square of a normal variable): the z with P(|Z| > z)
+ * = 2 min(p, 1 - p), below 0 for p below a half. */
 static double normal_quantile(double p)
 {
-	double lo = -40, hi = 40;
-	for (int i = 0; i < 200; i++) {
-		double mid = 0.5 * (lo + hi);
-		if (0.5 * erfc(-mid / sqrt(2)) < p)
-			lo = mid;
-		else
-			hi = mid;
-	}
-	return 0.5 * (lo + hi);
+	double z = sqrt(lower_chdtri(1, 2 * fmin(p, 1 - p)));
+	return p < 0.5 ? -z : z;
 }
 
 /* What methods 1 and 2's extra samples need (POV-Ray's Sample_Threshold: the
