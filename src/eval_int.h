@@ -260,6 +260,10 @@ void eval_pattern_default_map(scene_pigment *pg);
 int eval_pattern_modifier(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg);
 /* A transformation written in a pigment with a pattern, into its warps' list. */
 int eval_pattern_transform(struct eval *e, scene_pigment *pg, const xform *t, src_loc loc);
+/* A new pattern in a pigment that had one (old, or NULL), t the texture's
+ * transformations since: old's warps and t go to the back of pg's list. */
+int eval_pattern_continue(struct eval *e, scene_pigment *pg, const scene_pigment *old, const xform *t,
+                          src_loc loc);
 /* The argument of a pattern keyword: gradient's vector, spiral's arms. */
 int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *pg);
 /* mandel, julia and magnet (eval_fractal.c): their defaults, and their

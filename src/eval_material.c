@@ -436,6 +436,7 @@ struct pattern {
 	scene_material map_mat;  /* a texture_map's finish */
 	bool map_finish;         /* the map is a texture_map */
 	bool uv;                 /* uv_mapping was written */
+	const scene_pigment *continues;   /* the pigment it modifies, whose written map it keeps */
 };
 
 /* Whether item is uv_mapping; the scene learns that it has some. */
@@ -446,8 +447,21 @@ static bool is_uv_mapping(struct eval *e, const ast_node *item)
 	return uv;
 }
 
-/* The map of the pigment being made: its map's, its list's, the inherited
- * pigment's, or POV-Ray's default. */
+/* The patterns whose map POV-Ray's parser always makes, as a list (given or
+ * its defaults). */
+static bool list_pattern(int kind)
+{
+	switch (kind) {
+	case PATTERN_CHECKER: case PATTERN_HEXAGON: case PATTERN_BRICK: case PATTERN_SQUARE:
+	case PATTERN_TRIANGULAR: case PATTERN_CUBIC:
+		return true;
+	default:
+		return false;
+	}
+}
+
+/* The map of the pigment being made: its map's, its list's, the map of the
+ * pigment it modifies when that one was written, or POV-Ray's default. */
 static void pattern_map(struct eval *e, struct pattern *p)
 {
 	scene_pigment *pg = &p->pg;
@@ -470,9 +484,17 @@ static void pattern_map(struct eval *e, struct pattern *p)
 				pg->map[i].colour[k] = (float)p->list[i][k];
 		}
 		pg->n_map = p->n_list;
+	} else if (p->continues && p->continues->map_written && !list_pattern(pg->kind)) {
+		pg->map = eval_xrealloc(NULL, p->continues->n_map * sizeof *pg->map);
+		memcpy(pg->map, p->continues->map, p->continues->n_map * sizeof *pg->map);
+		pg->n_map = p->continues->n_map;
+		return;
 	} else {
 		eval_pattern_default_map(pg);
+		pg->map_written = list_pattern(pg->kind);
+		return;
 	}
+	pg->map_written = true;
 }
 
 static void pattern_result(struct eval *e, struct pattern *p, double c[5], int *pigment)
@@ -816,9 +838,26 @@ static int pigment_block(struct eval *e, const ast_node *b, scene_material *m, c
 		return -1;
 	}
 	if (p.at) {
+		/* POV-Ray's texture keeps one pigment that a pigment { } modifies:
+		 * a new pattern continues the old one's warps and the texture's
+		 * transformations since (a declared pigment replaces them). tex_xf
+		 * still moves the normal, so the pattern also gets its inverse in
+		 * front, as a normal written after them does. */
+		xform id = scene_xform_identity();
+		bool moved = m->uv == SCENE_UV_NONE && !p.pg.uv && !p.uv && memcmp(&m->tex_xf, &id, sizeof id) != 0;
+		const scene_pigment *old = m->pattern >= 0 && m->pattern < e->s->n_pigments ? &e->s->pigments[m->pattern]
+		                                                                              : NULL;
+		if (p.kind > 0 && !p.inherited && (moved || old) &&
+		    eval_pattern_continue(e, &p.pg, old, moved ? &m->tex_xf : &id, p.at->loc)) {
+			free(p.pg.map);
+			return -1;
+		}
 		double col[5];
+		p.continues = old;
 		pattern_result(e, &p, col, &m->pattern);
-		m->tex_xf = scene_xform_identity();
+		xform back = eval_xform_inverse(&m->tex_xf);
+		if (moved && m->pattern >= 0 && eval_pattern_transform(e, &e->s->pigments[m->pattern], &back, b->loc))
+			return -1;
 		for (int k = 0; k < 5; k++)
 			m->pigment[k] = (float)col[k];
 		if (pattern)

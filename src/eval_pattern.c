@@ -209,6 +209,34 @@ int eval_pattern_transform(struct eval *e, scene_pigment *pg, const xform *t, sr
 	return 0;
 }
 
+/* POV-Ray's pigment { PATTERN } where a texture already has a pigment: the
+ * parser reuses the old pigment's list of warps, so the new pattern keeps the
+ * warps and transformations the old one had (its own, then the texture's
+ * since, t) and adds its own in front. Both go to the back of pg's list; a
+ * classic turbulence of the old list yields to one the new pattern wrote, as
+ * POV-Ray keeps only one. */
+int eval_pattern_continue(struct eval *e, scene_pigment *pg, const scene_pigment *old, const xform *t,
+                          src_loc loc)
+{
+	bool classic = false;
+	for (int i = 0; i < pg->n_warps; i++)
+		classic |= pg->warps[i].kind == WARP_TURBULENCE && pg->warps[i].classic;
+	xform id = scene_xform_identity();
+	if (memcmp(t, &id, sizeof id) != 0) {
+		if (room(e, pg, loc))
+			return -1;
+		pg->warps[pg->n_warps++] = (scene_warp){ .kind = WARP_TRANSFORM, .xf = *t };
+	}
+	for (int i = 0; old && i < old->n_warps; i++) {
+		if (classic && old->warps[i].kind == WARP_TURBULENCE && old->warps[i].classic)
+			continue;
+		if (room(e, pg, loc))
+			return -1;
+		pg->warps[pg->n_warps++] = old->warps[i];
+	}
+	return 0;
+}
+
 /* turbulence, octaves, omega, lambda: of w, a turbulence warp. 1: not one. */
 static int turbulence_item(struct eval *e, const ast_node *item, scene_warp *w)
 {

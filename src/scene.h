@@ -61,6 +61,9 @@ typedef struct {
 	bool no_bump_scale;      /* a normal's transformations scale its bumps */
 	bool uv;                 /* uv_mapping: its point is the surface's <u, v, 0>, moved by
 	                          * its own transformations only, and so are its map's pigments */
+	bool map_written;        /* its map was written, or is a list pattern's (checker...),
+	                          * which POV-Ray always makes: a pattern that a later
+	                          * pigment { } in the same texture starts keeps it */
 	bool normal_map;         /* a normal's map entries are normals (pigment: the normal's
 	                          * pattern, or -1: none), not its slope_map */
 	scene_warp warps[SCENE_MAX_WARPS];  /* POV-Ray's list: the first applies first; the
