@@ -141,7 +141,9 @@ enum { PRISM_OPEN = 1, PRISM_FLAT = 2, PRISM_CONIC = 4 };
  * CSG: a.x, a.y (ints): its first leaf and how many; a.z, a.w (ints): its
  *   program's first record and its length in ops (kernels/csg.cl); link: how
  *   many of its leaves rays may meet (the rest are clipped_by's, which only
- *   answer inside tests). The leaves
+ *   answer inside tests); b.x (int): its first leaf box record (PRIM_DATA, one
+ *   a leaf: a.xyz, b.xyz its padded bounds, a.w 1 when the leaf's inside lies
+ *   within them; kernels/csg.cl's csg_box). The leaves
  *   and the program's records (PRIM_DATA, CSG_OPS_PER_RECORD ops each in a, b
  *   and c) are after every BVH's primitives, where no BVH points.
  * CSG mesh: a mesh (height field, parametric...) as a CSG's leaf: as an

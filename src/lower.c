@@ -561,6 +561,36 @@ static int lower_object(struct lowering *lw, const scene *s, int id)
 
 /* ---- CSG ---- */
 
+/* The box record of a CSG leaf (kernels/csg.cl's csg_box): its bounds [lo,
+ * hi], grown by a margin that covers single precision's rounding of the
+ * leaf's hits, which lie in it; a.w 1 when the leaf's inside lies in it too,
+ * so that a point outside is outside the leaf without its inside test. A
+ * disc's inside is a half space, a plane's, quadric's or poly's may be
+ * unbounded, and the flat shapes have none. */
+static dev_prim csg_leaf_box(const scene_object *o, const double lo[3], const double hi[3])
+{
+	dev_prim r = { .type = PRIM_DATA, .material = -1, .object = -1, .link = -1 };
+	float box[2][4] = { { 0 } };
+	for (int k = 0; k < 3; k++) {
+		double pad = 1e-3 * (fabs(lo[k]) + fabs(hi[k]) + (hi[k] - lo[k])) + 1e-6;
+		box[0][k] = lo[k] <= hi[k] ? (float)fmax(lo[k] - pad, -1e30) : 1.0f;   /* empty: a box no ray meets */
+		box[1][k] = lo[k] <= hi[k] ? (float)fmin(hi[k] + pad, 1e30) : -1.0f;
+	}
+	switch (o->shape) {
+	case SHAPE_SPHERE: case SHAPE_BOX: case SHAPE_CYLINDER: case SHAPE_CONE: case SHAPE_TORUS:
+	case SHAPE_SUPERELLIPSOID: case SHAPE_BLOB: case SHAPE_LATHE: case SHAPE_SOR: case SHAPE_PRISM:
+	case SHAPE_SPHERE_SWEEP: case SHAPE_TEXT: case SHAPE_ISOSURFACE: case SHAPE_HEIGHT_FIELD: case SHAPE_MESH:
+	case SHAPE_JULIA_FRACTAL:
+		box[0][3] = 1.0f;
+		break;
+	default:
+		break;
+	}
+	memcpy(&r.a, box[0], sizeof box[0]);
+	memcpy(&r.b, box[1], sizeof box[1]);
+	return r;
+}
+
 /* A CSG object: its leaves and program in the data list (kernels/csg.cl),
  * one PRIM_CSG in the top level with the box of its program, or among the
  * unbounded primitives that every ray tests when that box is not bounded (an
@@ -640,9 +670,14 @@ static int lower_csg(struct lowering *lw, const scene *s, int index)
 			memcpy(&r, p.ops + i, n * sizeof *p.ops);
 			push_prim(&lw->data, r);
 		}
+		int box_first = lw->data.n;
+		for (int k = 0; k < g->n_leaves; k++)
+			for (int j = first[k]; j < last[k]; j++)
+				push_prim(&lw->data, csg_leaf_box(&s->objects[g->first + k], lo[k], hi[k]));
 		int head[4] = { leaf_first, leaves.n, prog_first, p.n };
 		dev_prim c = { .type = PRIM_CSG, .material = leaves.p[0].material, .object = g->first, .link = n_seen };
 		memcpy(&c.a, head, sizeof head);
+		memcpy(&c.b, &box_first, sizeof box_first);
 		int bounded = 1;
 		for (int k = 0; k < 3; k++)
 			bounded &= blo[k] > -1e9 && bhi[k] < 1e9;
@@ -832,6 +867,9 @@ static void relocate(dev_prim *p, int base)
 		v[0] += base;
 		v[2] += base;
 		memcpy(&p->a, v, sizeof v);
+		memcpy(v, &p->b, sizeof *v);
+		v[0] += base;
+		memcpy(&p->b, v, sizeof *v);
 		return;
 	}
 	default:
