@@ -661,6 +661,56 @@ static bool enter_macro(struct cursor *c, const ast_node *call, const value *mac
 	return true;
 }
 
+/* The names n's subtree uses (identifiers, and calls of functions) that are
+ * visible here but not global, into env with a copy of their values. */
+static void capture_names(struct eval *e, const ast_node *n, struct scope **env)
+{
+	if ((n->kind == AST_IDENT || n->kind == AST_CALL) && n->str && (!*env || !scope_find(*env, n->str))) {
+		struct symbol *y = visible(e, n->str);
+		struct symbol *g = scope_find(e->global, n->str);
+		if (y && (!g || resolve(g) != y)) {
+			if (!*env)
+				*env = scope_new(8);
+			set_symbol(scope_add(*env, n->str), eval_value_copy(&y->val));
+		}
+	}
+	for (int i = 0; i < n->n_kids; i++)
+		if (n->kids[i])
+			capture_names(e, n->kids[i], env);
+}
+
+struct scope *eval_capture(struct eval *e, const ast_node *def)
+{
+	if (e->scope == e->global || def->n_kids < 2)
+		return NULL;
+	struct scope *env = NULL;
+	capture_names(e, def->kids[1], &env);
+	if (env) {
+		e->envs = eval_xrealloc(e->envs, (e->n_envs + 1) * sizeof *e->envs);
+		e->envs[e->n_envs++] = env;
+	}
+	return env;
+}
+
+/* Not when env is in sight already (a function calling itself, which its
+ * depth limit stops): pushing it twice would make a loop of scopes. */
+int eval_env_push(struct eval *e, struct scope *env)
+{
+	if (!env)
+		return 0;
+	for (struct scope *s = e->scope; s; s = s->parent)
+		if (s == env)
+			return 0;
+	scope_push(e, env);
+	return 1;
+}
+
+void eval_env_pop(struct eval *e, int pushed)
+{
+	if (pushed)
+		e->scope = e->scope->parent;   /* env stays, for the function's next use */
+}
+
 int eval_function_body(struct eval *e, const ast_node *def, const char *const *names, const double *args, int n,
                        value *out)
 {
@@ -1172,6 +1222,9 @@ static void eval_free(struct eval *e)
 		free(e->pending[i].msg);
 	free(e->pending);
 	free(e->rng.state);
+	for (int i = 0; i < e->n_envs; i++)
+		scope_free(e->envs[i]);
+	free(e->envs);
 }
 
 /* POV-Ray 3.7's working gamma: assumed_gamma; without it, 1 when the version

@@ -980,7 +980,10 @@ int eval_call_function(struct eval *e, const ast_node *call, const value *fn, va
 	for (int i = 0; i < n_params && i < 64; i++)
 		if (eval_expect_float(e, call->kids[i], &a[i]))
 			return -1;
-	return eval_function_body(e, def, params->n_kids ? NULL : xyz, a, n_params, out);
+	int pushed = eval_env_push(e, fn->env);
+	int rc = eval_function_body(e, def, params->n_kids ? NULL : xyz, a, n_params, out);
+	eval_env_pop(e, pushed);
+	return rc;
 }
 
 static int call(struct eval *e, const ast_node *n, value *out)

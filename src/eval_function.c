@@ -238,8 +238,8 @@ static int pattern_call(struct fcomp *c, const ast_node *call, const value *fn, 
 	return channel < 0 ? emit(c, call, FOP_PATTERN, m.pattern, 0) : emit(c, call, FOP_PIGMENT, m.pattern, channel);
 }
 
-static int function_of(struct eval *e, const ast_node *def, const char *name, src_loc use, int depth, bool *skipped,
-                       int *index);
+static int function_of(struct eval *e, const ast_node *def, struct scope *env, const char *name, src_loc use,
+                       int depth, bool *skipped, int *index);
 
 static int operands(struct fcomp *c, const ast_node *n, int first, int count)
 {
@@ -347,7 +347,7 @@ static int call(struct fcomp *c, const ast_node *n)
 	if (block)   /* a pigment function without a member: its red, as POV-Ray's first value */
 		return pattern_call(c, n, v, block->kw == KW_PIGMENT ? 0 : -1);
 	int callee;
-	if (function_of(c->e, v->node, n->str, n->loc, c->depth + 1, c->skipped, &callee))
+	if (function_of(c->e, v->node, v->env, n->str, n->loc, c->depth + 1, c->skipped, &callee))
 		return -1;
 	int want = c->e->s->functions[callee].n_params;
 	if (n->n_kids != want) {
@@ -449,8 +449,9 @@ static int noise3d(struct eval *e, const ast_node *def, int *index)
 	return 0;
 }
 
-static int function_of(struct eval *e, const ast_node *def, const char *name, src_loc use, int depth, bool *skipped,
-                       int *index)
+/* env: the names def's body uses from where it was made (eval_capture). */
+static int function_of(struct eval *e, const ast_node *def, struct scope *env, const char *name, src_loc use,
+                       int depth, bool *skipped, int *index)
 {
 	if (depth > MAX_CALL_DEPTH) {
 		eval_error(e, use, "functions call each other more than %d deep here (a function that calls itself?)",
@@ -472,14 +473,17 @@ static int function_of(struct eval *e, const ast_node *def, const char *name, sr
 		if (!written)
 			return unsupported(e, skipped, use, "'%s' is one of POV-Ray's internal functions (internal(%d)), "
 			                   "which eclat does not have yet", name, number);
-		return function_of(e, written, name, use, depth + 1, skipped, index);
+		return function_of(e, written, NULL, name, use, depth + 1, skipped, index);
 	}
 	struct fcomp c = { .e = e, .def = def, .names = params->n_kids ? NULL : xyz,
 	                   .n_params = params->n_kids ? params->n_kids : 3, .depth = depth, .skipped = skipped };
 	c.f.n_params = c.n_params;
 	c.f.loc = def->loc;
 	c.f.key = def;
-	if (compile(&c, body->kids[0])) {
+	int pushed = eval_env_push(e, env);
+	int rc = compile(&c, body->kids[0]);
+	eval_env_pop(e, pushed);
+	if (rc) {
 		free(c.f.ops);
 		return -1;
 	}
@@ -496,7 +500,7 @@ static int make(struct eval *e, const ast_node *def, const char *instead, bool p
 	bool skipped = false;
 	fallback = instead;
 	patterns_allowed = patterns;
-	int rc = function_of(e, def, "function", def->loc, 0, &skipped, index);
+	int rc = function_of(e, def, NULL, "function", def->loc, 0, &skipped, index);
 	fallback = was_fallback;
 	patterns_allowed = was_allowed;
 	return rc && skipped ? 1 : rc;

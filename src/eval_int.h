@@ -70,6 +70,8 @@ typedef struct value {
 	struct array *arr;       /* V_ARRAY */
 	const ast_node *node;    /* V_MACRO, V_FUNCTION: the definition (a pattern or pigment
 	                          * function's pigment in mat) */
+	struct scope *env;       /* V_FUNCTION: the names it uses from the macro or include it
+	                          * was made in (eval_capture), or NULL */
 } value;
 
 struct array {
@@ -146,7 +148,19 @@ struct eval {
 	double memory_used, memory_limit;  /* bytes (eval_memory.c); limit 0: not looked up yet */
 	struct eval_font *fonts; /* the texts' outlines already read (eval_outline.c) */
 	int n_fonts;
+	struct scope **envs;     /* the functions' captured names (eval_capture), freed at the end */
+	int n_envs;
 };
+
+/* A function made inside a macro or an include file sees that scope's
+ * parameters and #locals, as POV-Ray compiles it there; eclat compiles or
+ * evaluates it when it is used, so the values of the names its body uses
+ * that are not global are kept, and put back in sight around that use.
+ * eval_capture: them (NULL when there are none); eval_env_push: 1 when it
+ * pushed env, which eval_env_pop then takes away. */
+struct scope *eval_capture(struct eval *e, const ast_node *def);
+int eval_env_push(struct eval *e, struct scope *env);
+void eval_env_pop(struct eval *e, int pushed);
 
 /* Frees the texts' outline cache (not the outlines: the scene has them). */
 void eval_outline_free(struct eval *e);

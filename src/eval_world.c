@@ -935,7 +935,7 @@ int eval_block_value(struct eval *e, const ast_node *b, value *out)
 {
 	*out = (value){ .kind = V_NONE };
 	if (b->kind == AST_FUNCTION) {
-		*out = (value){ .kind = V_FUNCTION, .node = b };
+		*out = (value){ .kind = V_FUNCTION, .node = b, .env = eval_capture(e, b) };
 		return eval_function_pattern_body(b) ? eval_function_pigment(e, b, &out->mat) : 0;
 	}
 	if (b->kind == AST_ARRAY)
