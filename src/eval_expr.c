@@ -886,6 +886,25 @@ static int vector_function(struct eval *e, const ast_node *n, value *out)
 	return 0;
 }
 
+/* vturbulence(Lambda, Omega, Octaves, V): POV-Ray's DTurbulence at V, the
+ * displacement a turbulence warp gives there, its octaves cut to 1..10 as
+ * POV-Ray cuts them. */
+static int vturbulence(struct eval *e, const ast_node *n, value *out)
+{
+	double a[3], v[3];
+	if (nargs(e, n, 4, 4) || floats(e, n, a, 3) || eval_expect_vector(e, n->kids[3], v))
+		return -1;
+	int octaves = eval_int_of(a[2]);
+	octaves = octaves < 1 ? 1 : octaves > 10 ? 10 : octaves;
+	float p[3], r[3];
+	for (int i = 0; i < 3; i++)   /* the device's bound on a warped point: float keeps it finite */
+		p[i] = (float)fmin(fmax(v[i], -1e17), 1e17);
+	scene_dturbulence(p, (float)a[1], (float)a[0], octaves, r);
+	double d[3] = { r[0], r[1], r[2] };
+	*out = eval_vector3(d);
+	return 0;
+}
+
 /* min_extent(Object), max_extent(Object): the corners of the object's box. */
 static int extent(struct eval *e, const ast_node *n, value *out)
 {
@@ -934,8 +953,7 @@ static int builtin(struct eval *e, const ast_node *n, value *out)
 	case KW_INSIDE:
 		return eval_inside(e, n, out);
 	case KW_VTURBULENCE:
-		eval_error(e, n->loc, "%s() is not supported yet", ast_keyword_name(n->kw));
-		return -1;
+		return vturbulence(e, n, out);
 	default: {
 		double r = 0;
 		int rc = float_function(e, n, &r);

@@ -549,6 +549,9 @@ double scene_function_eval(const scene *s, int f, const double *args);
 /* POV-Ray's Noise at p, in [0, 1], with noise_generator 1, 2 or 3, as
  * kernels/pattern.cl's pattern_noise computes it, in float (scene_noise.c). */
 float scene_noise(const float p[3], int generator);
+/* POV-Ray's DTurbulence at p, as kernels/pattern.cl's pattern_dturbulence
+ * computes it (scene_noise.c): vturbulence(). */
+void scene_dturbulence(const float p[3], float omega, float lambda, int octaves, float out[3]);
 /* An FOP_'s operand count and name ("add"). */
 int scene_fop_arity(int op);
 const char *scene_fop_name(int op);

@@ -1,7 +1,8 @@
-/* scene_noise.c: POV-Ray's Noise on the host, for the host's run of the
- * scene's functions (f_noise3d in scene_function_eval): kernels/pattern.cl's
- * pattern_noise step for step, in float as the device computes it, over the
- * same tables (kernels/pattern_tables.cl, included here as C). */
+/* scene_noise.c: POV-Ray's Noise and DTurbulence on the host, for the host's
+ * run of the scene's functions (f_noise3d in scene_function_eval) and for
+ * vturbulence(): kernels/pattern.cl's pattern_noise and pattern_dturbulence
+ * step for step, in float as the device computes them, over the same tables
+ * (kernels/pattern_tables.cl, included here as C). */
 #include <math.h>
 
 #include "scene.h"
@@ -21,9 +22,11 @@ static float clampf(float v, float lo, float hi)
 	return v < lo ? lo : v > hi ? hi : v;
 }
 
+/* Clamped first: a coordinate past int (or NaN) would make the cast
+ * undefined; the noise there is meaningless in float anyway. */
 static int lattice(float floor_x)
 {
-	return ((int)floor_x + 10000) & 0xfff;
+	return ((int)fminf(fmaxf(floor_x, -1e9f), 1e9f) + 10000) & 0xfff;
 }
 
 static int corner(int hxy, int iz)
@@ -102,4 +105,55 @@ float scene_noise(const float p[3], int generator)
 	else
 		sum += 0.5f;
 	return clampf(sum, 0.0f, 1.0f);
+}
+
+/* One corner of POV-Ray's DNoise (pattern_dincr): entries k, k + 4, k + 8. */
+static void dincr(int k, float s, float x, float y, float z, float out[3])
+{
+	out[0] += incr(k, s, x, y, z);
+	out[1] += incr(k + 4, s, x, y, z);
+	out[2] += incr(k + 8, s, x, y, z);
+}
+
+/* POV-Ray's DNoise (pattern_dnoise), its corners in the device's order. */
+static void dnoise(const float p[3], float out[3])
+{
+	float f0[3], f1[3], s[3], t[3];
+	int l[3];
+	for (int k = 0; k < 3; k++) {
+		float fl = floorf(p[k]);
+		f0[k] = p[k] - fl;
+		f1[k] = f0[k] - 1.0f;
+		l[k] = lattice(fl);
+		s[k] = f0[k] * f0[k] * (3.0f - 2.0f * f0[k]);
+		t[k] = 1.0f - s[k];
+	}
+	int ix = l[0], iy = l[1], iz = l[2];
+	int h00 = pattern_hash[(pattern_hash[ix] ^ iy) & 0xfff];
+	int h10 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ iy) & 0xfff];
+	int h01 = pattern_hash[(pattern_hash[ix] ^ (iy + 1)) & 0xfff];
+	int h11 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ (iy + 1)) & 0xfff];
+	out[0] = out[1] = out[2] = 0.0f;
+	dincr(corner(h00, iz), t[0] * t[1] * t[2], f0[0], f0[1], f0[2], out);
+	dincr(corner(h10, iz), s[0] * t[1] * t[2], f1[0], f0[1], f0[2], out);
+	dincr(corner(h11, iz), s[0] * s[1] * t[2], f1[0], f1[1], f0[2], out);
+	dincr(corner(h01, iz), t[0] * s[1] * t[2], f0[0], f1[1], f0[2], out);
+	dincr(corner(h01, iz + 1), t[0] * s[1] * s[2], f0[0], f1[1], f1[2], out);
+	dincr(corner(h11, iz + 1), s[0] * s[1] * s[2], f1[0], f1[1], f1[2], out);
+	dincr(corner(h10, iz + 1), s[0] * t[1] * s[2], f1[0], f0[1], f1[2], out);
+	dincr(corner(h00, iz + 1), t[0] * t[1] * s[2], f0[0], f0[1], f1[2], out);
+}
+
+void scene_dturbulence(const float p[3], float omega, float lambda, int octaves, float out[3])
+{
+	dnoise(p, out);
+	float l = lambda, o = omega;
+	for (int i = 2; i <= octaves; i++) {
+		float q[3] = { p[0] * l, p[1] * l, p[2] * l }, v[3];
+		dnoise(q, v);
+		for (int k = 0; k < 3; k++)
+			out[k] += o * v[k];
+		l *= lambda;
+		o *= omega;
+	}
 }
