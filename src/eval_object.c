@@ -244,9 +244,12 @@ static scene_material *target(struct eval *e, struct objval *o, bool *textured)
 			shapes++;
 		}
 	if (shapes == 1) {
+		scene_material *m = &o->objs[shape].material;
 		*textured = o->objs[shape].textured;
+		if (!*textured)   /* POV-Ray copies the #default in effect now, not the one at the shape's making */
+			eval_apply_value(&(value){ .kind = V_TEXTURE, .mat = e->default_mat }, m);
 		o->objs[shape].textured = true;
-		return &o->objs[shape].material;
+		return m;
 	}
 	*textured = o->has_mat;
 	if (!o->has_mat)
