@@ -255,7 +255,10 @@ static inline float cylinder_emit_pdf(global const dev_prim *prims, global const
 	if (n.z != 0.0f && n.x == 0.0f && n.y == 0.0f) {   /* an end */
 		share = 0.5f * (1.0f - side) / M_PI_F;
 	} else {
-		n = normalize((float3)(q.x, q.y, 0.0f));
+		float w = length(q.xy);
+		if (!(w > 0.0f))   /* on the axis: no side there */
+			return 0.0f;
+		n = (float3)(q.x / w, q.y / w, 0.0f);
 		share = side / (2.0f * M_PI_F);
 	}
 	return intersect_area_to_solid_angle(pick * share / intersect_area_scale(p, n), intersect_normal_to_world(p, n),
