@@ -116,7 +116,7 @@ static inline float3 path_radiance(const scene_data *sc, int px, int py, uint ke
 		if (sp.emitter >= 0) {
 			float w = 1.0f;
 			if (p->integrator == INTEGRATOR_PATH && last_pdf > 0.0f)
-				w = light_power_heuristic(last_pdf, light_pdf(sc->emitters, &sc->prims[hit.prim], o, d, hit.t));
+				w = light_power_heuristic(last_pdf, light_pdf(sc, &sc->emitters[sp.emitter], o, d, hit.t));
 			radiance += beta * w * m.emission;
 		} else {
 			radiance += beta * m.emission;

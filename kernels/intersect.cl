@@ -80,6 +80,47 @@ static inline float3 intersect_normal_to_world(global const dev_prim *p, float3 
 	return normalize(n.x * p->a.xyz + n.y * p->b.xyz + n.z * p->c.xyz);
 }
 
+/* intersect_to_local_about undone: a point q of the shape's space to world
+ * space, for the emitters that sample a point there. The rows a, b, c are M's;
+ * M's inverse has the columns b x c, c x a, a x b over det M. */
+static inline float3 intersect_to_world_about(global const dev_prim *p, float3 c, float3 q)
+{
+	float3 a = p->a.xyz, b = p->b.xyz, cc = p->c.xyz, v = q - (float3)(p->a.w, p->b.w, p->c.w);
+	float3 bc = cross(b, cc), ca = cross(cc, a), ab = cross(a, b);
+	return c + (v.x * bc + v.y * ca + v.z * ab) / dot(a, bc);
+}
+
+/* How much world space's area element is the shape's space's, on a surface
+ * whose unit normal there is n: |M^T n| / |det M| (Nanson's formula), constant
+ * over a flat face however the shape is scaled or sheared. The area densities
+ * of emitters sampled in their own space are divided by it. */
+static inline float intersect_area_scale(global const dev_prim *p, float3 n)
+{
+	float3 a = p->a.xyz, b = p->b.xyz, c = p->c.xyz;
+	return length(n.x * a + n.y * b + n.z * c) / fabs(dot(a, cross(b, c)));
+}
+
+/* An area density at the point t along the unit direction wi, on a surface of
+ * unit normal n, as a density in the solid angle seen from the ray's origin;
+ * 0 edge-on. */
+static inline float intersect_area_to_solid_angle(float pdf_area, float3 n, float3 wi, float t)
+{
+	float cos_l = fabs(dot(n, wi));
+	return cos_l > 0.0f ? pdf_area * t * t / cos_l : 0.0f;
+}
+
+/* An orthonormal basis around n without branches on a special axis
+ * (the materials' lobes, and a sphere's cone of directions toward it)
+ * (Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 2017). */
+static inline void intersect_basis(float3 n, float3 *t, float3 *b)
+{
+	float s = n.z >= 0.0f ? 1.0f : -1.0f;
+	float a = -1.0f / (s + n.z);
+	float c = n.x * n.y * a;
+	*t = (float3)(1.0f + s * n.x * n.x * a, s * c, -s * n.x);
+	*b = (float3)(c, s + n.y * n.y * a, -n.y);
+}
+
 /* A shape's own numbers: the a of its PRIM_DATA record. */
 static inline float4 intersect_data(global const dev_prim *prims, global const dev_prim *p)
 {

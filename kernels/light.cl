@@ -7,8 +7,10 @@
  * the same total over its rectangle (or disc), as POV-Ray spreads it over its grid.
  *
  * Emissive surfaces are lights that rays can also hit: one is chosen by power,
- * a point on it sampled by area (triangles) or by solid angle (spheres seen from
- * outside), and both strategies are weighted by the power heuristic. */
+ * a point on it sampled as its shape says (shape_emit_sample: by area, or by
+ * solid angle for spheres seen from outside), and both strategies are weighted
+ * by the power heuristic. Which shapes are sampled is PRIM_EMITTERS' list;
+ * the others are found by rays alone. */
 
 /* Concentric map of the square to the unit disc (Shirley and Chiu), for circular
  * area lights and the lens. */
@@ -106,25 +108,11 @@ static inline int light_choose(global const dev_emitter *em, int n, float u)
 	return lo;
 }
 
-/* The solid-angle pdf of sampling direction wi from x toward the emissive
- * primitive prim, hit at distance t: what MIS needs for rays that hit emitters. */
-static inline float light_pdf(global const dev_emitter *em, global const dev_prim *prim, float3 x,
-                       float3 wi, float t)
+/* The solid-angle pdf of sampling direction wi from x toward the emitter e,
+ * met at distance t: what MIS needs for rays that hit emitters. */
+static inline float light_pdf(const scene_data *sc, global const dev_emitter *e, float3 x, float3 wi, float t)
 {
-	global const dev_emitter *e = &em[prim->link];
-	if (prim->type == PRIM_SPHERE) {
-		float3 c = prim->a.xyz;
-		float r = prim->a.w, d2 = dot(c - x, c - x);
-		if (d2 > r * r * 1.0001f) {
-			float cos_max = sqrt(fmax(0.0f, 1.0f - r * r / d2));
-			return e->pdf / (2.0f * M_PI_F * (1.0f - cos_max));
-		}
-		float3 nl = normalize(x + t * wi - c);
-		return e->pdf * t * t / (e->area * fabs(dot(nl, wi)));
-	}
-	float3 nl = normalize(cross(prim->b.xyz - prim->a.xyz, prim->c.xyz - prim->a.xyz));
-	float cos_l = fabs(dot(nl, wi));
-	return cos_l > 0.0f ? e->pdf * t * t / (e->area * cos_l) : 0.0f;
+	return shape_emit_pdf(sc->prims, &sc->prims[e->prim], x, wi, t, e->pdf, e->area);
 }
 
 /* The radiance an emissive primitive sends from pos, reached along wi after
@@ -145,36 +133,15 @@ static inline float light_power_heuristic(float a, float b)
 }
 
 /* A point pos on one emissive primitive chosen by power, seen from x along
- * wi (the sphere's visible cap when x is outside it), or NULL. */
+ * wi, sampled as its shape does (shape_emit_sample), or NULL. Dimensions: dim
+ * the choice, dim + 1 and dim + 2 the point. */
 static inline global const dev_emitter *light_emitter_sample(const scene_data *sc, float3 x, uint key, uint dim, float3 *wi,
                                                       float3 *pos)
 {
 	global const dev_emitter *em = sc->emitters;
 	global const dev_emitter *e = &em[light_choose(em, sc->p->n_emitters, rng_uniform(key, dim))];
-	global const dev_prim *prim = &sc->prims[e->prim];
 	float u1 = rng_uniform(key, dim + 1), u2 = rng_uniform(key, dim + 2);
-	if (prim->type == PRIM_SPHERE && dot(prim->a.xyz - x, prim->a.xyz - x) > prim->a.w * prim->a.w * 1.0001f) {
-		float3 axis = prim->a.xyz - x;
-		float d2 = dot(axis, axis), r = prim->a.w;
-		float cos_max = sqrt(fmax(0.0f, 1.0f - r * r / d2));
-		float cos_t = 1.0f - u1 * (1.0f - cos_max), sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t));
-		float3 t, b, w = axis * rsqrt(d2);
-		material_basis(w, &t, &b);
-		*wi = normalize(sin_t * cos(2.0f * M_PI_F * u2) * t + sin_t * sin(2.0f * M_PI_F * u2) * b + cos_t * w);
-		float th = sphere_intersect(x, *wi, sc->prims, prim, 0.0f, INFINITY);
-		if (th == INFINITY)
-			return 0;
-		*pos = x + th * *wi;
-	} else if (prim->type == PRIM_SPHERE) {
-		float z = 1.0f - 2.0f * u1, s = sqrt(fmax(0.0f, 1.0f - z * z)), phi = 2.0f * M_PI_F * u2;
-		*pos = prim->a.xyz + prim->a.w * (float3)(s * cos(phi), s * sin(phi), z);
-		*wi = normalize(*pos - x);
-	} else {
-		float su = sqrt(u1);
-		*pos = (1.0f - su) * prim->a.xyz + su * (1.0f - u2) * prim->b.xyz + su * u2 * prim->c.xyz;
-		*wi = normalize(*pos - x);
-	}
-	return e;
+	return shape_emit_sample(sc->prims, &sc->prims[e->prim], x, u1, u2, wi, pos) ? e : 0;
 }
 
 /* One sample of one emissive primitive, weighted against BSDF sampling. */
@@ -182,16 +149,14 @@ static inline float3 light_emitters(const scene_data *sc, const bsdf *m, const m
                              float3 ng, float3 n, float3 wo, uint key, uint dim, media_stack ms, int solids)
 {
 	global const dev_params *p = sc->p;
-	global const dev_emitter *em = sc->emitters;
 	if (p->n_emitters == 0)
 		return (float3)(0.0f);
 	float3 wi, pos;
 	global const dev_emitter *e = light_emitter_sample(sc, x, key, dim, &wi, &pos);
 	if (!e)
 		return (float3)(0.0f);
-	global const dev_prim *prim = &sc->prims[e->prim];
 	float dist = length(pos - x);
-	float pdf_light = light_pdf(em, prim, x, wi, dist), pdf_bsdf;
+	float pdf_light = light_pdf(sc, e, x, wi, dist), pdf_bsdf;
 	float3 f = material_eval(m, lobes, n, wo, wi, &pdf_bsdf);
 	if (pdf_light <= 0.0f || dot(ng, wi) <= 0.0f || (f.x <= 0.0f && f.y <= 0.0f && f.z <= 0.0f))
 		return (float3)(0.0f);

@@ -74,22 +74,11 @@ static inline float3 material_irid(const bsdf *m, float3 n, float3 wo, float3 wi
 	return fmax(finish_irid_tint(m->irid.x, m->irid.y, m->irid_wl, n, wi, wo), 0.0f);
 }
 
-/* An orthonormal basis around n without branches on a special axis
- * (Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 2017). */
-static inline void material_basis(float3 n, float3 *t, float3 *b)
-{
-	float s = n.z >= 0.0f ? 1.0f : -1.0f;
-	float a = -1.0f / (s + n.z);
-	float c = n.x * n.y * a;
-	*t = (float3)(1.0f + s * n.x * n.x * a, s * c, -s * n.x);
-	*b = (float3)(c, s + n.y * n.y * a, -n.y);
-}
-
 /* A direction about n with density cos(theta) / pi. */
 static inline float3 material_sample_cosine(float3 n, float u1, float u2)
 {
 	float3 t, b;
-	material_basis(n, &t, &b);
+	intersect_basis(n, &t, &b);
 	float r = sqrt(u1), phi = 2.0f * M_PI_F * u2;
 	return normalize(r * cos(phi) * t + r * sin(phi) * b + sqrt(fmax(0.0f, 1.0f - u1)) * n);
 }
@@ -139,7 +128,7 @@ static inline float material_ggx_eval(float3 n, float3 wo, float3 wi, float alph
 static inline float3 material_ggx_sample(float3 n, float3 wo, float alpha, float u1, float u2)
 {
 	float3 t, b;
-	material_basis(n, &t, &b);
+	intersect_basis(n, &t, &b);
 	float cos_t = sqrt((1.0f - u1) / (1.0f + (alpha * alpha - 1.0f) * u1));
 	float sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t)), phi = 2.0f * M_PI_F * u2;
 	float3 h = sin_t * cos(phi) * t + sin_t * sin(phi) * b + cos_t * n;

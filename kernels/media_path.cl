@@ -94,7 +94,7 @@ static inline float3 media_phase_sample(const scene_data *sc, const media_list *
 	}
 	float sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t)), phi = 2.0f * M_PI_F * u.z;
 	float3 t, b;
-	material_basis(d, &t, &b);
+	intersect_basis(d, &t, &b);
 	return normalize(sin_t * cos(phi) * t + sin_t * sin(phi) * b + cos_t * d);
 }
 
@@ -199,9 +199,8 @@ static inline float3 media_vertex_lights(const scene_data *sc, const media_list 
 	global const dev_emitter *e = light_emitter_sample(sc, x, key, dim + 24, &wi, &pos);
 	if (!e)
 		return sum;
-	global const dev_prim *prim = &sc->prims[e->prim];
 	float dist = length(pos - x);
-	float pdf_light = light_pdf(sc->emitters, prim, x, wi, dist), pdf_phase;
+	float pdf_light = light_pdf(sc, e, x, wi, dist), pdf_phase;
 	float3 f = media_scatter_eval(sc, l, x, d, wi, &pdf_phase);
 	if (pdf_light <= 0.0f || (f.x <= 0.0f && f.y <= 0.0f && f.z <= 0.0f))
 		return sum;

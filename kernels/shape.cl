@@ -34,6 +34,48 @@ static inline bool shape_inside(global const dev_prim *prims, global const dev_p
 	}
 }
 
+/* The shapes next-event estimation samples (PRIM_EMITTERS in shared.h), each
+ * by its own name_emit_sample and name_emit_pdf: a point pos on the shape seen
+ * from x along wi, from u1 and u2 (false: none this time); and the density,
+ * in solid angle from x, with which that sampler gives the point t along wi,
+ * times pick (the probability of having chosen the shape), area the emitter
+ * table's. A ray that meets an emitter weighs itself with the same density, so
+ * the two must agree exactly. */
+#define SHAPE_EMIT_SAMPLE_ROW(NAME, name) \
+	case PRIM_##NAME: return name##_emit_sample(prims, p, x, u1, u2, wi, pos);
+#define SHAPE_EMIT_PDF_ROW(NAME, name) \
+	case PRIM_##NAME: return name##_emit_pdf(prims, p, x, wi, t, pick, area);
+
+static inline bool shape_emit_sample(global const dev_prim *prims, global const dev_prim *p, float3 x, float u1,
+                                     float u2, float3 *wi, float3 *pos)
+{
+	switch (p->type) {
+	PRIM_EMITTERS(SHAPE_EMIT_SAMPLE_ROW)
+	default: return false;
+	}
+}
+
+static inline float shape_emit_pdf(global const dev_prim *prims, global const dev_prim *p, float3 x, float3 wi,
+                                   float t, float pick, float area)
+{
+	switch (p->type) {
+	PRIM_EMITTERS(SHAPE_EMIT_PDF_ROW)
+	default: return 0.0f;
+	}
+}
+
+/* The emitter table's row of a primitive of the top level, or -1: in its link
+ * for the shapes that have no PRIM_DATA record (triangles, spheres), else in
+ * the link of its first record. */
+static inline int shape_emitter(global const dev_prim *prims, global const dev_prim *p)
+{
+	switch (p->type) {
+	case PRIM_TRIANGLE: case PRIM_SPHERE: return p->link;
+	case PRIM_DISC: case PRIM_CYLINDER: return prims[p->link].link;
+	default: return -1;
+	}
+}
+
 /* POV-Ray's uv at a hit x (lx: in the primitive's space, a mesh's for its
  * triangles), for uv_mapping: the shapes that define one (a mesh's triangles,
  * not a lone triangle); every other shape gives x's own x and y, as POV-Ray's
@@ -81,8 +123,8 @@ static inline intersect_surface intersect_surface_at(global const dev_prim *prim
 		if (s.material < 0)
 			s.material = q->material;
 		s.object = q->object;
-	} else if (p->type == PRIM_TRIANGLE || p->type == PRIM_SPHERE) {
-		s.emitter = p->link;
+	} else {
+		s.emitter = shape_emitter(prims, p);
 	}
 	s.object_x = lx;
 	s.ng = shape_normal(prims, p, lx);

@@ -8,7 +8,8 @@
  *   nearly a cylinder has its point far away, where POV-Ray's space would
  *   leave the intersection to cancellation in single precision.
  * Its PRIM_DATA records: x dist (0 for a cylinder), y 1 when its ends are
- * capped; then the centre (xyz), about which the rows map (cone_local).
+ * capped, z an emitting cylinder's probability of sampling its side; then the
+ * centre (xyz), about which the rows map (cone_local).
  *
  * A capped one is intersected as a solid: the parts of the ray inside the
  * quadric, cut to the slab between the ends, so a ray through the rim meets the
@@ -211,4 +212,55 @@ static inline bool cone_inside(global const dev_prim *prims, global const dev_pr
 {
 	float4 data = intersect_data(prims, p);
 	return cone_inside_at(cone_local(prims, p, x), data.x, 1.0f - data.x, data.y != 0.0f);
+}
+
+/* A cylinder as an emitter (shape.cl's shape_emit_sample and
+ * shape_emit_pdf). Its record's a.z is the probability of sampling the side
+ * rather than an end (1 when open), which lowering sets to the side's share
+ * of the area in world space (src/lower_emitter.c); the side is sampled
+ * uniformly in its own space (angle and height), the ends as the disc is. In
+ * world space the ends stay uniform under any transform, and the side too
+ * under a similarity; a cylinder scaled across its axis (an elliptic one) has
+ * the density over its side that cylinder_emit_pdf says, one over the area
+ * scale at the point, so the estimate stays exact, only less even. */
+static inline bool cylinder_emit_sample(global const dev_prim *prims, global const dev_prim *p, float3 x, float u1,
+                                        float u2, float3 *wi, float3 *pos)
+{
+	float4 data = intersect_data(prims, p);
+	float side = data.y != 0.0f ? data.z : 1.0f, phi = 2.0f * M_PI_F * u2;
+	float3 q;
+	if (u1 < side) {
+		q = (float3)(cos(phi), sin(phi), u1 / side);
+	} else {
+		float u = (u1 - side) / (1.0f - side), end = u < 0.5f ? 0.0f : 1.0f;   /* each end, half the rest */
+		float r = sqrt(2.0f * u - end);
+		q = (float3)(r * cos(phi), r * sin(phi), end);
+	}
+	*pos = intersect_to_world_about(p, prims[p->link + 1].a.xyz, q);
+	*wi = normalize(*pos - x);
+	return true;
+}
+
+/* The density of the point t along wi from x in solid angle, pick times it:
+ * the part's probability over its area in its own space (2 pi for the side, pi
+ * an end) and over the area scale there. */
+static inline float cylinder_emit_pdf(global const dev_prim *prims, global const dev_prim *p, float3 x, float3 wi,
+                                      float t, float pick, float area)
+{
+	float4 data = intersect_data(prims, p);
+	bool capped = data.y != 0.0f;
+	float side = capped ? data.z : 1.0f;
+	float3 q = cone_local(prims, p, x + t * wi), n = cone_part_normal(p, q, 1.0f, 0.0f, capped);
+	float share;
+	if (n.z != 0.0f && n.x == 0.0f && n.y == 0.0f) {   /* an end */
+		share = 0.5f * (1.0f - side) / M_PI_F;
+	} else {
+		float w = length(q.xy);
+		if (!(w > 0.0f))   /* on the axis: no side there */
+			return 0.0f;
+		n = (float3)(q.x / w, q.y / w, 0.0f);
+		share = side / (2.0f * M_PI_F);
+	}
+	return intersect_area_to_solid_angle(pick * share / intersect_area_scale(p, n), intersect_normal_to_world(p, n),
+	                                     wi, t);
 }

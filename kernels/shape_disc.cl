@@ -35,3 +35,28 @@ static inline bool disc_inside(global const dev_prim *prims, global const dev_pr
 {
 	return disc_local(prims, p, x).z < 0.0f;
 }
+
+/* As an emitter (shape.cl's shape_emit_sample and shape_emit_pdf): a point
+ * uniform over its ring in its own space (the square of the radius uniform
+ * between the hole's and 1), which is uniform over its area in world space
+ * too, since the map is affine and the disc flat: an ellipse's or a
+ * parallelogram's disc under any scale or shear is sampled as well as a
+ * round one. */
+static inline bool disc_emit_sample(global const dev_prim *prims, global const dev_prim *p, float3 x, float u1,
+                                    float u2, float3 *wi, float3 *pos)
+{
+	float h2 = intersect_data(prims, p).x, r = sqrt(h2 + u1 * (1.0f - h2)), phi = 2.0f * M_PI_F * u2;
+	*pos = intersect_to_world_about(p, prims[p->link + 1].a.xyz, (float3)(r * cos(phi), r * sin(phi), 0.0f));
+	*wi = normalize(*pos - x);
+	return true;
+}
+
+/* The density of the point t along wi from x in solid angle, pick times it:
+ * one over the ring's area in world space. */
+static inline float disc_emit_pdf(global const dev_prim *prims, global const dev_prim *p, float3 x, float3 wi,
+                                  float t, float pick, float area)
+{
+	float3 nz = (float3)(0.0f, 0.0f, 1.0f);
+	float ring = M_PI_F * (1.0f - intersect_data(prims, p).x) * intersect_area_scale(p, nz);
+	return intersect_area_to_solid_angle(pick / ring, intersect_normal_to_world(p, nz), wi, t);
+}

@@ -53,6 +53,48 @@ static inline bool sphere_inside(global const dev_prim *prims, global const dev_
 	return dot(v, v) < p->a.w * p->a.w;
 }
 
+/* As an emitter (shape.cl's shape_emit_sample and shape_emit_pdf). Seen from
+ * outside, a direction uniform in the cone the sphere fills from x, and the
+ * point where it meets the sphere (none, rarely, when rounding misses it);
+ * from inside (or on it), a point uniform over its area. */
+static inline bool sphere_emit_sample(global const dev_prim *prims, global const dev_prim *p, float3 x, float u1,
+                                      float u2, float3 *wi, float3 *pos)
+{
+	if (dot(p->a.xyz - x, p->a.xyz - x) > p->a.w * p->a.w * 1.0001f) {
+		float3 axis = p->a.xyz - x;
+		float d2 = dot(axis, axis), r = p->a.w;
+		float cos_max = sqrt(fmax(0.0f, 1.0f - r * r / d2));
+		float cos_t = 1.0f - u1 * (1.0f - cos_max), sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t));
+		float3 t, b, w = axis * rsqrt(d2);
+		intersect_basis(w, &t, &b);
+		*wi = normalize(sin_t * cos(2.0f * M_PI_F * u2) * t + sin_t * sin(2.0f * M_PI_F * u2) * b + cos_t * w);
+		float th = sphere_intersect(x, *wi, prims, p, 0.0f, INFINITY);
+		if (th == INFINITY)
+			return false;
+		*pos = x + th * *wi;
+		return true;
+	}
+	float z = 1.0f - 2.0f * u1, s = sqrt(fmax(0.0f, 1.0f - z * z)), phi = 2.0f * M_PI_F * u2;
+	*pos = p->a.xyz + p->a.w * (float3)(s * cos(phi), s * sin(phi), z);
+	*wi = normalize(*pos - x);
+	return true;
+}
+
+/* The density of the point t along wi from x in solid angle, pick times it;
+ * area: the sphere's (the emitter table's). */
+static inline float sphere_emit_pdf(global const dev_prim *prims, global const dev_prim *p, float3 x, float3 wi,
+                                    float t, float pick, float area)
+{
+	float3 c = p->a.xyz;
+	float r = p->a.w, d2 = dot(c - x, c - x);
+	if (d2 > r * r * 1.0001f) {
+		float cos_max = sqrt(fmax(0.0f, 1.0f - r * r / d2));
+		return pick / (2.0f * M_PI_F * (1.0f - cos_max));
+	}
+	float3 nl = normalize(x + t * wi - c);
+	return pick * t * t / (area * fabs(dot(nl, wi)));
+}
+
 static inline float ellipsoid_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
                                  float tmin, float tmax)
 {

@@ -124,3 +124,24 @@ static inline float3 triangle_smooth_normal(global const dev_prim *p, global con
 	float3 s = (1.0f - u - v) * n[0].xyz + v * n[1].xyz + u * n[2].xyz;
 	return dot(s, s) > 0.0f ? normalize(s) : (float3)(0.0f);
 }
+
+/* As an emitter (shape.cl's shape_emit_sample and shape_emit_pdf): a point
+ * uniform over its area from u1, u2; the density of the point t along wi
+ * from x in solid angle, pick times it, area the triangle's (the emitter
+ * table's). */
+static inline bool triangle_emit_sample(global const dev_prim *prims, global const dev_prim *p, float3 x, float u1,
+                                        float u2, float3 *wi, float3 *pos)
+{
+	float su = sqrt(u1);
+	*pos = (1.0f - su) * p->a.xyz + su * (1.0f - u2) * p->b.xyz + su * u2 * p->c.xyz;
+	*wi = normalize(*pos - x);
+	return true;
+}
+
+static inline float triangle_emit_pdf(global const dev_prim *prims, global const dev_prim *p, float3 x, float3 wi,
+                                      float t, float pick, float area)
+{
+	float3 nl = normalize(cross(p->b.xyz - p->a.xyz, p->c.xyz - p->a.xyz));
+	float cos_l = fabs(dot(nl, wi));
+	return cos_l > 0.0f ? pick * t * t / (area * cos_l) : 0.0f;
+}

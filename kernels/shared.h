@@ -75,6 +75,14 @@ typedef struct {
 	X(BLOB, blob) \
 	X(JULIA_FRACTAL, julia_fractal) \
 	X(SPHERE_SWEEP, sphere_sweep)
+/* The shapes that can be sampled for next-event estimation when they emit:
+ * each has name_emit_sample and name_emit_pdf in its kernel file, and its area
+ * in src/lower_emitter.c; other emitting shapes are found by rays alone. */
+#define PRIM_EMITTERS(X) \
+	X(TRIANGLE, triangle) \
+	X(SPHERE, sphere) \
+	X(DISC, disc) \
+	X(CYLINDER, cylinder)
 #define PRIM_ENUM_ROW(NAME, name) PRIM_##NAME,
 enum {
 	PRIM_SHAPES(PRIM_ENUM_ROW)
@@ -111,7 +119,9 @@ enum { PRISM_OPEN = 1, PRISM_FLAT = 2, PRISM_CONIC = 4 };
  *   the rows of the affine map from world space to that space (for an instance,
  *   the mesh's); the ray keeps its parameter t there. For such a shape, link is
  *   its PRIM_DATA record (its own numbers in a), or -1 when it needs none; for an
- *   instance, the root node of the mesh's BVH.
+ *   instance, the root node of the mesh's BVH. A record's own link is -1, but
+ *   for the first record of an emitting disc or cylinder of the top level: its
+ *   index into the emitter table.
  * Torus: the map to the torus of major radius 1 around the y axis; its record's
  *   a.x is the minor radius over the major one (kernels/shape_torus.cl).
  * Superellipsoid: the map to its own space, where it fills [-1, 1]^3; its
@@ -446,8 +456,8 @@ typedef struct {
 	int pad;
 } dev_sky;
 
-/* An emissive primitive, chosen for next-event estimation with probability
- * proportional to its power. 16 bytes. */
+/* An emissive primitive (of a shape in PRIM_EMITTERS), chosen for next-event
+ * estimation with probability proportional to its power. 16 bytes. */
 typedef struct {
 	float cdf;          /* the probabilities of the emitters up to and with this one */
 	float pdf;          /* the probability of choosing this one */

@@ -738,41 +738,6 @@ static dev_light lower_light(const scene_light *l)
 	};
 }
 
-/* Emissive primitives of the BVH become lights chosen by power (radiance times
- * area times pi); planes are unbounded and are only found by rays. */
-static void lower_emitters(lower_result *r)
-{
-	double total = 0;
-	r->emitters = xmalloc(r->n_prims * sizeof *r->emitters);
-	for (int i = 0; i < r->n_prims; i++) {
-		dev_prim *p = &r->prims[i];
-		const dev_material *m = &r->materials[p->material];   /* its average pigment */
-		float4 e = { m->pigment.x * m->emission.x, m->pigment.y * m->emission.y, m->pigment.z * m->emission.z, 0 };
-		double lum = 0.2126 * e.x + 0.7152 * e.y + 0.0722 * e.z, area;
-		if (lum <= 0 || (p->type != PRIM_SPHERE && p->type != PRIM_TRIANGLE))
-			continue;
-		if (p->type == PRIM_SPHERE) {
-			area = 4 * M_PI * p->a.w * p->a.w;
-		} else {
-			double e1[3] = { p->b.x - p->a.x, p->b.y - p->a.y, p->b.z - p->a.z };
-			double e2[3] = { p->c.x - p->a.x, p->c.y - p->a.y, p->c.z - p->a.z };
-			double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
-			       cz = e1[0] * e2[1] - e1[1] * e2[0];
-			area = 0.5 * sqrt(cx * cx + cy * cy + cz * cz);
-		}
-		p->link = r->n_emitters;
-		r->emitters[r->n_emitters++] = (dev_emitter){ .cdf = (float)(lum * area), .area = (float)area, .prim = i };
-		total += lum * area;
-	}
-	double run = 0;
-	for (int i = 0; i < r->n_emitters; i++) {
-		double power = r->emitters[i].cdf;
-		run += power;
-		r->emitters[i].pdf = (float)(power / total);
-		r->emitters[i].cdf = i == r->n_emitters - 1 ? 1.0f : (float)(run / total);
-	}
-}
-
 static int lower_camera(const scene *s, dev_params *p)
 {
 	const scene_camera *c = &s->camera;
@@ -1104,8 +1069,8 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	out->dev_node_bytes = (size_t)out->n_nodes * sizeof *out->nodes;
 	if (rc == 0 && out->layout == LOWER_LAYOUT_WIDE)
 		rc = widen_trees(out);
-	if (rc == 0)
-		lower_emitters(out);
+	if (rc == 0 && lower_emitters(out) < 0)
+		rc = -1;
 	if (rc == 0 && lower_sky(out) < 0)
 		rc = -1;
 	int *roots = lower_function_roots(&out->textures, s);

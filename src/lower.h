@@ -127,6 +127,10 @@ void lower_free(lower_result *r);
 
 /* The scene's fogs into out->fogs (lower_fog.c); -1 when out of memory. */
 int lower_fogs(const scene *s, lower_result *out);
+/* The emitter table (lower_emitter.c): a row for each emitting primitive of
+ * the top level that next-event estimation can sample, and its link to it;
+ * -1 after saying that memory ran out. */
+int lower_emitters(lower_result *r);
 /* The sky's importance sampling (lower_sky.c): when the sky_sphere is one
  * spherical image_map, out->sky and out->sky_cdf, and params.sky_sampled set;
  * otherwise nothing, and the path tracer finds the sky by its bounce rays

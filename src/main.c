@@ -695,7 +695,8 @@ static void print_ray_stats(const render_stats *st)
 }
 
 /* POV-Ray lights such a scene with its ambient term; a path tracer sees black
- * (unless a fog or a media glows). */
+ * (unless a fog or a media glows). An emitting surface counts whether or not
+ * the emitter table has a row for it: a torus that emits is found by rays. */
 static void warn_if_dark(const struct options *o, const scene *s, const lower_result *lr)
 {
 	const float *bg = s->has_sky ? s->sky : s->background;
@@ -704,7 +705,11 @@ static void warn_if_dark(const struct options *o, const scene *s, const lower_re
 		const dev_media *m = &lr->textures.media[i];
 		glows |= m->emission.x > 0 || m->emission.y > 0 || m->emission.z > 0;
 	}
-	if (lr->n_lights == 0 && lr->n_emitters == 0 && lr->n_fogs == 0 && !glows && bg[0] <= 0 && bg[1] <= 0 &&
+	for (int i = 0; i < lr->n_materials; i++) {
+		const dev_material *m = &lr->materials[i];
+		glows |= m->emission.x > 0 || m->emission.y > 0 || m->emission.z > 0;
+	}
+	if (lr->n_lights == 0 && lr->n_fogs == 0 && !glows && bg[0] <= 0 && bg[1] <= 0 &&
 	    bg[2] <= 0)
 		diag_warning(SRC_NOWHERE, "'%s' has no light_source, no emission and a black background: "
 		             "the image will be black", o->scene);
