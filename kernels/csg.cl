@@ -39,7 +39,7 @@ static inline bool csg_box_meets(global const dev_prim *b, float3 o, float3 inv,
 /* Whether x is inside the leaf q, whose box record is b: never outside b
  * when the leaf's inside lies within it, which spares a CSG of many leaves
  * most of their inside tests. */
-static inline bool csg_leaf_inside(global const bvh_node *nodes, global const dev_prim *prims,
+static inline bool csg_leaf_inside(const scene_data *sc, global const bvh_node *nodes, global const dev_prim *prims,
                                    global const dev_prim *q, global const dev_prim *b, float3 x, uint *counts,
                                    int kind)
 {
@@ -47,14 +47,15 @@ static inline bool csg_leaf_inside(global const bvh_node *nodes, global const de
 		return false;
 	if (q->type == PRIM_CSG_MESH)
 		return csg_mesh_inside(nodes, prims, q, x, counts, kind);
-	return shape_inside(prims, q, x);
+	return shape_inside(sc, prims, q, x);
 }
 
 /* Whether the point x of leaf k's surface is on the CSG's surface; *flip when
  * the CSG's inside is on the leaf's outside there. The stacks are bits, the
  * top in bit 0: v1 with the point inside leaf k, v0 with it outside, has for
  * the entries that hold leaf k. */
-static inline bool csg_classify(global const bvh_node *nodes, global const dev_prim *prims, global const dev_prim *csg,
+static inline bool csg_classify(const scene_data *sc, global const bvh_node *nodes, global const dev_prim *prims,
+                                global const dev_prim *csg,
                                 int k, float3 x, bool *flip, uint *counts, int kind)
 {
 	int first = as_int(csg->a.x), n = as_int(csg->a.y), n_ops = as_int(csg->a.w);
@@ -66,7 +67,7 @@ static inline bool csg_classify(global const bvh_node *nodes, global const dev_p
 		if (op == CSG_LEAF) {
 			uint in = arg == k ? 1u : 0u;
 			if (arg != k && arg < n)
-				in = (uint)csg_leaf_inside(nodes, prims, &prims[first + arg], csg_box(prims, csg, arg), x, counts,
+				in = (uint)csg_leaf_inside(sc, nodes, prims, &prims[first + arg], csg_box(prims, csg, arg), x, counts,
 				                           kind);
 			v1 = v1 << 1 | in;
 			v0 = v0 << 1 | (arg == k ? 0u : in);
@@ -101,7 +102,8 @@ static inline bool csg_classify(global const bvh_node *nodes, global const dev_p
 /* The nearest point of the CSG's surface in (tmin, tmax), or tmax; *prim is the
  * leaf's primitive there, or a mesh leaf's triangle with *inst the leaf (else
  * -1), as traverse_hit has them. */
-static inline float csg_intersect(float3 o, float3 d, global const bvh_node *nodes, global const dev_prim *prims,
+static inline float csg_intersect(const scene_data *sc, float3 o, float3 d, global const bvh_node *nodes,
+                                  global const dev_prim *prims,
                                   global const dev_prim *csg, float tmin, float tmax, int *prim, int *inst, bool *flip,
                                   uint *counts, int kind)
 {
@@ -118,7 +120,7 @@ static inline float csg_intersect(float3 o, float3 d, global const bvh_node *nod
 			int tk_tri = -1;
 			float tk = q->type == PRIM_CSG_MESH
 			         ? csg_mesh_intersect(nodes, prims, q, o, d, tmin, t, best, &tk_tri, counts, kind)
-			         : shape_intersect(o, d, prims, q, t, best);
+			         : shape_intersect(sc, o, d, prims, q, t, best);
 			if (tk < best) {
 				best = tk;
 				which = k;
@@ -127,7 +129,7 @@ static inline float csg_intersect(float3 o, float3 d, global const bvh_node *nod
 		}
 		if (which < 0)
 			return tmax;
-		if (csg_classify(nodes, prims, csg, which, o + best * d, flip, counts, kind)) {
+		if (csg_classify(sc, nodes, prims, csg, which, o + best * d, flip, counts, kind)) {
 			*prim = tri >= 0 ? tri : first + which;
 			*inst = tri >= 0 ? first + which : -1;
 			return best;

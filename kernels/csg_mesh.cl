@@ -15,7 +15,7 @@ static float csg_mesh_intersect(global const bvh_node *nodes, global const dev_p
 	global const dev_prim *rec = &prims[leaf->link];
 	bool solid = any(rec->a.xyz != (float3)(0.0f));
 	float3 mo = intersect_to_local(leaf, o), md = intersect_dir_to_local(leaf, d);
-	traverse_hit h = traverse_mesh(nodes, prims, as_int(rec->a.w), mo, md, solid ? t : start, tmax, false, counts,
+	traverse_hit h = traverse_mesh(0, nodes, prims, as_int(rec->a.w), mo, md, solid ? t : start, tmax, false, counts,
 	                               kind);
 	if (h.prim < 0 || h.t <= t)   /* none, or (with no inside) its nearest is behind */
 		return tmax;
@@ -34,7 +34,7 @@ static bool csg_mesh_inside(global const bvh_node *nodes, global const dev_prim 
 	uint n = 0;
 	float t = 0.0f;
 	for (int c = 0; c < CSG_CROSSINGS; c++) {   /* hits at one distance (an edge's two triangles) count once */
-		traverse_hit h = traverse_mesh(nodes, prims, as_int(rec->a.w), mx, v, t, INFINITY, false, counts, kind);
+		traverse_hit h = traverse_mesh(0, nodes, prims, as_int(rec->a.w), mx, v, t, INFINITY, false, counts, kind);
 		if (h.prim < 0)
 			break;
 		n++;

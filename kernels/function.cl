@@ -5,8 +5,9 @@
  *
  * A function that calls a pattern or pigment function reads the scene's
  * pattern buffers (function_pattern.cl), so the functions take the scene's
- * buffers, defined later (scene.cl); the shapes, which have none, pass 0, and
- * evaluation gives them no such function. */
+ * buffers, defined later (scene.cl): patterns pass theirs, and so does the
+ * traversal to an isosurface (PRIM_SHAPES' S row); raycast.cl's test kernels
+ * have none and pass 0, which the pattern calls check. */
 
 typedef struct scene_data scene_data;
 

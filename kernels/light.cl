@@ -163,7 +163,7 @@ static inline float3 light_emitters(const scene_data *sc, const bsdf *m, const m
 	sc->counts[COUNT_RAYS + RAY_SHADOW]++;
 	/* stop short of the emitter itself; every surface blocks, since the paths
 	 * that cross transparent ones find the emitter by BSDF sampling */
-	if (traverse_any(sc->nodes, sc->prims, p->n_prims, p->n_planes, x, wi, 0.0f, dist * (1.0f - 1e-4f), sc->counts))
+	if (traverse_any(sc, sc->nodes, sc->prims, p->n_prims, p->n_planes, x, wi, 0.0f, dist * (1.0f - 1e-4f), sc->counts))
 		return (float3)(0.0f);
 	media_list l = media_list_at(sc, &ms, solids);   /* through the media the point is in, unbroken */
 	float3 tr = media_transmittance(sc, &l, x, wi, dist, key, dim + 3);

@@ -207,7 +207,7 @@ static inline float3 media_vertex_lights(const scene_data *sc, const media_list 
 	sc->counts[COUNT_RAYS + RAY_SHADOW]++;
 	/* as from surfaces, every surface blocks: paths through them find the emitter by sampling */
 	global const dev_params *p = sc->p;
-	if (traverse_any(sc->nodes, sc->prims, p->n_prims, p->n_planes, x, wi, 0.0f, dist * (1.0f - 1e-4f), sc->counts))
+	if (traverse_any(sc, sc->nodes, sc->prims, p->n_prims, p->n_planes, x, wi, 0.0f, dist * (1.0f - 1e-4f), sc->counts))
 		return sum;
 	float3 tr = media_transmittance(sc, l, x, wi, dist, key, dim + 27);
 	return sum + tr * light_emitted(sc, e->prim, pos, wi, dist) * f *

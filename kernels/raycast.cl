@@ -9,8 +9,8 @@ kernel void raycast(global const bvh_node *nodes, global const dev_prim *prims, 
 	float3 o = rays[2 * i].xyz, d = rays[2 * i + 1].xyz;
 	float tmax = rays[2 * i].w;
 	uint counts[COUNT_N] = { 0 };
-	traverse_hit h = traverse_closest(nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts, RAY_CAMERA);
-	bool any = traverse_any(nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts);
+	traverse_hit h = traverse_closest(0, nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts, RAY_CAMERA);
+	bool any = traverse_any(0, nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts);
 	hits[i] = (float4)(h.t, as_float(h.prim), as_float(h.inst), any ? 1.0f : 0.0f);
 }
 
@@ -26,12 +26,12 @@ kernel void raycast_surface(global const bvh_node *nodes, global const dev_prim 
 	float3 o = rays[2 * i].xyz, d = rays[2 * i + 1].xyz;
 	float tmax = rays[2 * i].w;
 	uint counts[COUNT_N] = { 0 };
-	traverse_hit h = traverse_closest(nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts, RAY_CAMERA);
-	bool any = traverse_any(nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts);
+	traverse_hit h = traverse_closest(0, nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts, RAY_CAMERA);
+	bool any = traverse_any(0, nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts);
 	hits[i] = (float4)(h.t, as_float(h.prim), as_float(h.inst), any ? 1.0f : 0.0f);
 	surfaces[i] = (float4)(0.0f, 0.0f, 0.0f, as_float(-1));
 	if (h.prim >= 0) {
-		intersect_surface s = intersect_surface_at(prims, normals, h.prim, h.inst, h.flip, o + h.t * d);
+		intersect_surface s = intersect_surface_at(0, prims, normals, h.prim, h.inst, h.flip, o + h.t * d);
 		surfaces[i] = (float4)(s.ng, as_float(s.object));
 	}
 }
@@ -41,7 +41,7 @@ kernel void raycast_surface(global const bvh_node *nodes, global const dev_prim 
 kernel void inside_points(global const dev_prim *prims, global const float4 *points, global int *inside)
 {
 	int i = get_global_id(0);
-	inside[i] = shape_inside(prims, &prims[as_int(points[i].w)], points[i].xyz) ? 1 : 0;
+	inside[i] = shape_inside(0, prims, &prims[as_int(points[i].w)], points[i].xyz) ? 1 : 0;
 }
 
 /* The same, with the surface: each ray's closest hit, the shading normal
@@ -57,13 +57,13 @@ kernel void shapecast(global const bvh_node *nodes, global const dev_prim *prims
 	float3 o = rays[2 * i].xyz, d = rays[2 * i + 1].xyz;
 	float tmax = rays[2 * i].w;
 	uint counts[COUNT_N] = { 0 };
-	traverse_hit h = traverse_closest(nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts, RAY_CAMERA);
-	bool any = traverse_any(nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts);
-	bool in = shape_inside(prims, &prims[shape], o);
+	traverse_hit h = traverse_closest(0, nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts, RAY_CAMERA);
+	bool any = traverse_any(0, nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts);
+	bool in = shape_inside(0, prims, &prims[shape], o);
 	/* the shading normal, which trace() gives (no smooth triangle here reads
 	 * the normals buffer, so the primitives stand in for it) */
 	float3 n = h.prim >= 0 && h.inst < 0
-	         ? intersect_surface_at(prims, (global const float4 *)prims, h.prim, -1, false, o + h.t * d).ns
+	         ? intersect_surface_at(0, prims, (global const float4 *)prims, h.prim, -1, false, o + h.t * d).ns
 	         : (float3)(0.0f);
 	out[2 * i] = (float4)(h.t, as_float(h.prim), any ? 1.0f : 0.0f, in ? 1.0f : 0.0f);
 	out[2 * i + 1] = (float4)(n, 0.0f);
@@ -89,9 +89,9 @@ kernel void trace_rays(global const bvh_node *nodes, global const dev_prim *prim
 	float tmax = rays[2 * i].w;
 	uint counts[COUNT_N] = { 0 };
 	if (any) {
-		hits[i] = (float4)(traverse_any(nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts) ? 1.0f : 0.0f);
+		hits[i] = (float4)(traverse_any(0, nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts) ? 1.0f : 0.0f);
 		return;
 	}
-	traverse_hit h = traverse_closest(nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts, RAY_CAMERA);
+	traverse_hit h = traverse_closest(0, nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts, RAY_CAMERA);
 	hits[i] = (float4)(h.prim >= 0 ? h.t : INFINITY, as_float(h.prim), as_float(h.inst), 0.0f);
 }

@@ -8,28 +8,38 @@
 	case PRIM_##NAME: return name##_normal(prims, p, x);
 #define SHAPE_INSIDE_ROW(NAME, name) \
 	case PRIM_##NAME: return name##_inside(prims, p, x);
+#define SHAPE_INTERSECT_SCENE_ROW(NAME, name) \
+	case PRIM_##NAME: return name##_intersect(sc, o, d, prims, p, tmin, tmax);
+#define SHAPE_NORMAL_SCENE_ROW(NAME, name) \
+	case PRIM_##NAME: return name##_normal(sc, prims, p, x);
+#define SHAPE_INSIDE_SCENE_ROW(NAME, name) \
+	case PRIM_##NAME: return name##_inside(sc, prims, p, x);
 
-static inline float shape_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
-                             float tmin, float tmax)
+/* sc: the scene's buffers, or 0 where there are none (raycast.cl's test
+ * kernels), for the shapes whose functions read them (PRIM_SHAPES' S rows). */
+static inline float shape_intersect(const scene_data *sc, float3 o, float3 d, global const dev_prim *prims,
+                                    global const dev_prim *p, float tmin, float tmax)
 {
 	switch (p->type) {
-	PRIM_SHAPES(SHAPE_INTERSECT_ROW)
+	PRIM_SHAPES(SHAPE_INTERSECT_ROW, SHAPE_INTERSECT_SCENE_ROW)
 	default: return tmax;
 	}
 }
 
-static inline float3 shape_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 shape_normal(const scene_data *sc, global const dev_prim *prims, global const dev_prim *p,
+                                  float3 x)
 {
 	switch (p->type) {
-	PRIM_SHAPES(SHAPE_NORMAL_ROW)
+	PRIM_SHAPES(SHAPE_NORMAL_ROW, SHAPE_NORMAL_SCENE_ROW)
 	default: return (float3)(0.0f, 1.0f, 0.0f);
 	}
 }
 
-static inline bool shape_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool shape_inside(const scene_data *sc, global const dev_prim *prims, global const dev_prim *p,
+                                float3 x)
 {
 	switch (p->type) {
-	PRIM_SHAPES(SHAPE_INSIDE_ROW)
+	PRIM_SHAPES(SHAPE_INSIDE_ROW, SHAPE_INSIDE_SCENE_ROW)
 	default: return false;
 	}
 }
@@ -111,7 +121,8 @@ typedef struct {
 
 /* flip: the hit is on a CSG leaf whose outside is the CSG's inside there (a
  * subtracted shape), so the normal turns over. */
-static inline intersect_surface intersect_surface_at(global const dev_prim *prims, global const float4 *normals,
+static inline intersect_surface intersect_surface_at(const scene_data *sc, global const dev_prim *prims,
+                                                     global const float4 *normals,
                                               int prim, int inst, bool flip, float3 x)
 {
 	global const dev_prim *p = &prims[prim];
@@ -127,7 +138,7 @@ static inline intersect_surface intersect_surface_at(global const dev_prim *prim
 		s.emitter = shape_emitter(prims, p);
 	}
 	s.object_x = lx;
-	s.ng = shape_normal(prims, p, lx);
+	s.ng = shape_normal(sc, prims, p, lx);
 	s.ns = s.ng;
 	if (p->type == PRIM_SMOOTH_TRIANGLE) {
 		float3 ns = triangle_smooth_normal(p, normals + 3 * p->link, lx);

@@ -13,7 +13,10 @@
  * function along the ray within the container, each found by halving the
  * stretch while max_gradient says the function may reach the threshold in
  * it, down to stretches shorter than accuracy (Function_Find_Root). The
- * host's twin is trace() in src/shape_isosurface.c. */
+ * host's twin is trace() in src/shape_isosurface.c, which refuses a function
+ * that calls the scene's patterns: only the device evaluates those, through
+ * the scene's buffers that the isosurface's functions take (PRIM_SHAPES' S
+ * row). */
 
 enum { ISO_OPEN = 1, ISO_POSITIVE = 2, ISO_SPHERE = 4 };
 #define ISO_MAX_TRACE 10
@@ -23,9 +26,10 @@ typedef struct {
 	real3 lo, hi;          /* box corners; sphere: lo the centre, hi.x the radius */
 	int fn, flags, max_trace;
 	real threshold, accuracy, max_gradient;
+	const scene_data *sc;  /* for its function's pattern calls */
 } iso_shape;
 
-static inline iso_shape iso_shape_of(global const dev_prim *prims, global const dev_prim *p)
+static inline iso_shape iso_shape_of(const scene_data *sc, global const dev_prim *prims, global const dev_prim *p)
 {
 	float4 a = prims[p->link].a, b = prims[p->link + 1].a, c = prims[p->link + 2].a;
 	iso_shape s;
@@ -37,13 +41,14 @@ static inline iso_shape iso_shape_of(global const dev_prim *prims, global const 
 	s.max_gradient = (real)c.y;
 	s.max_trace = (int)c.z;
 	s.flags = (int)c.w;
+	s.sc = sc;
 	return s;
 }
 
 /* The function less the threshold, negative inside (POV-Ray's EvaluatePolarized). */
 static inline real iso_value(const iso_shape *s, real3 x)
 {
-	real f = scene_function_at(0, s->fn, x.x, x.y, x.z);   /* eval gives it no pattern */
+	real f = scene_function_at(s->sc, s->fn, x.x, x.y, x.z);
 	return (s->flags & ISO_POSITIVE) ? s->threshold - f : f - s->threshold;
 }
 
@@ -112,10 +117,10 @@ static inline bool iso_find_root(const iso_shape *s, real3 P, real3 D, real t1, 
 	}
 }
 
-static inline float isosurface_intersect(float3 o, float3 d, global const dev_prim *prims, global const dev_prim *p,
-                                  float tmin, float tmax)
+static inline float isosurface_intersect(const scene_data *sc, float3 o, float3 d, global const dev_prim *prims,
+                                         global const dev_prim *p, float tmin, float tmax)
 {
-	iso_shape s = iso_shape_of(prims, p);
+	iso_shape s = iso_shape_of(sc, prims, p);
 	real3 P = intersect_to_local_real(p, o), D = intersect_dir_to_local_real(p, d);
 	real t1, t2;
 	if (!iso_container(&s, P, D, &t1, &t2))
@@ -171,9 +176,10 @@ static inline float isosurface_intersect(float3 o, float3 d, global const dev_pr
 
 /* The container's normal where x is on its surface (and the function inside
  * there), else the function's gradient by POV-Ray's forward differences. */
-static inline float3 isosurface_normal(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline float3 isosurface_normal(const scene_data *sc, global const dev_prim *prims, global const dev_prim *p,
+                                       float3 x)
 {
-	iso_shape s = iso_shape_of(prims, p);
+	iso_shape s = iso_shape_of(sc, prims, p);
 	real3 v = intersect_to_local_real(p, x), n;
 	real size = (s.flags & ISO_SPHERE) ? s.hi.x : fmax(fmax(s.hi.x - s.lo.x, s.hi.y - s.lo.y), s.hi.z - s.lo.z);
 	real eps = (real)1e-4 * fmax(size, (real)1), f = iso_value(&s, v);
@@ -201,9 +207,10 @@ static inline float3 isosurface_normal(global const dev_prim *prims, global cons
 	return intersect_normal_to_world(p, convert_float3(n));
 }
 
-static inline bool isosurface_inside(global const dev_prim *prims, global const dev_prim *p, float3 x)
+static inline bool isosurface_inside(const scene_data *sc, global const dev_prim *prims, global const dev_prim *p,
+                                     float3 x)
 {
-	iso_shape s = iso_shape_of(prims, p);
+	iso_shape s = iso_shape_of(sc, prims, p);
 	real3 v = intersect_to_local_real(p, x);
 	bool in_container = (s.flags & ISO_SPHERE) ? length(v - s.lo) <= s.hi.x
 	                  : all(v >= s.lo) && all(v <= s.hi);

@@ -53,9 +53,11 @@ typedef struct {
 /* The device's shapes, one row each: X(NAME, name) makes PRIM_NAME and calls
  * name_intersect, name_normal and name_inside, which kernels/shape_*.cl define
  * (kernels/shape.cl dispatches on the row; src/shape.h says how a new shape is
- * added). The order is the numbering; the kinds after the table are not shapes
- * a ray meets by itself. */
-#define PRIM_SHAPES(X) \
+ * added); an S row's functions take the scene's buffers first (an isosurface's
+ * function may call the scene's pattern and pigment functions). The order is
+ * the numbering; the kinds after the table are not shapes a ray meets by
+ * itself. */
+#define PRIM_SHAPES(X, S) \
 	X(TRIANGLE, triangle) \
 	X(SPHERE, sphere) \
 	X(PLANE, plane) \
@@ -70,7 +72,7 @@ typedef struct {
 	X(DISC, disc) \
 	X(TORUS, torus) \
 	X(SUPERELLIPSOID, superellipsoid) \
-	X(ISOSURFACE, isosurface) \
+	S(ISOSURFACE, isosurface) \
 	X(POLY, poly) \
 	X(BLOB, blob) \
 	X(JULIA_FRACTAL, julia_fractal) \
@@ -85,7 +87,7 @@ typedef struct {
 	X(CYLINDER, cylinder)
 #define PRIM_ENUM_ROW(NAME, name) PRIM_##NAME,
 enum {
-	PRIM_SHAPES(PRIM_ENUM_ROW)
+	PRIM_SHAPES(PRIM_ENUM_ROW, PRIM_ENUM_ROW)
 	PRIM_INSTANCE,   /* a placed mesh: traverse.cl walks the mesh's BVH */
 	PRIM_CSG,        /* a CSG object: kernels/csg.cl classifies its leaves' hits */
 	PRIM_DATA,       /* numbers of the record before it, never hit by itself */

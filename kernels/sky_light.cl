@@ -21,7 +21,7 @@ static inline float3 light_sky(const scene_data *sc, const bsdf *m, const materi
 	if (!(pdf_sky > 0.0f) || dot(ng, wi) <= 0.0f || (f.x <= 0.0f && f.y <= 0.0f && f.z <= 0.0f))
 		return (float3)(0.0f);
 	sc->counts[COUNT_RAYS + RAY_SHADOW]++;
-	if (traverse_any(sc->nodes, sc->prims, p->n_prims, p->n_planes, x, wi, 0.0f, INFINITY, sc->counts))
+	if (traverse_any(sc, sc->nodes, sc->prims, p->n_prims, p->n_planes, x, wi, 0.0f, INFINITY, sc->counts))
 		return (float3)(0.0f);
 	/* what a bounce ray leaving the scene along wi goes through: the fogs
 	 * (their glow is the path's, unweighted) and the media around x */

@@ -37,7 +37,7 @@ static inline shading_point texture_point(const scene_data *sc, traverse_hit hit
 {
 	shading_point sp;
 	sp.x = o + hit.t * d;
-	intersect_surface s = intersect_surface_at(sc->prims, sc->normals, hit.prim, hit.inst, hit.flip, sp.x);
+	intersect_surface s = intersect_surface_at(sc, sc->prims, sc->normals, hit.prim, hit.inst, hit.flip, sp.x);
 	sp.object_x = s.object_x;
 	sp.uv = sc->p->scene_flags & SCENE_UV ? shape_uv(sc->prims, sc->normals, hit.prim, hit.inst, s.object_x, sp.x)
 	                                      : (float2)(0.0f);

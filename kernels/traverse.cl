@@ -72,7 +72,8 @@ typedef struct {
  * adds up the node and primitive tests for the ray's kind (the heat map's measure). */
 #if !BVH_WIDE
 #define TRAVERSE_FUNCTION(NAME, SETUP, LEAF_PRIM)                                                \
-static inline traverse_hit NAME(global const bvh_node *nodes, global const dev_prim *prims, int root,  \
+static inline traverse_hit NAME(const scene_data *sc, global const bvh_node *nodes,               \
+                         global const dev_prim *prims, int root,                                 \
                          float3 o, float3 d, float tmin, float tmax, bool any, uint *counts,     \
                          int kind)                                                              \
 {                                                                                               \
@@ -165,7 +166,8 @@ static inline float4 traverse_children(global const bvh_wnode *n, const traverse
  * rays) only brings the nearest forward, in three: 4-6% more shadow rays a
  * second in make bench's traversal-only measurement. */
 #define TRAVERSE_FUNCTION(NAME, SETUP, LEAF_PRIM)                                                \
-static inline traverse_hit NAME(global const bvh_node *nodes_, global const dev_prim *prims, int root, \
+static inline traverse_hit NAME(const scene_data *sc, global const bvh_node *nodes_,              \
+                         global const dev_prim *prims, int root,                                 \
                          float3 o, float3 d, float tmin, float tmax, bool any, uint *counts,     \
                          int kind)                                                              \
 {                                                                                               \
@@ -251,7 +253,7 @@ TRAVERSE_FUNCTION(traverse_top, triangle_ray tri = triangle_setup(d);, {
 		float3 mo = intersect_to_local(q, o);
 		float3 md = (float3)(dot(q->a.xyz, d), dot(q->b.xyz, d), dot(q->c.xyz, d));
 		/* the node buffer's declared type again (the wide layout's loop reads it as bvh_wnode) */
-		traverse_hit h = traverse_mesh((global const bvh_node *)nodes, prims, q->link, mo, md, tmin, hit.t, any,
+		traverse_hit h = traverse_mesh(sc, (global const bvh_node *)nodes, prims, q->link, mo, md, tmin, hit.t, any,
 		                               counts, kind);
 		if (h.prim >= 0) {
 			hit.t = h.t;
@@ -263,7 +265,7 @@ TRAVERSE_FUNCTION(traverse_top, triangle_ray tri = triangle_setup(d);, {
 		int leaf;   /* one name a line: commas would split the macro's argument */
 		int leaf_inst;
 		bool flip;
-		float t = csg_intersect(o, d, (global const bvh_node *)nodes, prims, q, tmin, hit.t, &leaf, &leaf_inst,
+		float t = csg_intersect(sc, o, d, (global const bvh_node *)nodes, prims, q, tmin, hit.t, &leaf, &leaf_inst,
 		                        &flip, counts, kind);
 		if (t < hit.t) {
 			hit.t = t;
@@ -276,7 +278,7 @@ TRAVERSE_FUNCTION(traverse_top, triangle_ray tri = triangle_setup(d);, {
 		 * ray's part of their test made once */
 		float t = q->type == PRIM_TRIANGLE || q->type == PRIM_SMOOTH_TRIANGLE
 		        ? triangle_intersect_ray(o, &tri, q, tmin, hit.t)
-		        : shape_intersect(o, d, prims, q, tmin, hit.t);
+		        : shape_intersect(sc, o, d, prims, q, tmin, hit.t);
 		if (t < hit.t) {
 			hit.t = t;
 			hit.prim = i;
@@ -288,8 +290,8 @@ TRAVERSE_FUNCTION(traverse_top, triangle_ray tri = triangle_setup(d);, {
 
 /* The unbounded primitives (planes, quadrics, and CSG objects with no bounds) after the
  * top level's n_prims: every ray tests them. */
-static inline traverse_hit traverse_planes(global const bvh_node *nodes, global const dev_prim *prims, int n_prims,
-                                           int n_planes, float3 o, float3 d, float tmin, traverse_hit hit,
+static inline traverse_hit traverse_planes(const scene_data *sc, global const bvh_node *nodes,
+                                           global const dev_prim *prims, int n_prims, int n_planes, float3 o, float3 d, float tmin, traverse_hit hit,
                                            uint *counts, int kind)
 {
 	for (int i = n_prims; i < n_prims + n_planes; i++) {
@@ -297,7 +299,7 @@ static inline traverse_hit traverse_planes(global const bvh_node *nodes, global 
 		if (prims[i].type == PRIM_CSG) {
 			int leaf, leaf_inst;
 			bool flip;
-			float t = csg_intersect(o, d, nodes, prims, &prims[i], tmin, hit.t, &leaf, &leaf_inst, &flip, counts,
+			float t = csg_intersect(sc, o, d, nodes, prims, &prims[i], tmin, hit.t, &leaf, &leaf_inst, &flip, counts,
 			                        kind);
 			if (t < hit.t) {
 				hit.t = t;
@@ -307,7 +309,7 @@ static inline traverse_hit traverse_planes(global const bvh_node *nodes, global 
 			}
 			continue;
 		}
-		float t = shape_intersect(o, d, prims, &prims[i], tmin, hit.t);
+		float t = shape_intersect(sc, o, d, prims, &prims[i], tmin, hit.t);
 		if (t < hit.t) {
 			hit.t = t;
 			hit.prim = i;
@@ -318,24 +320,27 @@ static inline traverse_hit traverse_planes(global const bvh_node *nodes, global 
 	return hit;
 }
 
-/* Closest hit in (tmin, tmax). */
-static inline traverse_hit traverse_closest(global const bvh_node *nodes, global const dev_prim *prims,
+/* Closest hit in (tmin, tmax). sc: the scene's buffers, which an isosurface's
+ * function may read, or 0 (raycast.cl's test kernels). */
+static inline traverse_hit traverse_closest(const scene_data *sc, global const bvh_node *nodes,
+                                            global const dev_prim *prims,
                                      int n_prims, int n_planes, float3 o, float3 d, float tmin,
                                      float tmax, uint *counts, int kind)
 {
 	traverse_hit hit = { tmax, -1, -1, false };
 	if (n_prims > 0)
-		hit = traverse_top(nodes, prims, 0, o, d, tmin, tmax, false, counts, kind);
-	return traverse_planes(nodes, prims, n_prims, n_planes, o, d, tmin, hit, counts, kind);
+		hit = traverse_top(sc, nodes, prims, 0, o, d, tmin, tmax, false, counts, kind);
+	return traverse_planes(sc, nodes, prims, n_prims, n_planes, o, d, tmin, hit, counts, kind);
 }
 
 /* Any hit in (tmin, tmax): shadow rays stop at the first occluder. */
-static inline bool traverse_any(global const bvh_node *nodes, global const dev_prim *prims, int n_prims,
+static inline bool traverse_any(const scene_data *sc, global const bvh_node *nodes, global const dev_prim *prims,
+                                int n_prims,
                          int n_planes, float3 o, float3 d, float tmin, float tmax, uint *counts)
 {
 	traverse_hit none = { tmax, -1, -1, false };
-	if (traverse_planes(nodes, prims, n_prims, n_planes, o, d, tmin, none, counts, RAY_SHADOW).prim >= 0)
+	if (traverse_planes(sc, nodes, prims, n_prims, n_planes, o, d, tmin, none, counts, RAY_SHADOW).prim >= 0)
 		return true;
 	return n_prims > 0 &&
-	       traverse_top(nodes, prims, 0, o, d, tmin, tmax, true, counts, RAY_SHADOW).prim >= 0;
+	       traverse_top(sc, nodes, prims, 0, o, d, tmin, tmax, true, counts, RAY_SHADOW).prim >= 0;
 }

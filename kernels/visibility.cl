@@ -16,7 +16,7 @@ static inline traverse_hit visibility_closest(const scene_data *sc, float3 o, fl
                                        int kind)
 {
 	for (;;) {
-		traverse_hit h = traverse_closest(sc->nodes, sc->prims, sc->p->n_prims, sc->p->n_planes, o, d, tmin, tmax,
+		traverse_hit h = traverse_closest(sc, sc->nodes, sc->prims, sc->p->n_prims, sc->p->n_planes, o, d, tmin, tmax,
 		                                  sc->counts, kind);
 		if (h.prim < 0 || !(sc->objects[visibility_object(sc, h)] & skip))
 			return h;
@@ -48,7 +48,7 @@ static inline float3 visibility_shadow(const scene_data *sc, float3 o, float3 l,
 {
 	sc->counts[COUNT_RAYS + RAY_SHADOW]++;
 	if (!(sc->p->scene_flags & SCENE_SHADOWS_PASS))
-		return traverse_any(sc->nodes, sc->prims, sc->p->n_prims, sc->p->n_planes, o, l, tmin, tmax, sc->counts)
+		return traverse_any(sc, sc->nodes, sc->prims, sc->p->n_prims, sc->p->n_planes, o, l, tmin, tmax, sc->counts)
 		     ? (float3)(0.0f) : colour;
 	float start = 0.0f;
 	for (int i = 0; i < VISIBILITY_CROSSINGS; i++) {

@@ -35,9 +35,9 @@ struct fcomp {
 /* What --skip-unsupported does instead, for its warning: "the pattern is averaged". */
 static const char *fallback;
 /* Whether the function being made may call pattern and pigment functions: a
- * pigment's function pattern may (the device runs it with the scene's
- * pattern buffers), an isosurface or a height_field may not (the traversal
- * has no pattern buffers, and the host no pattern evaluator). */
+ * pigment's function pattern or an isosurface may (the device runs it with
+ * the scene's pattern buffers), a height_field or a parametric may not (the
+ * host, which makes their meshes, has no pattern evaluator). */
 static bool patterns_allowed;
 
 static const char *const xyz[] = { "x", "y", "z" };
@@ -193,7 +193,8 @@ static int function_pigment(struct fcomp *c, const value *fn, const char *name, 
 {
 	if (!patterns_allowed)
 		return unsupported(c->e, c->skipped, use, "'%s' is a pattern or pigment function, which only a "
-		                   "pigment's function pattern can call yet (not an isosurface or a height_field)", name);
+		                   "pigment's function pattern or an isosurface can call yet (not a height_field or a "
+		                   "parametric)", name);
 	if (has_function_pattern(c->e->s, fn->mat.pattern, 0))
 		return unsupported(c->e, c->skipped, use, "'%s' is made of a function pattern: the device runs a "
 		                   "pattern function's pattern only when it calls no function", name);

@@ -87,7 +87,9 @@ int eval_isosurface_arguments(struct eval *e, struct cursor *c, const ast_node *
 			eval_error(e, item ? item->loc : b->loc, "an isosurface starts with its function { }");
 		return -1;
 	}
-	int rc = eval_function_index(e, item, "the isosurface is left out", &o->function);
+	/* the device runs it, with the scene's patterns; trace() and inside() refuse
+	 * one that calls them (eval_trace.c) */
+	int rc = eval_function_pattern_index(e, item, "the isosurface is left out", &o->function);
 	if (rc < 0)
 		return -1;
 	if (rc > 0)

@@ -159,6 +159,26 @@ static int object_arg(struct eval *e, const ast_node *n, const char *fn, value *
 	return 0;
 }
 
+/* 0 when the host can trace obj: not when an isosurface's function calls the
+ * scene's patterns, which only the device evaluates. Then an error, or with
+ * --skip-unsupported a warning and 1: trace() misses, inside() is false. */
+static int host_traceable(struct eval *e, const struct objval *obj, const ast_node *n)
+{
+	for (int i = 0; i < obj->n_objs; i++)
+		if (obj->objs[i].shape == SHAPE_ISOSURFACE && scene_function_calls_patterns(e->s, obj->objs[i].function)) {
+			const char *fn = ast_keyword_name(n->kw);
+			if (!e->opt->skip_unsupported) {
+				eval_error(e, n->kids[0]->loc, "%s() of an isosurface whose function calls a pattern or pigment "
+				           "function, which only the device evaluates", fn);
+				return -1;
+			}
+			eval_warn_once(e, n->loc, "trace of pattern isosurface", "%s() of an isosurface whose function "
+			               "calls a pattern or pigment function, which only the device evaluates: it misses", fn);
+			return 1;
+		}
+	return 0;
+}
+
 int eval_trace(struct eval *e, const ast_node *n, value *out)
 {
 	if (n->n_kids < 3 || n->n_kids > 4) {
@@ -186,7 +206,12 @@ int eval_trace(struct eval *e, const ast_node *n, value *out)
 		eval_warn_once(e, n->loc, "trace of unsupported", "trace() misses the '%s', which eclat leaves out",
 		               v.obj->unsupported);
 	}
-	if (!trace_object(e->s, v.obj, o, d, point, normal))
+	int host = host_traceable(e, v.obj, n);
+	if (host < 0) {
+		eval_value_free(&v);
+		return -1;
+	}
+	if (host > 0 || !trace_object(e->s, v.obj, o, d, point, normal))
 		memset(normal, 0, sizeof normal);
 	eval_value_free(&v);
 	if (n->n_kids == 4)
@@ -215,8 +240,13 @@ int eval_inside(struct eval *e, const ast_node *n, value *out)
 		return -1;
 	}
 	const struct objval *obj = v.obj;
+	int host = host_traceable(e, obj, n);
+	if (host < 0) {
+		eval_value_free(&v);
+		return -1;
+	}
 	bool in = false;
-	for (int i = 0; i < obj->n_objs && !in;) {
+	for (int i = 0; host == 0 && i < obj->n_objs && !in;) {
 		const struct objcsg *g = csg_at(obj, i);
 		struct leaves c = { e->s, &obj->objs[i], { p[0], p[1], p[2] } };
 		if (g) {

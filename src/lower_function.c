@@ -93,11 +93,12 @@ static void statement(struct text *t, const scene *s, const int *roots, const sc
 	} else if (o->op == FOP_PATTERN || o->op == FOP_PIGMENT) {
 		*top -= 3;
 		int root = roots ? roots[o->arg] : 0;
+		/* sc is 0 only in raycast.cl's test kernels, which run no pattern */
 		if (o->op == FOP_PATTERN)
-			put(t, "function_pattern(sc, %d, ", root);
+			put(t, "sc ? function_pattern(sc, %d, ", root);
 		else
-			put(t, "function_pigment(sc, %d, %d, ", root, (int)o->value);
-		put(t, "t%d, t%d, t%d);\n", stack[*top], stack[*top + 1], stack[*top + 2]);
+			put(t, "sc ? function_pigment(sc, %d, %d, ", root, (int)o->value);
+		put(t, "t%d, t%d, t%d) : (real)0;\n", stack[*top], stack[*top + 1], stack[*top + 2]);
 	} else if (o->op == FOP_CALL) {
 		int n = s->functions[o->arg].n_params;
 		*top -= n;

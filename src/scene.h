@@ -546,6 +546,9 @@ int scene_add_function(scene *s, const scene_function *f);
 /* The value of function f for its parameters' values args, as the device computes it
  * but in double: the host's twin of the OpenCL that lowering writes. */
 double scene_function_eval(const scene *s, int f, const double *args);
+/* Whether function f, or one it calls, calls a pattern or pigment function,
+ * which only the device evaluates (scene_function_eval cannot). */
+bool scene_function_calls_patterns(const scene *s, int f);
 /* POV-Ray's Noise at p, in [0, 1], with noise_generator 1, 2 or 3, as
  * kernels/pattern.cl's pattern_noise computes it, in float (scene_noise.c). */
 float scene_noise(const float p[3], int generator);

@@ -130,3 +130,25 @@ double scene_function_eval(const scene *s, int f, const double *args)
 	}
 	return top > 0 ? stack[top - 1] : 0;
 }
+
+/* Calls reach only functions made before the caller (eval compiles a callee
+ * first), so the walk ends; depth guards a malformed pool all the same. */
+static bool calls_patterns(const scene *s, int f, int depth)
+{
+	if (f < 0 || f >= s->n_functions || depth > 64)
+		return false;
+	const scene_function *fn = &s->functions[f];
+	for (int i = 0; i < fn->n_ops; i++) {
+		const scene_fop *o = &fn->ops[i];
+		if (o->op == FOP_PATTERN || o->op == FOP_PIGMENT)
+			return true;
+		if (o->op == FOP_CALL && calls_patterns(s, o->arg, depth + 1))
+			return true;
+	}
+	return false;
+}
+
+bool scene_function_calls_patterns(const scene *s, int f)
+{
+	return calls_patterns(s, f, 0);
+}
