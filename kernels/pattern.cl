@@ -788,6 +788,9 @@ static float pattern_plain(global const dev_pattern *pt, global const dev_warp *
 	case PATTERN_SLOPE:
 		v = pattern_slope(pt, p, n);
 		break;
+	case PATTERN_TILING:
+		v = pattern_tiling(p, (int)pt->params[0].x);
+		break;
 	case PATTERN_MANDEL:
 	case PATTERN_JULIA:
 	case PATTERN_MAGNET:

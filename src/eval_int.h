@@ -262,6 +262,8 @@ int eval_pattern_modifier(struct eval *e, struct cursor *c, const ast_node *item
 int eval_pattern_transform(struct eval *e, scene_pigment *pg, const xform *t, src_loc loc);
 /* The argument of a pattern keyword: gradient's vector, spiral's arms. */
 int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *pg);
+/* tiling N: its number, read after the keyword (eval_pattern.c). */
+int eval_pattern_tiling(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg);
 /* mandel, julia and magnet (eval_fractal.c): their defaults, and their
  * arguments and modifiers, as eval_pattern_modifier. */
 bool eval_pattern_is_fractal(int kind);

@@ -47,7 +47,6 @@ void eval_pattern_defaults(scene_pigment *pg, int kind, src_loc loc)
 		break;
 	case PATTERN_MARBLE: case PATTERN_WOOD: pg->wave = WAVE_TRIANGLE; break;
 	case PATTERN_QUILTED: pg->frequency = 0; p[0] = 1; p[1] = 1; break;
-	case PATTERN_WAVES: case PATTERN_RIPPLES: p[0] = 10; break;   /* number_of_waves */
 	case PATTERN_BRICK: p[0] = 8; p[1] = 3; p[2] = 4.5; p[3] = 0.5; break;
 	case PATTERN_CRACKLE: p[0] = -1; p[1] = 1; p[2] = 0; p[3] = 2; break;
 	case PATTERN_GRADIENT: p[0] = 1; break;
@@ -412,6 +411,33 @@ int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *p
 		return 0;
 	}
 	return arg_float(e, item, &pg->params[0][0]);
+}
+
+/* The tilings kernels/pattern_tiling.cl draws: 1 to this. */
+#define EVAL_TILINGS 12
+
+/* tiling N: POV-Ray 3.7 keeps N as an unsigned char (its integer part modulo
+ * 256, as x86 converts it: 259 is tiling 3) and refuses what is not then 1 to
+ * 27. 2: a tiling eclat cannot draw yet. */
+int eval_pattern_tiling(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg)
+{
+	int err = 0;
+	double n;
+	const ast_node *arg = eval_next_expr(c, &err);
+	if (!arg) {
+		if (!err)
+			eval_error(e, item->loc, "'tiling' needs its number, 1 to 27");
+		return -1;
+	}
+	if (eval_expect_float(e, arg, &n))
+		return -1;
+	long code = fabs(n) < 2e9 ? ((long)n & 255) : 0;
+	if (code < 1 || code > 27) {
+		eval_error(e, arg->loc, "tiling number must be between 1 and 27, found %g", n);
+		return -1;
+	}
+	pg->params[0][0] = (double)code;
+	return code > EVAL_TILINGS ? 2 : 0;
 }
 
 /* ---- slope ---- */

@@ -169,7 +169,7 @@ static const char *test_kernel =
 	"}\n";
 
 static const char *const kernel_files[] = { "kernels/shared.h", "kernels/intersect.cl", "kernels/function.cl", "kernels/scene.cl",
-                                            "kernels/pattern_tables.cl", "kernels/pattern_fractal.cl", "kernels/pattern.cl",
+                                            "kernels/pattern_tables.cl", "kernels/pattern_fractal.cl", "kernels/pattern_tiling.cl", "kernels/pattern.cl",
                                             "kernels/normal.cl" };
 
 static void fill_pattern(const struct ncase *c, dev_pattern *pt, dev_warp *warps, dev_map_entry *maps)

@@ -215,6 +215,31 @@ static const struct pcase cases[] = {
 	{ "magnet2_julia", "magnet 2 julia <0.4, 0.3>, 30 interior 6, 0.5 exterior 6, 0.1", 0, PATTERN_MAGNET, WAVE_RAMP, 0, 1, 0, 1, { 30, 4, 0.4f, 0.3f }, { 6, 0.5f, 6, 0.1f }, { { 0 } }, 0,
 	  { 1.5f, 1.5f, 1.5f }, { 0 }, { 0, 0, 0 }, 0 },
 	{ "facets", NULL, 0, PATTERN_FACETS, WAVE_RAMP, 0, 1, 0, 1, { 0 }, { 0 }, { { 0 } }, 0, { 0 }, { 0 }, { 0 }, 0 },
+	/* tilings (pattern_tiling.cl) of the x-z plane, turned to face the camera */
+	{ "tiling1", "tiling 1", 0, PATTERN_TILING, WAVE_RAMP, 0, 1, 0, 1, { 1 }, { 0 }, { { 0 } }, 0,
+	  { 0.7f, 0.7f, 0.7f }, { -90, 0, 0 }, { 0 }, 0 },
+	{ "tiling2", "tiling 2", 0, PATTERN_TILING, WAVE_RAMP, 0, 1, 0, 1, { 2 }, { 0 }, { { 0 } }, 0,
+	  { 0.7f, 0.7f, 0.7f }, { -90, 0, 0 }, { 0 }, 0 },
+	{ "tiling3", "tiling 3", 0, PATTERN_TILING, WAVE_RAMP, 0, 1, 0, 1, { 3 }, { 0 }, { { 0 } }, 0,
+	  { 0.7f, 0.7f, 0.7f }, { -90, 0, 0 }, { 0 }, 0 },
+	{ "tiling4", "tiling 4", 0, PATTERN_TILING, WAVE_RAMP, 0, 1, 0, 1, { 4 }, { 0 }, { { 0 } }, 0,
+	  { 0.7f, 0.7f, 0.7f }, { -90, 0, 0 }, { 0 }, 0 },
+	{ "tiling5", "tiling 5", 0, PATTERN_TILING, WAVE_RAMP, 0, 1, 0, 1, { 5 }, { 0 }, { { 0 } }, 0,
+	  { 0.7f, 0.7f, 0.7f }, { -90, 0, 0 }, { 0 }, 0 },
+	{ "tiling6", "tiling 6", 0, PATTERN_TILING, WAVE_RAMP, 0, 1, 0, 1, { 6 }, { 0 }, { { 0 } }, 0,
+	  { 0.7f, 0.7f, 0.7f }, { -90, 0, 0 }, { 0 }, 0 },
+	{ "tiling7", "tiling 7", 0, PATTERN_TILING, WAVE_RAMP, 0, 1, 0, 1, { 7 }, { 0 }, { { 0 } }, 0,
+	  { 0.7f, 0.7f, 0.7f }, { -90, 0, 0 }, { 0 }, 0 },
+	{ "tiling8", "tiling 8", 0, PATTERN_TILING, WAVE_RAMP, 0, 1, 0, 1, { 8 }, { 0 }, { { 0 } }, 0,
+	  { 0.7f, 0.7f, 0.7f }, { -90, 0, 0 }, { 0 }, 0 },
+	{ "tiling9", "tiling 9", 0, PATTERN_TILING, WAVE_RAMP, 0, 1, 0, 1, { 9 }, { 0 }, { { 0 } }, 0,
+	  { 0.7f, 0.7f, 0.7f }, { -90, 0, 0 }, { 0 }, 0 },
+	{ "tiling10", "tiling 10", 0, PATTERN_TILING, WAVE_RAMP, 0, 1, 0, 1, { 10 }, { 0 }, { { 0 } }, 0,
+	  { 0.7f, 0.7f, 0.7f }, { -90, 0, 0 }, { 0 }, 0 },
+	{ "tiling11", "tiling 11", 0, PATTERN_TILING, WAVE_RAMP, 0, 1, 0, 1, { 11 }, { 0 }, { { 0 } }, 0,
+	  { 0.7f, 0.7f, 0.7f }, { -90, 0, 0 }, { 0 }, 0 },
+	{ "tiling12", "tiling 12", 0, PATTERN_TILING, WAVE_RAMP, 0, 1, 0, 1, { 12 }, { 0 }, { { 0 } }, 0,
+	  { 0.7f, 0.7f, 0.7f }, { -90, 0, 0 }, { 0 }, 0 },
 };
 #define N_CASES ((int)(sizeof cases / sizeof cases[0]))
 
@@ -263,7 +288,7 @@ static const char *test_kernel =
 	"}\n";
 
 static const char *const kernel_files[] = { "kernels/shared.h", "kernels/intersect.cl", "kernels/function.cl", "kernels/scene.cl",
-                                            "kernels/pattern_tables.cl", "kernels/pattern_fractal.cl", "kernels/pattern.cl" };
+                                            "kernels/pattern_tables.cl", "kernels/pattern_fractal.cl", "kernels/pattern_tiling.cl", "kernels/pattern.cl" };
 
 static void fill_pattern(const struct pcase *c, dev_pattern *pt, dev_warp *warps)
 {
