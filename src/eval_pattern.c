@@ -414,7 +414,7 @@ int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *p
 }
 
 /* The tilings kernels/pattern_tiling.cl draws: 1 to this. */
-#define EVAL_TILINGS 12
+#define EVAL_TILINGS 27
 
 /* tiling N: POV-Ray 3.7 keeps N as an unsigned char (its integer part modulo
  * 256, as x86 converts it: 259 is tiling 3) and refuses what is not then 1 to
