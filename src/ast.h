@@ -324,7 +324,6 @@ enum kw_class {
 #define AST_WORD_NOISE_GENERATOR "noise_generator"
 #define AST_WORD_NUMBER_OF_WAVES "number_of_waves"
 #define AST_WORD_TILING "tiling"
-#define AST_WORD_PAVEMENT "pavement"
 #define AST_WORD_IRID "irid"
 #define AST_WORD_IRID_WAVELENGTH "irid_wavelength"
 #define AST_WORD_THICKNESS "thickness"

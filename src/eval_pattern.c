@@ -433,7 +433,11 @@ int eval_pattern_tiling(struct eval *e, struct cursor *c, const ast_node *item, 
 		return -1;
 	long code = fabs(n) < 2e9 ? ((long)n & 255) : 0;
 	if (code < 1 || code > 27) {
-		eval_error(e, arg->loc, "tiling number must be between 1 and 27, found %g", n);
+		if (fabs(n) < 2e9 && (long)n != code)
+			eval_error(e, arg->loc, "tiling number must be between 1 and 27, found %g (%ld: POV-Ray keeps "
+			           "it in a byte)", n, code);
+		else
+			eval_error(e, arg->loc, "tiling number must be between 1 and 27, found %g", n);
 		return -1;
 	}
 	pg->params[0][0] = (double)code;
