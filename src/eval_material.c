@@ -478,6 +478,8 @@ static void pattern_map(struct eval *e, struct pattern *p)
 static void pattern_result(struct eval *e, struct pattern *p, double c[5], int *pigment)
 {
 	*pigment = -1;
+	if (p->kind > 0)
+		eval_pavement_check(e, &p->pg, p->at->loc);   /* an error makes the evaluation fail */
 	if (p->kind > 0) {
 		if (!(p->inherited && !p->has_map && !p->n_list))
 			pattern_map(e, p);
@@ -1531,6 +1533,10 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		p.kind = -1;
 	if (p.at && p.kind == PATTERN_SLOPE)   /* a normal of the normal's own slope: not yet */
 		p.kind = -1;
+	if (p.at && p.kind > 0 && eval_pavement_check(e, &p.pg, p.at->loc)) {
+		free(p.pg.map);
+		return -1;
+	}
 	if (p.at && p.kind < 0 && p.name[0])
 		eval_warn_once(e, p.at->loc, p.name, "pattern '%s' is not supported yet in a normal; ignored", p.name);
 	p.pg.uv |= p.uv;

@@ -22,7 +22,7 @@ const char *eval_pov_word(const char *name)
 	};
 	static const char *const statements[] = { "rainbow" };
 	static const char *const patterns[] = {
-		"aoi", "average", "image_pattern", "pavement",
+		"aoi", "average", "image_pattern",
 		"pigment_pattern", "slope",
 	};
 	static const char *const others[] = {

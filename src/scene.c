@@ -635,7 +635,7 @@ static const char *const pattern_names[] = {
 	"triangular", "waves", "wood", "wrinkles", "image_map", "function",
 	"average", "slope",
 	"mandel", "julia", "magnet", "image_pattern", "bump_map",
-	"material_map", "density_file", "tiling",
+	"material_map", "density_file", "tiling", "pavement",
 };
 _Static_assert(sizeof pattern_names / sizeof *pattern_names == PATTERN_COUNT, "a name for each pattern");
 
