@@ -478,9 +478,8 @@ static void pattern_map(struct eval *e, struct pattern *p)
 static void pattern_result(struct eval *e, struct pattern *p, double c[5], int *pigment)
 {
 	*pigment = -1;
-	if (p->kind > 0)
-		eval_pavement_check(e, &p->pg, p->at->loc);   /* an error makes the evaluation fail */
 	if (p->kind > 0) {
+		eval_pavement_check(e, &p->pg, p->at->loc);   /* an error makes the evaluation fail */
 		if (!(p->inherited && !p->has_map && !p->n_list))
 			pattern_map(e, p);
 		p->pg.uv |= p->uv;
@@ -540,14 +539,8 @@ static int pattern_start(struct eval *e, struct cursor *c, const ast_node *item,
 	}
 	if (item->kind == AST_IDENT && !eval_lookup(e, item->str) && eval_pattern_kind(item->str) > 0) {
 		start_pattern(p, item, item->str);
-		if (p->kind == PATTERN_TILING) {   /* one eclat lacks is averaged, named by its number */
-			int rc = eval_pattern_tiling(e, c, item, &p->pg);
-			if (rc == 2) {
-				snprintf(p->name, sizeof p->name, "tiling %d", (int)p->pg.params[0][0]);
-				p->kind = -1;
-			}
-			return rc < 0 ? -1 : 0;
-		}
+		if (p->kind == PATTERN_TILING)
+			return eval_pattern_tiling(e, c, item, &p->pg);
 		return p->kind == PATTERN_DENSITY_FILE ? eval_density_file(e, c, item, &p->pg) : 0;
 	}
 	bool grey = item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, "pigment_pattern") == 0;

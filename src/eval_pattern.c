@@ -4,7 +4,8 @@
  *
  * A new pattern is a name in the table below (and PATTERN_ in shared.h), its
  * POV-Ray defaults in pattern_defaults, its parameters in pattern_modifier when
- * it has any, and its case in kernels/pattern.cl. */
+ * it has any (checks that need all of them at the end, as pavement's), and its
+ * case in kernels/pattern.cl. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -437,12 +438,9 @@ int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *p
 	return arg_float(e, item, &pg->params[0][0]);
 }
 
-/* The tilings kernels/pattern_tiling.cl draws: 1 to this. */
-#define EVAL_TILINGS 27
-
 /* tiling N: POV-Ray 3.7 keeps N as an unsigned char (its integer part modulo
  * 256, as x86 converts it: 259 is tiling 3) and refuses what is not then 1 to
- * 27. 2: a tiling eclat cannot draw yet. */
+ * 27. */
 int eval_pattern_tiling(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg)
 {
 	int err = 0;
@@ -465,7 +463,7 @@ int eval_pattern_tiling(struct eval *e, struct cursor *c, const ast_node *item, 
 		return -1;
 	}
 	pg->params[0][0] = (double)code;
-	return code > EVAL_TILINGS ? 2 : 0;
+	return 0;
 }
 
 /* POV-Ray keeps pavement's numbers in bytes (the integer part modulo 256). */
