@@ -788,6 +788,12 @@ static float pattern_plain(global const dev_pattern *pt, global const dev_warp *
 	case PATTERN_SLOPE:
 		v = pattern_slope(pt, p, n);
 		break;
+	case PATTERN_TILING:
+		v = pattern_tiling(p, (int)pt->params[0].x);
+		break;
+	case PATTERN_PAVEMENT:
+		v = pattern_pavement(p, pt->params[0], pt->params[1]);
+		break;
 	case PATTERN_MANDEL:
 	case PATTERN_JULIA:
 	case PATTERN_MAGNET:

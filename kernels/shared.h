@@ -250,6 +250,8 @@ enum {                       /* ORDER: the names in src/eval_pattern.c */
 	PATTERN_BUMP_MAP,    /* a normal only, from an image's greys: image.cl */
 	PATTERN_MATERIAL_MAP,   /* a texture's: an image's material numbers pick textures: image.cl */
 	PATTERN_DENSITY_FILE,   /* a df3 file's voxels in the unit cube: image.cl */
+	PATTERN_TILING,      /* POV-Ray's 27 tilings of the x-z plane: kernels/pattern_tiling.cl */
+	PATTERN_PAVEMENT,    /* POV-Ray's pavings by polyforms: kernels/pattern_pavement.cl */
 	PATTERN_COUNT
 };
 /* POV-Ray's wave types, applied to a continuous pattern's value. */
@@ -309,7 +311,12 @@ typedef struct {
  *   gradient:  params[0].xyz the axis vector, normalized (as POV-Ray does)
  *   quilted:   params[0].x control0 (1), y control1 (1)
  *   spiral1/2: params[0].x the number of arms
- *   waves, ripples: params[0].x global_settings' number_of_waves (10)
+ *   waves, ripples: params[0].x global_settings' number_of_waves (10), filled
+ *              in by lowering
+ *   tiling:    params[0].x the tiling's number, 1 to 27
+ *   pavement:  params[0].x number_of_sides (3, 4, 6), y number_of_tiles, z pattern,
+ *              w form; params[1].x interior, y exterior (checked and reduced as
+ *              POV-Ray does: src/eval_pattern.c)
  *   facets:    params[0].x size (0.1), y coords (0: none, the normal's own facets),
  *              z metric (2) (a normal only)
  *   image_map: params[0].x the image (dev_image), y map_type (0 planar,

@@ -280,6 +280,10 @@ int eval_pattern_continue(struct eval *e, scene_pigment *pg, const scene_pigment
                           src_loc loc);
 /* The argument of a pattern keyword: gradient's vector, spiral's arms. */
 int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *pg);
+/* A pavement's numbers checked and reduced as POV-Ray does; 0 for other patterns. */
+int eval_pavement_check(struct eval *e, scene_pigment *pg, src_loc loc);
+/* tiling N: its number, read after the keyword (eval_pattern.c). */
+int eval_pattern_tiling(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg);
 /* mandel, julia and magnet (eval_fractal.c): their defaults, and their
  * arguments and modifiers, as eval_pattern_modifier. */
 bool eval_pattern_is_fractal(int kind);

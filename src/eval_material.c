@@ -501,6 +501,7 @@ static void pattern_result(struct eval *e, struct pattern *p, double c[5], int *
 {
 	*pigment = -1;
 	if (p->kind > 0) {
+		eval_pavement_check(e, &p->pg, p->at->loc);   /* an error makes the evaluation fail */
 		if (!(p->inherited && !p->has_map && !p->n_list))
 			pattern_map(e, p);
 		p->pg.uv |= p->uv;
@@ -560,6 +561,8 @@ static int pattern_start(struct eval *e, struct cursor *c, const ast_node *item,
 	}
 	if (item->kind == AST_IDENT && !eval_lookup(e, item->str) && eval_pattern_kind(item->str) > 0) {
 		start_pattern(p, item, item->str);
+		if (p->kind == PATTERN_TILING)
+			return eval_pattern_tiling(e, c, item, &p->pg);
 		return p->kind == PATTERN_DENSITY_FILE ? eval_density_file(e, c, item, &p->pg) : 0;
 	}
 	bool grey = item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, "pigment_pattern") == 0;
@@ -1562,6 +1565,10 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		p.kind = -1;
 	if (p.at && p.kind == PATTERN_SLOPE)   /* a normal of the normal's own slope: not yet */
 		p.kind = -1;
+	if (p.at && p.kind > 0 && eval_pavement_check(e, &p.pg, p.at->loc)) {
+		free(p.pg.map);
+		return -1;
+	}
 	if (p.at && p.kind < 0 && p.name[0])
 		eval_warn_once(e, p.at->loc, p.name, "pattern '%s' is not supported yet in a normal; ignored", p.name);
 	p.pg.uv |= p.uv;

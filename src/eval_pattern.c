@@ -4,7 +4,8 @@
  *
  * A new pattern is a name in the table below (and PATTERN_ in shared.h), its
  * POV-Ray defaults in pattern_defaults, its parameters in pattern_modifier when
- * it has any, and its case in kernels/pattern.cl. */
+ * it has any (checks that need all of them at the end, as pavement's), and its
+ * case in kernels/pattern.cl. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -47,10 +48,10 @@ void eval_pattern_defaults(scene_pigment *pg, int kind, src_loc loc)
 		break;
 	case PATTERN_MARBLE: case PATTERN_WOOD: pg->wave = WAVE_TRIANGLE; break;
 	case PATTERN_QUILTED: pg->frequency = 0; p[0] = 1; p[1] = 1; break;
-	case PATTERN_WAVES: case PATTERN_RIPPLES: p[0] = 10; break;   /* number_of_waves */
 	case PATTERN_BRICK: p[0] = 8; p[1] = 3; p[2] = 4.5; p[3] = 0.5; break;
 	case PATTERN_CRACKLE: p[0] = -1; p[1] = 1; p[2] = 0; p[3] = 2; break;
 	case PATTERN_GRADIENT: p[0] = 1; break;
+	case PATTERN_PAVEMENT: p[0] = 3; p[1] = 1; p[2] = 1; break;   /* form, interior, exterior 0 */
 	case PATTERN_SPIRAL1: case PATTERN_SPIRAL2: p[0] = 1; pg->wave = WAVE_TRIANGLE; break;
 	case PATTERN_MANDEL: case PATTERN_JULIA: case PATTERN_MAGNET: eval_fractal_defaults(pg); break;
 	default: break;
@@ -340,6 +341,12 @@ int eval_pattern_modifier(struct eval *e, struct cursor *c, const ast_node *item
 	int rc = eval_pattern_is_fractal(pg->kind) ? eval_fractal_modifier(e, c, item, pg) : 1;
 	if (rc <= 0)
 		return rc;
+	if (item->kind == AST_ARG && item->kw == KW_INTERIOR) {   /* the fractals' came first */
+		if (pg->kind == PATTERN_PAVEMENT)
+			return arg_float(e, item, &p1[0]);
+		eval_error(e, item->loc, "'interior' is only valid in mandel, julia, magnet or pavement");
+		return -1;
+	}
 	if (item->kind == AST_ARG) {
 		switch (item->kw) {
 		case KW_TURBULENCE: case KW_OCTAVES: case KW_OMEGA: case KW_LAMBDA: {
@@ -418,6 +425,23 @@ int eval_pattern_modifier(struct eval *e, struct cursor *c, const ast_node *item
 		p1[1] = 1;
 		return 0;
 	}
+	if (pg->kind != PATTERN_PAVEMENT && (strcmp(name, AST_WORD_NUMBER_OF_SIDES) == 0 ||
+	    strcmp(name, AST_WORD_NUMBER_OF_TILES) == 0 || strcmp(name, AST_WORD_PATTERN) == 0 ||
+	    strcmp(name, AST_WORD_EXTERIOR) == 0)) {   /* POV-Ray's Only_In */
+		eval_error(e, item->loc, "'%s' is only valid in %s", name,
+		           strcmp(name, AST_WORD_EXTERIOR) == 0 ? "mandel, julia, magnet or pavement" : "pavement");
+		return -1;
+	}
+	if (pg->kind == PATTERN_PAVEMENT && strcmp(name, AST_WORD_NUMBER_OF_SIDES) == 0)
+		return next_float(e, c, item, &p0[0]);
+	if (pg->kind == PATTERN_PAVEMENT && strcmp(name, AST_WORD_NUMBER_OF_TILES) == 0)
+		return next_float(e, c, item, &p0[1]);
+	if (pg->kind == PATTERN_PAVEMENT && strcmp(name, AST_WORD_PATTERN) == 0)
+		return next_float(e, c, item, &p0[2]);
+	if (pg->kind == PATTERN_PAVEMENT && strcmp(name, AST_WORD_FORM) == 0)
+		return next_float(e, c, item, &p0[3]);
+	if (pg->kind == PATTERN_PAVEMENT && strcmp(name, AST_WORD_EXTERIOR) == 0)
+		return next_float(e, c, item, &p1[1]);
 	if (pg->kind == PATTERN_QUILTED && strcmp(name, AST_WORD_CONTROL0) == 0)
 		return next_float(e, c, item, &p0[0]);
 	if (pg->kind == PATTERN_QUILTED && strcmp(name, AST_WORD_CONTROL1) == 0)
@@ -440,6 +464,76 @@ int eval_pattern_argument(struct eval *e, const ast_node *item, scene_pigment *p
 		return 0;
 	}
 	return arg_float(e, item, &pg->params[0][0]);
+}
+
+/* tiling N: POV-Ray 3.7 keeps N as an unsigned char (its integer part modulo
+ * 256, as x86 converts it: 259 is tiling 3) and refuses what is not then 1 to
+ * 27. */
+int eval_pattern_tiling(struct eval *e, struct cursor *c, const ast_node *item, scene_pigment *pg)
+{
+	int err = 0;
+	double n;
+	const ast_node *arg = eval_next_expr(c, &err);
+	if (!arg) {
+		if (!err)
+			eval_error(e, item->loc, "'tiling' needs its number, 1 to 27");
+		return -1;
+	}
+	if (eval_expect_float(e, arg, &n))
+		return -1;
+	long code = fabs(n) < 2e9 ? ((long)n & 255) : 0;
+	if (code < 1 || code > 27) {
+		if (fabs(n) < 2e9 && (long)n != code)
+			eval_error(e, arg->loc, "tiling number must be between 1 and 27, found %g (%ld: POV-Ray keeps "
+			           "it in a byte)", n, code);
+		else
+			eval_error(e, arg->loc, "tiling number must be between 1 and 27, found %g", n);
+		return -1;
+	}
+	pg->params[0][0] = (double)code;
+	return 0;
+}
+
+/* POV-Ray keeps pavement's numbers in bytes (the integer part modulo 256). */
+static long pavement_byte(double v)
+{
+	return fabs(v) < 2e9 ? ((long)v & 255) : 0;
+}
+
+/* A pavement's numbers, once its modifiers are read: POV-Ray's checks at the
+ * end of the pattern (Parse_Pattern), and its reductions: interior and
+ * exterior modulo 3, form modulo 4 (four sides) or 3. */
+int eval_pavement_check(struct eval *e, scene_pigment *pg, src_loc loc)
+{
+	static const int most3[] = { 1, 1, 1, 3, 4, 12 }, most4[] = { 1, 1, 2, 5, 12, 35 }, most6[] = { 1, 1, 3, 7, 22 };
+	if (pg->kind != PATTERN_PAVEMENT)
+		return 0;
+	double *p0 = pg->params[0], *p1 = pg->params[1];
+	long sides = pavement_byte(p0[0]), tiles = pavement_byte(p0[1]), number = pavement_byte(p0[2]);
+	const int *most = sides == 3 ? most3 : sides == 4 ? most4 : sides == 6 ? most6 : NULL;
+	long max_tiles = sides == 6 ? 5 : 6;
+	int rc = -1;
+	if (!most)
+		eval_error(e, loc, "number_of_sides of pavement must be 3, 4 or 6, found %g", p0[0]);
+	else if (tiles < 1 || tiles > max_tiles)
+		eval_error(e, loc, "number_of_tiles of a pavement of %ld sides must be between 1 and %ld, found %g", sides,
+		           max_tiles, p0[1]);
+	else if (number < 1 || number > most[tiles - 1])
+		eval_error(e, loc, "pattern of a pavement of %ld tiles of %ld sides must be between 1 and %d, found %g",
+		           tiles, sides, most[tiles - 1], p0[2]);
+	else
+		rc = 0;
+	if (rc) {   /* POV-Ray's defaults, so that nothing later reads a table out of its range */
+		sides = 3;
+		tiles = number = 1;
+	}
+	p0[0] = (double)sides;
+	p0[1] = (double)tiles;
+	p0[2] = (double)number;
+	p0[3] = (double)(pavement_byte(p0[3]) % (sides == 4 ? 4 : 3));
+	p1[0] = (double)(pavement_byte(p1[0]) % 3);
+	p1[1] = (double)(pavement_byte(p1[1]) % 3);
+	return rc;
 }
 
 /* ---- slope ---- */

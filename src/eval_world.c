@@ -22,8 +22,8 @@ const char *eval_pov_word(const char *name)
 	};
 	static const char *const statements[] = { "rainbow" };
 	static const char *const patterns[] = {
-		"aoi", "average", "image_pattern", "pavement",
-		"pigment_pattern", "slope", "tiling",
+		"aoi", "average", "image_pattern",
+		"pigment_pattern", "slope",
 	};
 	static const char *const others[] = {
 		"albedo", "always_sample", "area_illumination", "brightness", "bump_map", "charset",
@@ -31,7 +31,7 @@ const char *eval_pov_word(const char *name)
 		"exterior", "function", "gray_threshold", "hf_gray_16", "image_map", "interior_texture", "irid",
 		"irid_wavelength", "low_error_factor", "material_map", "max_intersections",
 		"metric", "minimum_reuse", "mm_per_unit", "nearest_count", "no_radiosity",
-		"noise_generator", "number_of_waves", "pattern", "photons", "pretrace_end", "pretrace_start",
+		"noise_generator", "pattern", "photons", "pretrace_end", "pretrace_start",
 		"projected_through", "quick_color", "quick_colour", "radiosity", "recursion_limit", "slope_map",
 		"solid", "spline", "subsurface", "tiles", "warp",
 	};
@@ -825,8 +825,38 @@ static int noise_generator(struct eval *e, struct cursor *c, const ast_node *ite
 	return 0;
 }
 
+/* number_of_waves N: the wave sources of every waves and ripples pattern,
+ * whichever global_settings says it (POV-Ray reads the setting when it
+ * renders). POV-Ray takes 1 for N below 1, with a warning; eclat also refuses
+ * more than a million, which would stall a kernel on every pattern point. */
+static int number_of_waves(struct eval *e, struct cursor *c, const ast_node *item)
+{
+	if (item->kind != AST_IDENT || strcmp(item->str, AST_WORD_NUMBER_OF_WAVES) != 0 || eval_lookup(e, item->str))
+		return 1;
+	int err = 0;
+	double n;
+	const ast_node *arg = eval_next_expr(c, &err);
+	if (!arg) {
+		if (!err)
+			eval_error(e, item->loc, "'number_of_waves' needs a value");
+		return -1;
+	}
+	if (eval_expect_float(e, arg, &n))
+		return -1;
+	if (n >= 1e6 + 1) {
+		eval_error(e, arg->loc, "number_of_waves %g is more than eclat takes (1000000)", n);
+		return -1;
+	}
+	if (!(n >= 1)) {   /* POV-Ray's (int) cast: 0.5 is 0 too */
+		eval_warning(e, arg->loc, "number_of_waves must be greater than 0; changed to 1 (as POV-Ray does)");
+		n = 1;
+	}
+	e->s->number_of_waves = (int)n;
+	return 0;
+}
+
 /* global_settings { [assumed_gamma F] [max_trace_level N] [adc_bailout F]
- *                   [ambient_light COLOR] [noise_generator N] }: POV-Ray's other
+ *                   [ambient_light COLOR] [noise_generator N] [number_of_waves N] }: POV-Ray's other
  * settings are ignored. */
 static int global_settings(struct eval *e, const ast_node *b)
 {
@@ -836,6 +866,7 @@ static int global_settings(struct eval *e, const ast_node *b)
 	eval_cursor_init(&c, e, b);
 	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
 		if ((rc = charset(e, &c, item)) <= 0 || (rc = noise_generator(e, &c, item)) <= 0 ||
+		    (rc = number_of_waves(e, &c, item)) <= 0 ||
 		    (rc = eval_irid_wavelength(e, &c, item)) <= 0)
 			continue;
 		if ((rc = eval_skip_pov_word(e, &c, item)) <= 0)

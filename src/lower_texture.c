@@ -173,6 +173,8 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 		.warp_first = lt->n_warps, .warp_count = n_warps,
 		.map_first = lt->n_maps, .map_count = pg->n_map,
 	};
+	if (pg->kind == PATTERN_WAVES || pg->kind == PATTERN_RIPPLES)   /* a scene-wide setting in POV-Ray */
+		d.params[0].x = (float)s->number_of_waves;
 	lt->warps = grow_to(lt->warps, &lt->cap_warps, lt->n_warps + n_warps, sizeof *lt->warps);
 	for (int i = 0; i < n_warps; i++) {
 		dev_warp dw = { .a = f4v(w[i].a), .b = f4v(w[i].b), .c = f4v(w[i].c), .kind = w[i].kind,

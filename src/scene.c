@@ -89,6 +89,7 @@ void scene_init(scene *s)
 	s->adc_bailout = 1.0f / 255.0f;
 	s->film_gamma = 1;
 	s->noise_generator = 2;
+	s->number_of_waves = 10;
 	s->irid_wavelength[0] = 0.70f;
 	s->irid_wavelength[1] = 0.52f;
 	s->irid_wavelength[2] = 0.48f;
@@ -634,7 +635,7 @@ static const char *const pattern_names[] = {
 	"triangular", "waves", "wood", "wrinkles", "image_map", "function",
 	"average", "slope",
 	"mandel", "julia", "magnet", "image_pattern", "bump_map",
-	"material_map", "density_file",
+	"material_map", "density_file", "tiling", "pavement",
 };
 _Static_assert(sizeof pattern_names / sizeof *pattern_names == PATTERN_COUNT, "a name for each pattern");
 

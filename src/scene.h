@@ -514,6 +514,7 @@ typedef struct {
 	                       * the colours are written into 8-bit images as they are */
 	float adc_bailout;    /* 1/255 */
 	int noise_generator;  /* a pattern's without one of its own: 1, 2 or 3, POV-Ray's 2 */
+	int number_of_waves;  /* the wave sources of every waves and ripples: POV-Ray's 10 */
 	float ambient_light[3]; /* 1 */
 	float irid_wavelength[3]; /* 0.70, 0.52, 0.48: POV-Ray 3.7's (its manual says otherwise) */
 } scene;

@@ -97,6 +97,18 @@ static const struct ncase cases[] = {
 	{ .name = "bozo_warp_repeat", .pov = "bozo 1.2 warp { repeat x * 1.5 flip y } scale 0.5", .kind = PATTERN_BOZO, .amount = 1.2f,
 	  .warps = { { WARP_REPEAT, 0, { 1.5f, 0, 0 }, { 0 }, { 0, 1, 0 } } }, .n_warps = 1,
 	  .scale = { 0.5f, 0.5f, 0.5f } },
+	/* tilings of the x-z plane, turned to face the camera */
+	{ .name = "tiling2", .pov = "tiling 2 0.5 scale 0.7 rotate -90*x", .kind = PATTERN_TILING, .p0 = { 2 },
+	  .scale = { 0.7f, 0.7f, 0.7f }, .rotate = { -90, 0, 0 } },
+	{ .name = "tiling16", .pov = "tiling 16 bump_size 0.8 scale 0.7 rotate -90*x", .kind = PATTERN_TILING, .amount = 0.8f,
+	  .p0 = { 16 }, .scale = { 0.7f, 0.7f, 0.7f }, .rotate = { -90, 0, 0 } },
+	{ .name = "tiling26", .pov = "tiling 26 0.6 scale 0.7 rotate -90*x", .kind = PATTERN_TILING, .amount = 0.6f,
+	  .p0 = { 26 }, .scale = { 0.7f, 0.7f, 0.7f }, .rotate = { -90, 0, 0 } },
+	{ .name = "pavement4", .pov = "pavement 0.6 number_of_sides 4 number_of_tiles 4 pattern 3 form 2 interior 2 exterior 2 scale 0.5 rotate -90*x",
+	  .kind = PATTERN_PAVEMENT, .amount = 0.6f, .p0 = { 4, 4, 3, 2 }, .p1 = { 2, 2 }, .scale = { 0.5f, 0.5f, 0.5f },
+	  .rotate = { -90, 0, 0 } },
+	{ .name = "pavement6", .pov = "pavement 0.5 number_of_sides 6 number_of_tiles 3 pattern 2 form 1 interior 1 scale 0.4 rotate -90*x",
+	  .kind = PATTERN_PAVEMENT, .p0 = { 6, 3, 2, 1 }, .p1 = { 1, 0 }, .scale = { 0.4f, 0.4f, 0.4f }, .rotate = { -90, 0, 0 } },
 	{ .name = "granite", .pov = "granite 0.3 scale 2", .kind = PATTERN_GRANITE, .amount = 0.3f, .scale = { 2, 2, 2 } },
 	{ .name = "granite_negative", .pov = "granite -0.4 scale 2", .kind = PATTERN_GRANITE, .amount = -0.4f, .scale = { 2, 2, 2 } },
 	{ .name = "crackle", .pov = "crackle 1 scale 0.5", .kind = PATTERN_CRACKLE, .amount = 1, .p0 = { -1, 1, 0, 2 }, .scale = { 0.5f, 0.5f, 0.5f } },
@@ -169,7 +181,7 @@ static const char *test_kernel =
 	"}\n";
 
 static const char *const kernel_files[] = { "kernels/shared.h", "kernels/intersect.cl", "kernels/function.cl", "kernels/scene.cl",
-                                            "kernels/pattern_tables.cl", "kernels/pattern_fractal.cl", "kernels/pattern.cl",
+                                            "kernels/pattern_tables.cl", "kernels/pattern_fractal.cl", "kernels/pattern_tiling.cl", "kernels/pattern_pavement.cl", "kernels/pattern.cl",
                                             "kernels/normal.cl" };
 
 static void fill_pattern(const struct ncase *c, dev_pattern *pt, dev_warp *warps, dev_map_entry *maps)
