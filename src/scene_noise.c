@@ -73,33 +73,50 @@ static float solid_noise(const float p[3])
 	return mixf(c, d, s[2]);
 }
 
+/* The lattice cell of p that Noise and DNoise both start from
+ * (pattern_corners): the offsets from its two corners, the smoothstep
+ * weights, the hashes of its four columns and its z index. */
+struct cell {
+	float f0[3], f1[3], s[3], t[3];
+	int h00, h10, h01, h11, iz;
+};
+
+static struct cell cell_of(const float p[3])
+{
+	struct cell c;
+	int l[3];
+	for (int k = 0; k < 3; k++) {
+		float fl = floorf(p[k]);
+		c.f0[k] = p[k] - fl;
+		c.f1[k] = c.f0[k] - 1.0f;
+		l[k] = lattice(fl);
+		c.s[k] = c.f0[k] * c.f0[k] * (3.0f - 2.0f * c.f0[k]);
+		c.t[k] = 1.0f - c.s[k];
+	}
+	int ix = l[0], iy = l[1];
+	c.iz = l[2];
+	c.h00 = pattern_hash[(pattern_hash[ix] ^ iy) & 0xfff];
+	c.h10 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ iy) & 0xfff];
+	c.h01 = pattern_hash[(pattern_hash[ix] ^ (iy + 1)) & 0xfff];
+	c.h11 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ (iy + 1)) & 0xfff];
+	return c;
+}
+
 float scene_noise(const float p[3], int generator)
 {
 	if (generator == 3)
 		return clampf(0.5f * (1.59f * solid_noise(p) + 0.985f), 0.0f, 1.0f);
-	float f0[3], f1[3], s[3], t[3];
-	int l[3];
-	for (int k = 0; k < 3; k++) {
-		float fl = floorf(p[k]);
-		f0[k] = p[k] - fl;
-		f1[k] = f0[k] - 1.0f;
-		l[k] = lattice(fl);
-		s[k] = f0[k] * f0[k] * (3.0f - 2.0f * f0[k]);
-		t[k] = 1.0f - s[k];
-	}
-	int ix = l[0], iy = l[1], iz = l[2];
-	int h00 = pattern_hash[(pattern_hash[ix] ^ iy) & 0xfff];
-	int h10 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ iy) & 0xfff];
-	int h01 = pattern_hash[(pattern_hash[ix] ^ (iy + 1)) & 0xfff];
-	int h11 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ (iy + 1)) & 0xfff];
-	float sum = incr(corner(h00, iz), t[0] * t[1] * t[2], f0[0], f0[1], f0[2]) +
-	            incr(corner(h10, iz), s[0] * t[1] * t[2], f1[0], f0[1], f0[2]) +
-	            incr(corner(h01, iz), t[0] * s[1] * t[2], f0[0], f1[1], f0[2]) +
-	            incr(corner(h11, iz), s[0] * s[1] * t[2], f1[0], f1[1], f0[2]) +
-	            incr(corner(h00, iz + 1), t[0] * t[1] * s[2], f0[0], f0[1], f1[2]) +
-	            incr(corner(h10, iz + 1), s[0] * t[1] * s[2], f1[0], f0[1], f1[2]) +
-	            incr(corner(h01, iz + 1), t[0] * s[1] * s[2], f0[0], f1[1], f1[2]) +
-	            incr(corner(h11, iz + 1), s[0] * s[1] * s[2], f1[0], f1[1], f1[2]);
+	struct cell c = cell_of(p);
+	const float *f0 = c.f0, *f1 = c.f1, *s = c.s, *t = c.t;
+	int iz = c.iz;
+	float sum = incr(corner(c.h00, iz), t[0] * t[1] * t[2], f0[0], f0[1], f0[2]) +
+	            incr(corner(c.h10, iz), s[0] * t[1] * t[2], f1[0], f0[1], f0[2]) +
+	            incr(corner(c.h01, iz), t[0] * s[1] * t[2], f0[0], f1[1], f0[2]) +
+	            incr(corner(c.h11, iz), s[0] * s[1] * t[2], f1[0], f1[1], f0[2]) +
+	            incr(corner(c.h00, iz + 1), t[0] * t[1] * s[2], f0[0], f0[1], f1[2]) +
+	            incr(corner(c.h10, iz + 1), s[0] * t[1] * s[2], f1[0], f0[1], f1[2]) +
+	            incr(corner(c.h01, iz + 1), t[0] * s[1] * s[2], f0[0], f1[1], f1[2]) +
+	            incr(corner(c.h11, iz + 1), s[0] * s[1] * s[2], f1[0], f1[1], f1[2]);
 	if (generator == 2)
 		sum = (sum + 1.05242f) * 0.48985582f;
 	else
@@ -118,30 +135,18 @@ static void dincr(int k, float s, float x, float y, float z, float out[3])
 /* POV-Ray's DNoise (pattern_dnoise), its corners in the device's order. */
 static void dnoise(const float p[3], float out[3])
 {
-	float f0[3], f1[3], s[3], t[3];
-	int l[3];
-	for (int k = 0; k < 3; k++) {
-		float fl = floorf(p[k]);
-		f0[k] = p[k] - fl;
-		f1[k] = f0[k] - 1.0f;
-		l[k] = lattice(fl);
-		s[k] = f0[k] * f0[k] * (3.0f - 2.0f * f0[k]);
-		t[k] = 1.0f - s[k];
-	}
-	int ix = l[0], iy = l[1], iz = l[2];
-	int h00 = pattern_hash[(pattern_hash[ix] ^ iy) & 0xfff];
-	int h10 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ iy) & 0xfff];
-	int h01 = pattern_hash[(pattern_hash[ix] ^ (iy + 1)) & 0xfff];
-	int h11 = pattern_hash[(pattern_hash[(ix + 1) & 0xfff] ^ (iy + 1)) & 0xfff];
+	struct cell c = cell_of(p);
+	const float *f0 = c.f0, *f1 = c.f1, *s = c.s, *t = c.t;
+	int iz = c.iz;
 	out[0] = out[1] = out[2] = 0.0f;
-	dincr(corner(h00, iz), t[0] * t[1] * t[2], f0[0], f0[1], f0[2], out);
-	dincr(corner(h10, iz), s[0] * t[1] * t[2], f1[0], f0[1], f0[2], out);
-	dincr(corner(h11, iz), s[0] * s[1] * t[2], f1[0], f1[1], f0[2], out);
-	dincr(corner(h01, iz), t[0] * s[1] * t[2], f0[0], f1[1], f0[2], out);
-	dincr(corner(h01, iz + 1), t[0] * s[1] * s[2], f0[0], f1[1], f1[2], out);
-	dincr(corner(h11, iz + 1), s[0] * s[1] * s[2], f1[0], f1[1], f1[2], out);
-	dincr(corner(h10, iz + 1), s[0] * t[1] * s[2], f1[0], f0[1], f1[2], out);
-	dincr(corner(h00, iz + 1), t[0] * t[1] * s[2], f0[0], f0[1], f1[2], out);
+	dincr(corner(c.h00, iz), t[0] * t[1] * t[2], f0[0], f0[1], f0[2], out);
+	dincr(corner(c.h10, iz), s[0] * t[1] * t[2], f1[0], f0[1], f0[2], out);
+	dincr(corner(c.h11, iz), s[0] * s[1] * t[2], f1[0], f1[1], f0[2], out);
+	dincr(corner(c.h01, iz), t[0] * s[1] * t[2], f0[0], f1[1], f0[2], out);
+	dincr(corner(c.h01, iz + 1), t[0] * s[1] * s[2], f0[0], f1[1], f1[2], out);
+	dincr(corner(c.h11, iz + 1), s[0] * s[1] * s[2], f1[0], f1[1], f1[2], out);
+	dincr(corner(c.h10, iz + 1), s[0] * t[1] * s[2], f1[0], f0[1], f1[2], out);
+	dincr(corner(c.h00, iz + 1), t[0] * t[1] * s[2], f0[0], f0[1], f1[2], out);
 }
 
 void scene_dturbulence(const float p[3], float omega, float lambda, int octaves, float out[3])
