@@ -670,10 +670,14 @@ static int lower_csg(struct lowering *lw, const scene *s, int index)
 			memcpy(&r, p.ops + i, n * sizeof *p.ops);
 			push_prim(&lw->data, r);
 		}
-		int box_first = lw->data.n;
+		int box_first = lw->data.n;   /* a box a leaf, in the leaves' order (clipped_by's last) */
+		dev_prim *boxes = xmalloc(leaves.n * sizeof *boxes);
 		for (int k = 0; k < g->n_leaves; k++)
 			for (int j = first[k]; j < last[k]; j++)
-				push_prim(&lw->data, csg_leaf_box(&s->objects[g->first + k], lo[k], hi[k]));
+				boxes[j] = csg_leaf_box(&s->objects[g->first + k], lo[k], hi[k]);
+		for (int j = 0; j < leaves.n; j++)
+			push_prim(&lw->data, boxes[j]);
+		free(boxes);
 		int head[4] = { leaf_first, leaves.n, prog_first, p.n };
 		dev_prim c = { .type = PRIM_CSG, .material = leaves.p[0].material, .object = g->first, .link = n_seen };
 		memcpy(&c.a, head, sizeof head);
