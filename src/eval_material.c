@@ -560,6 +560,12 @@ static int pattern_start(struct eval *e, struct cursor *c, const ast_node *item,
 		return p->kind > 0 ? eval_pattern_argument(e, item, &p->pg) : 0;
 	}
 	if (item->kind == AST_IDENT && !eval_lookup(e, item->str) && eval_pattern_kind(item->str) > 0) {
+		int kind = eval_pattern_kind(item->str);
+		if (kind == PATTERN_IMAGE_MAP || kind == PATTERN_IMAGE_PATTERN || kind == PATTERN_BUMP_MAP ||
+		    kind == PATTERN_MATERIAL_MAP) {   /* without its file there is no image to read */
+			eval_error(e, item->loc, "%s needs its block: %s { \"File\" ... }", item->str, item->str);
+			return -1;
+		}
 		start_pattern(p, item, item->str);
 		if (p->kind == PATTERN_TILING)
 			return eval_pattern_tiling(e, c, item, &p->pg);
