@@ -95,3 +95,25 @@ kernel void trace_rays(global const bvh_node *nodes, global const dev_prim *prim
 	traverse_hit h = traverse_closest(0, nodes, prims, n_prims, n_planes, o, d, 0.0f, tmax, counts, RAY_CAMERA);
 	hits[i] = (float4)(h.prim >= 0 ? h.t : INFINITY, as_float(h.prim), as_float(h.inst), 0.0f);
 }
+
+/* The pattern and pigment functions a scene calls while it is read
+ * (src/device_points.c): at each point, the pattern tree root's value
+ * (colour 0: out[2i].x) or its colour (out[2i]: rgb and filter, out[2i+1].x:
+ * transmit), exactly as the render's functions evaluate them
+ * (function_pattern.cl). Only the pattern buffers hold anything. */
+kernel void pattern_points(SCENE_BUFFERS(SCENE_PARAM) global const dev_params *p, int root, int colour,
+                           global const float4 *points, global float4 *out)
+{
+	int i = get_global_id(0);
+	uint counts[COUNT_N] = { 0 };
+	scene_data sc = { SCENE_BUFFERS(SCENE_FIELD) p, counts };
+	float3 q = points[i].xyz;
+	out[2 * i + 1] = (float4)(0.0f);
+	if (!colour) {
+		out[2 * i] = (float4)((float)function_pattern(&sc, root, q.x, q.y, q.z), 0.0f, 0.0f, 0.0f);
+		return;
+	}
+	pigment_colour c = function_pigment_tree(&sc, root, q, (float2)(0.0f), FUNCTION_NO_NORMAL, -FUNCTION_NO_NORMAL);
+	out[2 * i] = (float4)(c.rgb, c.filter);
+	out[2 * i + 1].x = c.transmit;
+}

@@ -1232,12 +1232,19 @@ static void eval_free(struct eval *e)
  * for an older one. A scene without #version is eclat's own and 3.7's
  * (POV-Ray turns gamma correction off for it too, with a warning:
  * eclat-scene(5) says why eclat does not). */
+double eval_working_gamma(const struct eval *e)
+{
+	const scene *s = e->s;
+	if (s->assumed_gamma > 0)
+		return s->assumed_gamma;
+	return e->version_given && e->version < 3.7 ? 0 : 1;
+}
+
 static void film_gamma(struct eval *e)
 {
 	scene *s = e->s;
-	s->film_gamma = s->assumed_gamma > 0 ? s->assumed_gamma : 1;
-	if (s->assumed_gamma == 0 && e->version_given && e->version < 3.7) {
-		s->film_gamma = 0;
+	s->film_gamma = (float)eval_working_gamma(e);
+	if (s->film_gamma == 0) {
 		eval_warning(e, e->version_loc, "no assumed_gamma in a #version %g scene: gamma correction is off, "
 		             "as in POV-Ray 3.7 (colours go into 8-bit images as they are)", e->version);
 	}

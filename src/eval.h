@@ -71,6 +71,13 @@ typedef struct {
 	 * record of its scene hashes them (src/split.h). NULL: not called. */
 	void (*on_read)(const char *path, void *ctx);
 	void *on_read_ctx;
+	/* A pattern (colour false: out[0]) or pigment function's pigment (out:
+	 * red, green, blue, filter, transmit) at p, for a call while the scene is
+	 * read: src/device_points.c. 0, or -1 after an error at loc. NULL: such
+	 * calls are errors (the fuzz target's). */
+	int (*pattern_at)(void *ctx, const scene *s, int pigment, bool colour, const double p[3], double out[5],
+	                  src_loc loc);
+	void *pattern_ctx;
 } eval_options;
 
 #define EVAL_DEFAULT_INCLUDE_DEPTH 64

@@ -969,6 +969,57 @@ static int builtin(struct eval *e, const ast_node *n, value *out)
 
 /* ---- calls ---- */
 
+/* A pattern function's value (a float) or a pigment function's colour at the
+ * call's point, from the kernels through eval_options.pattern_at: POV-Ray
+ * evaluates them wherever the scene calls them. The device runs no function
+ * inside a pattern function (function_pattern.cl), so one made of a function
+ * pattern is refused here as it is in the functions that call it. */
+static int pattern_function(struct eval *e, const ast_node *call, const value *fn, bool colour, value *out)
+{
+	if (!e->opt->pattern_at) {
+		eval_error(e, call->loc, "'%s' is a %s function, which this program cannot evaluate while it reads "
+		           "the scene", call->str, colour ? "pigment" : "pattern");
+		return -1;
+	}
+	if (call->n_kids != 3) {
+		eval_error(e, call->loc, "function '%s' takes 3 arguments, not %d", call->str, call->n_kids);
+		return -1;
+	}
+	double p[3], c[5] = { 0 };
+	for (int i = 0; i < 3; i++)
+		if (eval_expect_float(e, call->kids[i], &p[i]))
+			return -1;
+	const scene_material *m = &fn->mat;
+	if (m->pattern < 0) {   /* a colour: a pattern function of it is 0, as POV-Ray's */
+		for (int i = 0; colour && i < 5; i++)
+			c[i] = m->pigment[i];
+	} else if (eval_function_has_function_pattern(e->s, m->pattern)) {
+		eval_error(e, call->loc, "'%s' is made of a function pattern: the device runs a pattern function's "
+		           "pattern only when it calls no function", call->str);
+		return -1;
+	} else {
+		/* the globals the render will have, as far as the scene has read */
+		scene *s = e->s;
+		int generator = s->noise_generator;
+		float gamma = s->film_gamma;
+		if (!e->noise_given)
+			s->noise_generator = e->version < 3.5 ? 1 : 2;
+		s->film_gamma = (float)eval_working_gamma(e);
+		int rc = e->opt->pattern_at(e->opt->pattern_ctx, s, m->pattern, colour, p, c, call->loc);
+		s->noise_generator = generator;
+		s->film_gamma = gamma;
+		if (rc)
+			return -1;
+	}
+	if (!colour) {
+		*out = eval_float(c[0]);
+		return 0;
+	}
+	*out = (value){ .kind = V_COLOR, .n = 5 };
+	memcpy(out->v, c, sizeof c);
+	return 0;
+}
+
 /* function [(Params)] { Expression }: called with floats, gives a float. */
 int eval_call_function(struct eval *e, const ast_node *call, const value *fn, value *out)
 {
@@ -978,9 +1029,8 @@ int eval_call_function(struct eval *e, const ast_node *call, const value *fn, va
 	if (body->n_kids != 1 || !AST_IS_EXPRESSION(body->kids[0]->kind)) {
 		const ast_node *b = body->n_kids == 1 && body->kids[0]->kind == AST_BLOCK ? body->kids[0] : NULL;
 		const char *what = !b ? "function" : b->kw == KW_PIGMENT ? "pigment" : b->str ? b->str : "function";
-		if (strcmp(what, "pigment") == 0 || strcmp(what, "pattern") == 0)   /* no pattern evaluator here */
-			eval_error(e, call->loc, "'%s' is a %s function, which eclat runs only on the device, in a "
-			           "pigment's function pattern (not while it reads the scene)", call->str, what);
+		if (strcmp(what, "pigment") == 0 || strcmp(what, "pattern") == 0)
+			return pattern_function(e, call, fn, what[1] == 'i', out);
 		else
 			eval_error(e, call->loc, "'%s' is a %s function, which eclat cannot evaluate", call->str, what);
 		return -1;

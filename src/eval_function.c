@@ -144,6 +144,11 @@ static bool has_function_pattern(const scene *s, int node, int depth)
 	return false;
 }
 
+bool eval_function_has_function_pattern(const scene *s, int pigment)
+{
+	return has_function_pattern(s, pigment, 0);
+}
+
 int eval_function_pigment(struct eval *e, const ast_node *def, scene_material *out)
 {
 	ast_node block = *eval_function_pattern_body(def);

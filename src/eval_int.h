@@ -162,6 +162,11 @@ struct scope *eval_capture(struct eval *e, const ast_node *def);
 int eval_env_push(struct eval *e, struct scope *env);
 void eval_env_pop(struct eval *e, int pushed);
 
+/* The working gamma as far as the scene has been read (scene.film_gamma,
+ * which eval sets at the end): assumed_gamma, else 1, or 0 (gamma correction
+ * off) under a #version older than 3.7. */
+double eval_working_gamma(const struct eval *e);
+
 /* Frees the texts' outline cache (not the outlines: the scene has them). */
 void eval_outline_free(struct eval *e);
 
@@ -360,6 +365,9 @@ const ast_node *eval_function_pattern_body(const ast_node *def);
 /* That pattern or pigment evaluated, into out's pigment part (where it is
  * declared, as POV-Ray does: a macro's locals are still there). */
 int eval_function_pigment(struct eval *e, const ast_node *def, scene_material *out);
+/* Whether the pool's pigment, or one in its maps, is a function pattern, which
+ * the device does not run inside a pattern function. */
+bool eval_function_has_function_pattern(const scene *s, int pigment);
 /* pigment_pattern { PIGMENT } (block b) as a function pattern's program: the
  * grey of the pigment's colour at x, y, z (POV-Ray 3.7's pigment_pattern).
  * Returns as eval_function_index does. */

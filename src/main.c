@@ -14,6 +14,7 @@
 #include "cli_pov.h"
 #include "depfile.h"
 #include "device.h"
+#include "device_points.h"
 #include "eval.h"
 #include "film.h"
 #include "host_memory.h"
@@ -972,7 +973,9 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 		scene_init(&s);
 		split_inputs_free(&reads.inputs);   /* each frame's record names the files it read */
 		reads.inputs = (split_inputs){ 0 };
-		if (rc == 0 && eval_scene(tree, &s, eopt) == 0 && diag_error_count() == 0) {
+		int evaluated = rc == 0 ? eval_scene(tree, &s, eopt) : -1;
+		device_points_forget(eopt->pattern_ctx);   /* the next frame numbers its pigments anew */
+		if (evaluated == 0 && diag_error_count() == 0) {
 			if (o->dump_scene)
 				scene_dump(&s, stdout);
 			rc = render_scene(o, &s, output, part, &reads.inputs, &keep, &fi);
@@ -1053,7 +1056,11 @@ int main(int argc, char **argv)
 		ast_dump(tree, stdout);
 		rc = 0;
 	} else {
+		device_points *points = device_points_new(o.device, o.kernel_dir);
+		eopt.pattern_at = points ? device_points_eval : NULL;
+		eopt.pattern_ctx = points;
 		rc = render_frames(&o, tree, &eopt, &frame, has_part ? part : NULL);
+		device_points_free(points);
 	}
 	ast_free(tree);
 	diag_free_all();

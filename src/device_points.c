@@ -1,0 +1,216 @@
+/* device_points.c: pattern and pigment functions called while a scene is
+ * read, evaluated by the kernels (device_points.h says why). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "device.h"
+#include "device_points.h"
+#include "diag.h"
+#include "lower.h"
+
+/* The kernel's arguments: the scene's buffers (SCENE_BUFFERS, shared.h), of
+ * which only the patterns' hold anything, then its own. */
+enum {
+#define POINTS_ENUM(TYPE, NAME) PB_##NAME,
+	SCENE_BUFFERS(POINTS_ENUM)
+#undef POINTS_ENUM
+	PB_params, PB_root, PB_colour, PB_points, PB_out,
+	PB_COUNT
+};
+
+struct device_points {
+	int device;
+	const char *kernel_dir;
+	bool opened, failed;     /* failed: the device or program could not be had (said once) */
+	device_ctx dev;
+	cl_program prog;
+	cl_kernel k;
+	cl_mem bufs[PB_params + 1], points, out;
+	lower_textures lt;       /* the pigments lowered so far */
+	int *roots;              /* by scene pigment: its tree's root in lt, or -1 */
+	int n_roots;
+	int n_images;            /* the scene's images when lt was begun: lt holds no later ones */
+	int sent[4];             /* lt's patterns, warps, maps and texels when last sent */
+};
+
+device_points *device_points_new(int device, const char *kernel_dir)
+{
+	device_points *dp = calloc(1, sizeof *dp);
+	if (dp) {
+		dp->device = device;
+		dp->kernel_dir = kernel_dir;
+	}
+	return dp;
+}
+
+static void release_buffers(device_points *dp)
+{
+	for (int i = 0; i <= PB_params; i++)
+		if (dp->bufs[i])
+			clReleaseMemObject(dp->bufs[i]);
+	memset(dp->bufs, 0, sizeof dp->bufs);
+	memset(dp->sent, 0, sizeof dp->sent);
+}
+
+void device_points_forget(device_points *dp)
+{
+	if (!dp)
+		return;
+	lower_textures_free(&dp->lt);
+	memset(&dp->lt, 0, sizeof dp->lt);
+	free(dp->roots);
+	dp->roots = NULL;
+	dp->n_roots = 0;
+	dp->n_images = 0;
+	release_buffers(dp);
+}
+
+void device_points_free(device_points *dp)
+{
+	if (!dp)
+		return;
+	device_points_forget(dp);
+	if (dp->points)
+		clReleaseMemObject(dp->points);
+	if (dp->out)
+		clReleaseMemObject(dp->out);
+	if (dp->k)
+		clReleaseKernel(dp->k);
+	if (dp->prog)
+		clReleaseProgram(dp->prog);
+	if (dp->opened)
+		device_close(&dp->dev);
+	free(dp);
+}
+
+/* The device and the program with no integrator's kernels in it, once. */
+static int open_device(device_points *dp)
+{
+	if (dp->opened || dp->failed)
+		return dp->failed ? -1 : 0;
+	dp->failed = true;
+	if (device_open(&dp->dev, dp->device))
+		return -1;
+	dp->opened = true;
+	dp->prog = device_build(&dp->dev, dp->kernel_dir, "-cl-std=CL1.2 -DKERNELS_SOME=1", NULL);
+	if (!dp->prog)
+		return -1;
+	cl_int err;
+	dp->k = clCreateKernel(dp->prog, "pattern_points", &err);
+	if (!dp->k)
+		return device_fail("clCreateKernel(pattern_points)", err);
+	dp->points = clCreateBuffer(dp->dev.context, CL_MEM_READ_ONLY, sizeof(float4), NULL, &err);
+	if (dp->points)
+		dp->out = clCreateBuffer(dp->dev.context, CL_MEM_WRITE_ONLY, 2 * sizeof(float4), NULL, &err);
+	if (!dp->points || !dp->out)
+		return device_fail("clCreateBuffer", err);
+	dp->failed = false;
+	return 0;
+}
+
+/* pigment's tree in lt, lowered at its first use. A scene image read after lt
+ * was begun is not in lt's texels (lowering takes them all at once), so lt
+ * begins anew then. */
+static int root_of(device_points *dp, const scene *s, int pigment)
+{
+	if (dp->n_roots > 0 && s->n_images != dp->n_images)
+		device_points_forget(dp);
+	if (pigment >= dp->n_roots) {
+		int n = s->n_pigments > pigment ? s->n_pigments : pigment + 1;
+		int *r = realloc(dp->roots, (size_t)n * sizeof *r);
+		if (!r)
+			return -1;
+		for (int i = dp->n_roots; i < n; i++)
+			r[i] = -1;
+		dp->roots = r;
+		dp->n_roots = n;
+		dp->n_images = s->n_images;
+	}
+	if (dp->roots[pigment] < 0)
+		dp->roots[pigment] = lower_texture_pigment(&dp->lt, s, pigment);
+	return dp->roots[pigment];
+}
+
+static int make(device_points *dp, int at, const void *host, size_t bytes)
+{
+	cl_int err;
+	if (dp->bufs[at])
+		clReleaseMemObject(dp->bufs[at]);
+	dp->bufs[at] = clCreateBuffer(dp->dev.context, CL_MEM_READ_ONLY | (bytes ? CL_MEM_COPY_HOST_PTR : 0),
+	                              bytes ? bytes : 16, bytes ? (void *)host : NULL, &err);
+	return dp->bufs[at] ? 0 : device_fail("clCreateBuffer", err);
+}
+
+/* The pattern buffers, sent again when lowering added to them; the others
+ * once, empty. */
+static int send(device_points *dp)
+{
+	const lower_textures *lt = &dp->lt;
+	int now[4] = { lt->n_patterns, lt->n_warps, lt->n_maps, (int)lt->n_texels };
+	if (dp->bufs[PB_params] && memcmp(now, dp->sent, sizeof now) == 0)
+		return 0;
+	dev_params params;
+	memset(&params, 0, sizeof params);
+	params.camera_normal = -1;
+	for (int i = 0; i <= PB_params; i++) {
+		const void *host = NULL;
+		size_t bytes = 0;
+		switch (i) {
+		case PB_patterns: host = lt->patterns; bytes = lt->n_patterns * sizeof(dev_pattern); break;
+		case PB_warps: host = lt->warps; bytes = lt->n_warps * sizeof(dev_warp); break;
+		case PB_maps: host = lt->maps; bytes = lt->n_maps * sizeof(dev_map_entry); break;
+		case PB_images: host = lt->images; bytes = lt->n_images * sizeof(dev_image); break;
+		case PB_texels: host = lt->texels; bytes = lt->n_texels * sizeof(float4); break;
+		case PB_params: host = &params; bytes = sizeof params; break;
+		default:
+			if (dp->bufs[i])
+				continue;
+		}
+		if (make(dp, i, host, bytes))
+			return -1;
+		cl_int err = clSetKernelArg(dp->k, i, sizeof(cl_mem), &dp->bufs[i]);
+		if (err != CL_SUCCESS)
+			return device_fail("clSetKernelArg", err);
+	}
+	memcpy(dp->sent, now, sizeof now);
+	return 0;
+}
+
+int device_points_eval(void *self, const scene *s, int pigment, bool colour, const double p[3], double out[5],
+                       src_loc loc)
+{
+	device_points *dp = self;
+	if (open_device(dp)) {
+		diag_error(loc, "a pattern or pigment function called while the scene is read runs on the OpenCL "
+		           "device, which could not be had (above)");
+		return -1;
+	}
+	int root = root_of(dp, s, pigment);
+	if (root < 0 || send(dp)) {
+		diag_error(loc, "the pattern function could not be made ready for the device");
+		return -1;
+	}
+	float4 point = { (float)p[0], (float)p[1], (float)p[2], 0 };
+	float4 got[2];
+	cl_int c = colour, err;
+	size_t one = 1;
+	if ((err = clSetKernelArg(dp->k, PB_root, sizeof root, &root)) != CL_SUCCESS ||
+	    (err = clSetKernelArg(dp->k, PB_colour, sizeof c, &c)) != CL_SUCCESS ||
+	    (err = clSetKernelArg(dp->k, PB_points, sizeof(cl_mem), &dp->points)) != CL_SUCCESS ||
+	    (err = clSetKernelArg(dp->k, PB_out, sizeof(cl_mem), &dp->out)) != CL_SUCCESS ||
+	    (err = clEnqueueWriteBuffer(dp->dev.queue, dp->points, CL_FALSE, 0, sizeof point, &point, 0, NULL,
+	                                NULL)) != CL_SUCCESS ||
+	    (err = clEnqueueNDRangeKernel(dp->dev.queue, dp->k, 1, NULL, &one, NULL, 0, NULL, NULL)) != CL_SUCCESS ||
+	    (err = clEnqueueReadBuffer(dp->dev.queue, dp->out, CL_TRUE, 0, sizeof got, got, 0, NULL, NULL)) !=
+	        CL_SUCCESS) {
+		device_fail("pattern_points", err);
+		diag_error(loc, "the pattern function could not be evaluated on the device");
+		return -1;
+	}
+	out[0] = got[0].x;
+	out[1] = got[0].y;
+	out[2] = got[0].z;
+	out[3] = got[0].w;
+	out[4] = got[1].x;
+	return 0;
+}
