@@ -26,6 +26,7 @@ struct device_points {
 	cl_program prog;
 	cl_kernel k;
 	cl_mem bufs[PB_params + 1], points, out;
+	int capacity;            /* points the points and out buffers hold */
 	lower_textures lt;       /* the pigments lowered so far */
 	int *roots;              /* by scene pigment: its tree's root in lt, or -1 */
 	int n_roots;
@@ -99,11 +100,6 @@ static int open_device(device_points *dp)
 	dp->k = clCreateKernel(dp->prog, "pattern_points", &err);
 	if (!dp->k)
 		return device_fail("clCreateKernel(pattern_points)", err);
-	dp->points = clCreateBuffer(dp->dev.context, CL_MEM_READ_ONLY, sizeof(float4), NULL, &err);
-	if (dp->points)
-		dp->out = clCreateBuffer(dp->dev.context, CL_MEM_WRITE_ONLY, 2 * sizeof(float4), NULL, &err);
-	if (!dp->points || !dp->out)
-		return device_fail("clCreateBuffer", err);
 	dp->failed = false;
 	return 0;
 }
@@ -176,7 +172,31 @@ static int send(device_points *dp)
 	return 0;
 }
 
-int device_points_eval(void *self, const scene *s, int pigment, bool colour, const double p[3], double out[5],
+/* Room for n points in the points and out buffers. */
+static int room(device_points *dp, int n)
+{
+	if (n <= dp->capacity)
+		return 0;
+	cl_int err;
+	cl_mem points = clCreateBuffer(dp->dev.context, CL_MEM_READ_ONLY, (size_t)n * sizeof(float4), NULL, &err);
+	cl_mem out = points ? clCreateBuffer(dp->dev.context, CL_MEM_WRITE_ONLY, (size_t)n * 2 * sizeof(float4), NULL,
+	                                     &err) : NULL;
+	if (!out) {
+		if (points)
+			clReleaseMemObject(points);
+		return device_fail("clCreateBuffer", err);
+	}
+	if (dp->points)
+		clReleaseMemObject(dp->points);
+	if (dp->out)
+		clReleaseMemObject(dp->out);
+	dp->points = points;
+	dp->out = out;
+	dp->capacity = n;
+	return 0;
+}
+
+int device_points_eval(void *self, const scene *s, int pigment, bool colour, int n, const double *p, double *out,
                        src_loc loc)
 {
 	device_points *dp = self;
@@ -186,31 +206,41 @@ int device_points_eval(void *self, const scene *s, int pigment, bool colour, con
 		return -1;
 	}
 	int root = root_of(dp, s, pigment);
-	if (root < 0 || send(dp)) {
+	if (n <= 0)
+		return 0;
+	float4 *host = malloc((size_t)n * 3 * sizeof *host), *got = host + n;
+	if (root < 0 || !host || send(dp) || room(dp, n)) {
+		free(host);
 		diag_error(loc, "the pattern function could not be made ready for the device");
 		return -1;
 	}
-	float4 point = { (float)p[0], (float)p[1], (float)p[2], 0 };
-	float4 got[2];
+	for (int i = 0; i < n; i++)
+		host[i] = (float4){ (float)p[3 * i], (float)p[3 * i + 1], (float)p[3 * i + 2], 0 };
 	cl_int c = colour, err;
-	size_t one = 1;
+	size_t global = (size_t)n;
 	if ((err = clSetKernelArg(dp->k, PB_root, sizeof root, &root)) != CL_SUCCESS ||
 	    (err = clSetKernelArg(dp->k, PB_colour, sizeof c, &c)) != CL_SUCCESS ||
 	    (err = clSetKernelArg(dp->k, PB_points, sizeof(cl_mem), &dp->points)) != CL_SUCCESS ||
 	    (err = clSetKernelArg(dp->k, PB_out, sizeof(cl_mem), &dp->out)) != CL_SUCCESS ||
-	    (err = clEnqueueWriteBuffer(dp->dev.queue, dp->points, CL_FALSE, 0, sizeof point, &point, 0, NULL,
+	    (err = clEnqueueWriteBuffer(dp->dev.queue, dp->points, CL_FALSE, 0, (size_t)n * sizeof *host, host, 0, NULL,
 	                                NULL)) != CL_SUCCESS ||
-	    (err = clEnqueueNDRangeKernel(dp->dev.queue, dp->k, 1, NULL, &one, NULL, 0, NULL, NULL)) != CL_SUCCESS ||
-	    (err = clEnqueueReadBuffer(dp->dev.queue, dp->out, CL_TRUE, 0, sizeof got, got, 0, NULL, NULL)) !=
-	        CL_SUCCESS) {
+	    (err = clEnqueueNDRangeKernel(dp->dev.queue, dp->k, 1, NULL, &global, NULL, 0, NULL, NULL)) != CL_SUCCESS ||
+	    (err = clEnqueueReadBuffer(dp->dev.queue, dp->out, CL_TRUE, 0, (size_t)n * 2 * sizeof *got, got, 0, NULL,
+	                               NULL)) != CL_SUCCESS) {
+		free(host);
 		device_fail("pattern_points", err);
 		diag_error(loc, "the pattern function could not be evaluated on the device");
 		return -1;
 	}
-	out[0] = got[0].x;
-	out[1] = got[0].y;
-	out[2] = got[0].z;
-	out[3] = got[0].w;
-	out[4] = got[1].x;
+	for (int i = 0; i < n; i++) {
+		const float4 *g = &got[2 * i];
+		double *o = &out[5 * i];
+		o[0] = g[0].x;
+		o[1] = g[0].y;
+		o[2] = g[0].z;
+		o[3] = g[0].w;
+		o[4] = g[1].x;
+	}
+	free(host);
 	return 0;
 }

@@ -20,9 +20,10 @@ typedef struct device_points device_points;
 device_points *device_points_new(int device, const char *kernel_dir);
 
 /* eval_options.pattern_at (eval.h): pigment's pattern value (colour false:
- * out[0]) or colour (out[0..4]: red, green, blue, filter, transmit) at p.
- * 0, or -1 after an error at loc (no device, a kernel that fails). */
-int device_points_eval(void *self, const scene *s, int pigment, bool colour, const double p[3], double out[5],
+ * out[5 * i]) or colour (out[5 * i ...]: red, green, blue, filter,
+ * transmit) at the n points p, in one launch. 0, or -1 after an error at loc
+ * (no device, a kernel that fails). */
+int device_points_eval(void *self, const scene *s, int pigment, bool colour, int n, const double *p, double *out,
                        src_loc loc);
 
 /* Forgets the lowered pigments (the next scene, an animation's next frame,

@@ -71,11 +71,12 @@ typedef struct {
 	 * record of its scene hashes them (src/split.h). NULL: not called. */
 	void (*on_read)(const char *path, void *ctx);
 	void *on_read_ctx;
-	/* A pattern (colour false: out[0]) or pigment function's pigment (out:
-	 * red, green, blue, filter, transmit) at p, for a call while the scene is
-	 * read: src/device_points.c. 0, or -1 after an error at loc. NULL: such
-	 * calls are errors (the fuzz target's). */
-	int (*pattern_at)(void *ctx, const scene *s, int pigment, bool colour, const double p[3], double out[5],
+	/* A pattern or pigment function's pigment at n points p (three doubles a
+	 * point) while the scene is read: its pattern's value (colour false:
+	 * out[5 * i]) or its colour (out[5 * i ...]: red, green, blue, filter,
+	 * transmit); src/device_points.c. 0, or -1 after an error at loc. NULL:
+	 * such calls are errors (the fuzz target's). */
+	int (*pattern_at)(void *ctx, const scene *s, int pigment, bool colour, int n, const double *p, double *out,
 	                  src_loc loc);
 	void *pattern_ctx;
 } eval_options;

@@ -969,11 +969,26 @@ static int builtin(struct eval *e, const ast_node *n, value *out)
 
 /* ---- calls ---- */
 
+int eval_pattern_points(struct eval *e, src_loc loc, int pigment, bool colour, int n, const double *p, double *out)
+{
+	/* the globals the render will have, as far as the scene has read */
+	scene *s = e->s;
+	int generator = s->noise_generator;
+	float gamma = s->film_gamma;
+	if (!e->noise_given)
+		s->noise_generator = e->version < 3.5 ? 1 : 2;
+	s->film_gamma = (float)eval_working_gamma(e);
+	int rc = e->opt->pattern_at(e->opt->pattern_ctx, s, pigment, colour, n, p, out, loc);
+	s->noise_generator = generator;
+	s->film_gamma = gamma;
+	return rc;
+}
+
 /* A pattern function's value (a float) or a pigment function's colour at the
- * call's point, from the kernels through eval_options.pattern_at: POV-Ray
- * evaluates them wherever the scene calls them. The device runs no function
- * inside a pattern function (function_pattern.cl), so one made of a function
- * pattern is refused here as it is in the functions that call it. */
+ * call's point, from the kernels (eval_pattern_points): POV-Ray evaluates
+ * them wherever the scene calls them. The device runs no function inside a
+ * pattern function (function_pattern.cl), so one made of a function pattern
+ * is refused here as it is in the functions that call it. */
 static int pattern_function(struct eval *e, const ast_node *call, const value *fn, bool colour, value *out)
 {
 	if (!e->opt->pattern_at) {
@@ -997,19 +1012,8 @@ static int pattern_function(struct eval *e, const ast_node *call, const value *f
 		eval_error(e, call->loc, "'%s' is made of a function pattern: the device runs a pattern function's "
 		           "pattern only when it calls no function", call->str);
 		return -1;
-	} else {
-		/* the globals the render will have, as far as the scene has read */
-		scene *s = e->s;
-		int generator = s->noise_generator;
-		float gamma = s->film_gamma;
-		if (!e->noise_given)
-			s->noise_generator = e->version < 3.5 ? 1 : 2;
-		s->film_gamma = (float)eval_working_gamma(e);
-		int rc = e->opt->pattern_at(e->opt->pattern_ctx, s, m->pattern, colour, p, c, call->loc);
-		s->noise_generator = generator;
-		s->film_gamma = gamma;
-		if (rc)
-			return -1;
+	} else if (eval_pattern_points(e, call->loc, m->pattern, colour, 1, p, c)) {
+		return -1;
 	}
 	if (!colour) {
 		*out = eval_float(c[0]);

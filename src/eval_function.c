@@ -36,8 +36,9 @@ struct fcomp {
 static const char *fallback;
 /* Whether the function being made may call pattern and pigment functions: a
  * pigment's function pattern or an isosurface may (the device runs it with
- * the scene's pattern buffers), a height_field or a parametric may not (the
- * host, which makes their meshes, has no pattern evaluator). */
+ * the scene's pattern buffers), and a height_field (its grid's points go to
+ * the device at once); a parametric may not (the host refines its mesh one
+ * point at a time). */
 static bool patterns_allowed;
 
 static const char *const xyz[] = { "x", "y", "z" };
@@ -197,9 +198,9 @@ static int function_pigment(struct fcomp *c, const value *fn, const char *name, 
                             scene_material *out)
 {
 	if (!patterns_allowed)
-		return unsupported(c->e, c->skipped, use, "'%s' is a pattern or pigment function, which only a "
-		                   "pigment's function pattern or an isosurface can call yet (not a height_field or a "
-		                   "parametric)", name);
+		return unsupported(c->e, c->skipped, use, "'%s' is a pattern or pigment function, which a "
+		                   "parametric's function cannot call yet (a pigment's function pattern, an isosurface's "
+		                   "and a height_field's can)", name);
 	if (has_function_pattern(c->e->s, fn->mat.pattern, 0))
 		return unsupported(c->e, c->skipped, use, "'%s' is made of a function pattern: the device runs a "
 		                   "pattern function's pattern only when it calls no function", name);

@@ -12,7 +12,8 @@
  *    gives its grey value times 65535 (imageutil.cpp's image_height_at);
  *  - a function's image has the function's value at x = column / (W - 1) and
  *    y = row / (H - 1), z = 0, the top row first, clamped to [0, 1] as a 16-bit
- *    grey image clamps it (Make_Pattern_Image);
+ *    grey image clamps it (Make_Pattern_Image); a pigment function's is a
+ *    16-bit colour image, whose grey gives the height;
  *  - smooth: each point's normal is the mean of the four triangles' about it in
  *    the raw grid (smooth_height_field);
  *  - water_level L: nothing below L is drawn (the triangles wholly below). */
@@ -87,7 +88,61 @@ static int image_heights(struct eval *e, const ast_node *at, const char *name, d
 	return 0;
 }
 
-/* The function's heights: a 16-bit grey image of it, bottom row first. */
+/* A function's pattern and pigment calls, through the device (a height
+ * field's points are known at once, so each call is one launch for them all). */
+struct hf_calls {
+	struct eval *e;
+	src_loc loc;
+};
+
+static int hf_pattern(void *ctx, int pigment, bool colour, int n, const double *p, double *out)
+{
+	struct hf_calls *c = ctx;
+	return eval_pattern_points(c->e, c->loc, pigment, colour, n, p, out);
+}
+
+#define HF_BLOCK 4096   /* grid points evaluated together */
+
+/* The heights of one block of points a (three doubles a point): a float
+ * function's value as a 16-bit grey image keeps it (clamped, rounded); a
+ * pigment's colour as a 16-bit RGBA image keeps it, each channel cut to 16
+ * bits, then its grey (image_height_at). */
+static int hf_block(struct eval *e, const ast_node *fn, int f, const scene_material *pm, int n, const double *a,
+                    double *v)
+{
+	struct hf_calls calls = { e, fn->loc };
+	if (f >= 0) {
+		if (scene_function_eval_many(e->s, f, n, a, v, e->opt->pattern_at ? hf_pattern : NULL, &calls))
+			return -1;
+		for (int i = 0; i < n; i++) {
+			double x = (float)v[i];
+			x = isnan(x) ? 0 : x < 0 ? 0 : x > 1 ? 1 : x;
+			v[i] = floor(x * 65535.0 + 0.5);
+		}
+		return 0;
+	}
+	double *c = eval_xrealloc(NULL, (size_t)n * 5 * sizeof *c);
+	for (int i = 0; i < n; i++)
+		for (int k = 0; k < 5; k++)
+			c[5 * i + k] = pm->pigment[k];
+	int rc = pm->pattern >= 0 ? eval_pattern_points(e, fn->loc, pm->pattern, true, n, a, c) : 0;
+	for (int i = 0; i < n && rc == 0; i++) {
+		double q[3];
+		for (int k = 0; k < 3; k++) {
+			float x = (float)c[5 * i + k];
+			x = isnan(x) ? 0 : x < 0 ? 0 : x > 1 ? 1 : x;
+			q[k] = (double)(unsigned short)(x * 65535.0f) / 65535.0f;
+		}
+		v[i] = floor((0.297 * q[0] + 0.589 * q[1] + 0.114 * q[2]) * 65535.0);
+	}
+	free(c);
+	return rc;
+}
+
+/* The function's heights: a 16-bit grey image of it, bottom row first. The
+ * function may call pattern and pigment functions, or be one
+ * (function W, H { pigment { ... } }, whose colour image gives its grey):
+ * those run on the device (eval_options.pattern_at). */
 static int function_heights(struct eval *e, const ast_node *fn, double **h, int *w, int *hh)
 {
 	const ast_node *size = fn->n_kids > 2 ? fn->kids[2] : NULL;
@@ -99,20 +154,52 @@ static int function_heights(struct eval *e, const ast_node *fn, double **h, int 
 		           "(function W, H { ... })");
 		return -1;
 	}
-	int f;
-	int rc = eval_function_index(e, fn, "the height_field is left out", &f);
-	if (rc)
+	int f = -1, rc;
+	scene_material pm;
+	if (eval_function_pattern_body(fn) && e->opt->pattern_at) {
+		if (eval_function_pigment(e, fn, &pm))
+			return -1;
+		if (pm.pattern >= 0 && eval_function_has_function_pattern(e->s, pm.pattern)) {
+			static const char msg[] = "this height_field's pigment holds a function pattern: the device runs a "
+			                          "pattern function's pattern only when it calls no function";
+			if (!e->opt->skip_unsupported) {
+				eval_error(e, fn->loc, "%s", msg);
+				return -1;
+			}
+			eval_warn_once(e, fn->loc, msg, "%s; the height_field is left out", msg);
+			return 1;
+		}
+	} else if ((rc = e->opt->pattern_at ? eval_function_pattern_index(e, fn, "the height_field is left out", &f)
+	                                    : eval_function_index(e, fn, "the height_field is left out", &f)) != 0) {
 		return rc;
+	}
 	if (claim_grid(e, fn->loc, *w, *hh))
 		return -1;
-	*h = eval_xrealloc(NULL, (size_t)*w * *hh * sizeof **h);
-	for (int row = 0; row < *hh; row++)
-		for (int x = 0; x < *w; x++) {
-			double a[3] = { (double)x / (*w - 1), (double)row / (*hh - 1), 0 };
-			double v = (float)scene_function_eval(e->s, f, a);
-			v = isnan(v) ? 0 : v < 0 ? 0 : v > 1 ? 1 : v;
-			(*h)[(size_t)(*hh - 1 - row) * *w + x] = floor(v * 65535.0 + 0.5);
+	size_t total = (size_t)*w * *hh;
+	*h = eval_xrealloc(NULL, total * sizeof **h);
+	double *a = eval_xrealloc(NULL, HF_BLOCK * 3 * sizeof *a), v[HF_BLOCK];
+	for (size_t at = 0; at < total; at += HF_BLOCK) {
+		int n = total - at < HF_BLOCK ? (int)(total - at) : HF_BLOCK;
+		for (int i = 0; i < n; i++) {
+			size_t k = at + i;
+			int row = (int)(k / *w), x = (int)(k % *w);
+			a[3 * i] = (double)x / (*w - 1);
+			a[3 * i + 1] = (double)row / (*hh - 1);
+			a[3 * i + 2] = 0;
 		}
+		if (hf_block(e, fn, f, &pm, n, a, v)) {
+			free(a);
+			free(*h);
+			*h = NULL;
+			return -1;
+		}
+		for (int i = 0; i < n; i++) {
+			size_t k = at + i;
+			int row = (int)(k / *w), x = (int)(k % *w);
+			(*h)[(size_t)(*hh - 1 - row) * *w + x] = v[i];
+		}
+	}
+	free(a);
 	return 0;
 }
 

@@ -365,6 +365,11 @@ const ast_node *eval_function_pattern_body(const ast_node *def);
 /* That pattern or pigment evaluated, into out's pigment part (where it is
  * declared, as POV-Ray does: a macro's locals are still there). */
 int eval_function_pigment(struct eval *e, const ast_node *def, scene_material *out);
+/* The pool's pigment at n points p (three doubles a point) through
+ * eval_options.pattern_at, which must be set, with the working gamma and noise
+ * generator in effect so far: its pattern's value (colour false: out[5 * i])
+ * or its colour (out[5 * i ...]). 0, or -1 after an error at loc. */
+int eval_pattern_points(struct eval *e, src_loc loc, int pigment, bool colour, int n, const double *p, double *out);
 /* Whether the pool's pigment, or one in its maps, is a function pattern, which
  * the device does not run inside a pattern function. */
 bool eval_function_has_function_pattern(const scene *s, int pigment);

@@ -547,6 +547,17 @@ int scene_add_function(scene *s, const scene_function *f);
 /* The value of function f for its parameters' values args, as the device computes it
  * but in double: the host's twin of the OpenCL that lowering writes. */
 double scene_function_eval(const scene *s, int f, const double *args);
+/* The values of a pattern or pigment function's pigment at n points p (three
+ * doubles a point) for scene_function_eval_many: its pattern's value (colour
+ * false: out[5 * i]) or its colour (out[5 * i ...]: red, green, blue, filter,
+ * transmit). 0, or -1 after saying why. */
+typedef int (*scene_pattern_points)(void *ctx, int pigment, bool colour, int n, const double *p, double *out);
+/* scene_function_eval at n points at once (args: n_params doubles a point),
+ * the same ops in the same order, so the same values, and the pattern and
+ * pigment ops through pattern (NULL: they are 0, as in scene_function_eval),
+ * one call for all n points. 0, or -1 when pattern failed or memory ran out. */
+int scene_function_eval_many(const scene *s, int f, int n, const double *args, double *out,
+                             scene_pattern_points pattern, void *ctx);
 /* Whether function f, or one it calls, calls a pattern or pigment function,
  * which only the device evaluates (scene_function_eval cannot). */
 bool scene_function_calls_patterns(const scene *s, int f);

@@ -131,6 +131,94 @@ double scene_function_eval(const scene *s, int f, const double *args)
 	return top > 0 ? stack[top - 1] : 0;
 }
 
+/* A pattern or pigment op's values at the n points of its three operands'
+ * columns, into the first column: the pattern's value, or one channel of the
+ * colour (5: POV-Ray's grey, the weights of function_pigment). */
+static int pattern_op(const scene_fop *o, int n, double *col[3], scene_pattern_points pattern, void *ctx)
+{
+	if (!pattern) {
+		for (int i = 0; i < n; i++)
+			col[0][i] = 0;
+		return 0;
+	}
+	double *p = malloc((size_t)n * 8 * sizeof *p), *c = p + 3 * n;
+	if (!p)
+		return -1;
+	for (int i = 0; i < n; i++)
+		for (int k = 0; k < 3; k++)
+			p[3 * i + k] = col[k][i];
+	bool colour = o->op == FOP_PIGMENT;
+	int channel = colour ? (int)o->value : 0;
+	int rc = pattern(ctx, o->arg, colour, n, p, c);
+	for (int i = 0; i < n && rc == 0; i++) {
+		const double *v = c + 5 * i;
+		col[0][i] = channel < 5 ? v[channel] : (double)(0.297f * (float)v[0] + 0.589f * (float)v[1] +
+		                                                0.114f * (float)v[2]);
+	}
+	free(p);
+	return rc;
+}
+
+/* The stack holds a column of n values a slot. */
+int scene_function_eval_many(const scene *s, int f, int n, const double *args, double *out,
+                             scene_pattern_points pattern, void *ctx)
+{
+	const scene_function *fn = &s->functions[f];
+	double *stack = malloc((size_t)SCENE_FUNCTION_STACK * n * sizeof *stack);
+	if (!stack)
+		return -1;
+	double *col[SCENE_FUNCTION_STACK];
+	for (int k = 0; k < SCENE_FUNCTION_STACK; k++)
+		col[k] = stack + (size_t)k * n;
+	int top = 0, rc = 0;
+	for (int j = 0; j < fn->n_ops && rc == 0; j++) {
+		const scene_fop *o = &fn->ops[j];
+		if (o->op == FOP_CONST) {
+			for (int i = 0; i < n; i++)
+				col[top][i] = o->value;
+		} else if (o->op == FOP_PARAM) {
+			for (int i = 0; i < n; i++)
+				col[top][i] = args[(size_t)i * fn->n_params + o->arg];
+		} else if (o->op == FOP_NOISE3) {
+			top -= 3;
+			for (int i = 0; i < n; i++) {
+				float p[3] = { (float)col[top][i], (float)col[top + 1][i], (float)col[top + 2][i] };
+				col[top][i] = scene_noise(p, o->arg ? o->arg : s->noise_generator);
+			}
+		} else if (o->op == FOP_PATTERN || o->op == FOP_PIGMENT) {
+			top -= 3;
+			rc = pattern_op(o, n, col + top, pattern, ctx);
+		} else if (o->op == FOP_CALL) {
+			int k = s->functions[o->arg].n_params;
+			top -= k;
+			double *a = malloc(((size_t)n * k + 1) * sizeof *a);
+			if (!a) {
+				rc = -1;
+				break;
+			}
+			for (int i = 0; i < n; i++)
+				for (int m = 0; m < k; m++)
+					a[(size_t)i * k + m] = col[top + m][i];
+			rc = scene_function_eval_many(s, o->arg, n, a, col[top], pattern, ctx);
+			free(a);
+		} else {
+			int k = fops[o->op].arity;
+			top -= k;
+			for (int i = 0; i < n; i++) {
+				double a[4];
+				for (int m = 0; m < k; m++)
+					a[m] = col[top + m][i];
+				col[top][i] = apply(o->op, a);
+			}
+		}
+		top++;
+	}
+	for (int i = 0; i < n && rc == 0; i++)
+		out[i] = top > 0 ? col[top - 1][i] : 0;
+	free(stack);
+	return rc;
+}
+
 /* Calls reach only functions made before the caller (eval compiles a callee
  * first), so the walk ends; depth guards a malformed pool all the same. */
 static bool calls_patterns(const scene *s, int f, int depth)
