@@ -1024,6 +1024,31 @@ static int pattern_function(struct eval *e, const ast_node *call, const value *f
 	return 0;
 }
 
+/* function { transform { ... } }: the point x, y, z transformed, a vector
+ * (POV-Ray's transform function; transforms.inc's vtransform calls one). */
+static int transform_function(struct eval *e, const ast_node *call, const value *fn, const ast_node *b,
+                              value *out)
+{
+	if (call->n_kids != 3) {
+		eval_error(e, call->loc, "function '%s' takes 3 arguments, not %d", call->str, call->n_kids);
+		return -1;
+	}
+	double p[3], q[3];
+	for (int i = 0; i < 3; i++)
+		if (eval_expect_float(e, call->kids[i], &p[i]))
+			return -1;
+	ast_node item = { .kind = AST_BLOCK, .kw = KW_TRANSFORM, .loc = b->loc, .kids = b->kids, .n_kids = b->n_kids };
+	xform t = scene_xform_identity();
+	int pushed = eval_env_push(e, fn->env);
+	int rc = eval_transform_item(e, NULL, &item, &t);
+	eval_env_pop(e, pushed);
+	if (rc < 0)
+		return -1;
+	scene_xform_point(&t, p, q);
+	*out = eval_vector3(q);
+	return 0;
+}
+
 /* function [(Params)] { Expression }: called with floats, gives a float. */
 int eval_call_function(struct eval *e, const ast_node *call, const value *fn, value *out)
 {
@@ -1033,6 +1058,8 @@ int eval_call_function(struct eval *e, const ast_node *call, const value *fn, va
 	if (body->n_kids != 1 || !AST_IS_EXPRESSION(body->kids[0]->kind)) {
 		const ast_node *b = body->n_kids == 1 && body->kids[0]->kind == AST_BLOCK ? body->kids[0] : NULL;
 		const char *what = !b ? "function" : b->kw == KW_PIGMENT ? "pigment" : b->str ? b->str : "function";
+		if (b && b->kw == KW_TRANSFORM)
+			return transform_function(e, call, fn, b, out);
 		if (strcmp(what, "pigment") == 0 || strcmp(what, "pattern") == 0)
 			return pattern_function(e, call, fn, what[1] == 'i', out);
 		else
