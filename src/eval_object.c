@@ -1347,6 +1347,35 @@ struct mesh2_parts {
 	int n_nrm_idx, n_uv_idx;
 };
 
+/* The index blocks are read where they are, in POV-Ray's order after the
+ * vectors and textures they index: a block that comes from an #include or a
+ * macro may use its #locals, which end with it. */
+static int mesh2_indices(struct eval *e, const ast_node *item, scene_mesh *m, struct mesh2_parts *p)
+{
+	if (item->kind != AST_BLOCK)
+		return eval_not_valid(e, item, "a mesh2");
+	const ast_node *had = item->kw == KW_FACE_INDICES ? p->faces
+	                    : item->kw == KW_NORMAL_INDICES ? p->normal_indices : p->uv_indices;
+	if (had) {
+		eval_error(e, item->loc, "a mesh2 has one %s", ast_keyword_name(item->kw));
+		return -1;
+	}
+	if (item->kw == KW_FACE_INDICES) {
+		if (m->n_v == 0) {
+			eval_error(e, item->loc, "mesh2 needs vertex_vectors before face_indices");
+			return -1;
+		}
+		p->faces = item;
+		return indices_block(e, item, &m->face, &m->face_mat, &m->n_faces, m->n_v, m->n_mats);
+	}
+	if (item->kw == KW_NORMAL_INDICES) {
+		p->normal_indices = item;
+		return indices_block(e, item, &m->face_nrm, NULL, &p->n_nrm_idx, m->n_nrm, 0);
+	}
+	p->uv_indices = item;
+	return indices_block(e, item, &m->face_uv, NULL, &p->n_uv_idx, m->n_uv, 0);
+}
+
 static int mesh2_item(struct eval *e, const ast_node *item, scene_mesh *m, struct mesh2_parts *p)
 {
 	switch (item->kind == AST_BLOCK || item->kind == AST_ARG ? item->kw : -1) {
@@ -1363,37 +1392,25 @@ static int mesh2_item(struct eval *e, const ast_node *item, scene_mesh *m, struc
 		return 0;
 	}
 	case KW_TEXTURE_LIST: return texture_list(e, item, m);
-	case KW_FACE_INDICES: p->faces = item; return 0;
-	case KW_NORMAL_INDICES: p->normal_indices = item; return 0;
-	case KW_UV_INDICES: p->uv_indices = item; return 0;
+	case KW_FACE_INDICES: case KW_NORMAL_INDICES: case KW_UV_INDICES: return mesh2_indices(e, item, m, p);
 	case KW_INSIDE_VECTOR: return inside_vector(e, item, m);
 	default: return 1;
 	}
 }
 
-/* The indices, read once the vectors they refer to are known. */
+/* The index blocks agree with each other. */
 static int mesh2_faces(struct eval *e, const ast_node *b, scene_mesh *m, const struct mesh2_parts *p)
 {
-	int n;
 	if (!p->faces) {
 		eval_error(e, b->loc, "mesh2 needs face_indices");
 		return -1;
 	}
-	if (m->n_v == 0) {
-		eval_error(e, b->loc, "mesh2 needs vertex_vectors");
+	if (p->normal_indices && p->n_nrm_idx != m->n_faces) {
+		eval_error(e, p->normal_indices->loc, "normal_indices has %d, face_indices %d", p->n_nrm_idx, m->n_faces);
 		return -1;
 	}
-	if (indices_block(e, p->faces, &m->face, &m->face_mat, &m->n_faces, m->n_v, m->n_mats))
-		return -1;
-	if (p->normal_indices && (indices_block(e, p->normal_indices, &m->face_nrm, NULL, &n, m->n_nrm, 0) ||
-	                          n != m->n_faces)) {
-		if (n != m->n_faces)
-			eval_error(e, p->normal_indices->loc, "normal_indices has %d, face_indices %d", n, m->n_faces);
-		return -1;
-	}
-	if (p->uv_indices && (indices_block(e, p->uv_indices, &m->face_uv, NULL, &n, m->n_uv, 0) || n != m->n_faces)) {
-		if (n != m->n_faces)
-			eval_error(e, p->uv_indices->loc, "uv_indices has %d, face_indices %d", n, m->n_faces);
+	if (p->uv_indices && p->n_uv_idx != m->n_faces) {
+		eval_error(e, p->uv_indices->loc, "uv_indices has %d, face_indices %d", p->n_uv_idx, m->n_faces);
 		return -1;
 	}
 	return 0;
