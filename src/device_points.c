@@ -1,5 +1,6 @@
 /* device_points.c: pattern and pigment functions called while a scene is
  * read, evaluated by the kernels (device_points.h says why). */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -21,10 +22,12 @@ enum {
 struct device_points {
 	int device;
 	const char *kernel_dir;
-	bool opened, failed;     /* failed: the device or program could not be had (said once) */
+	bool opened, failed;     /* failed: the device could not be had (said once) */
 	device_ctx dev;
 	cl_program prog;
 	cl_kernel k;
+	char *functions;         /* the scene's functions the program holds (NULL: none) */
+	bool args_set;           /* k has every buffer argument */
 	cl_mem bufs[PB_params + 1], points, out;
 	int capacity;            /* points the points and out buffers hold */
 	lower_textures lt;       /* the pigments lowered so far */
@@ -79,12 +82,13 @@ void device_points_free(device_points *dp)
 		clReleaseKernel(dp->k);
 	if (dp->prog)
 		clReleaseProgram(dp->prog);
+	free(dp->functions);
 	if (dp->opened)
 		device_close(&dp->dev);
 	free(dp);
 }
 
-/* The device and the program with no integrator's kernels in it, once. */
+/* The device, once. */
 static int open_device(device_points *dp)
 {
 	if (dp->opened || dp->failed)
@@ -93,14 +97,55 @@ static int open_device(device_points *dp)
 	if (device_open(&dp->dev, dp->device))
 		return -1;
 	dp->opened = true;
-	dp->prog = device_build(&dp->dev, dp->kernel_dir, "-cl-std=CL1.2 -DKERNELS_SOME=1", NULL);
+	dp->failed = false;
+	return 0;
+}
+
+/* A program with no integrator's kernels in it, and with functions (the
+ * scene's, as OpenCL C, taken) when a pigment runs function patterns: made
+ * again only when they change. Without functions, whatever program there is
+ * serves. */
+static int use_program(device_points *dp, char *functions, int levels)
+{
+	if (dp->k && (!functions || (dp->functions && strcmp(functions, dp->functions) == 0))) {
+		free(functions);
+		return 0;
+	}
+	if (dp->k)
+		clReleaseKernel(dp->k);
+	if (dp->prog)
+		clReleaseProgram(dp->prog);
+	dp->k = NULL;
+	free(dp->functions);
+	dp->functions = functions;
+	dp->args_set = false;
+	char options[128];
+	snprintf(options, sizeof options, "-cl-std=CL1.2 -DKERNELS_SOME=1%s", functions ? " -DSCENE_FUNCTIONS=1" : "");
+	if (functions && levels > 1)
+		snprintf(options + strlen(options), sizeof options - strlen(options), " -DFUNCTION_LEVELS=%d", levels);
+	dp->prog = device_build(&dp->dev, dp->kernel_dir, options, functions);
 	if (!dp->prog)
 		return -1;
 	cl_int err;
 	dp->k = clCreateKernel(dp->prog, "pattern_points", &err);
 	if (!dp->k)
 		return device_fail("clCreateKernel(pattern_points)", err);
-	dp->failed = false;
+	return 0;
+}
+
+/* roots long enough for pigment (and the scene's pigments), the new ones -1. */
+static int grow_roots(device_points *dp, const scene *s, int pigment)
+{
+	if (pigment < dp->n_roots)
+		return 0;
+	int n = s->n_pigments > pigment ? s->n_pigments : pigment + 1;
+	int *r = realloc(dp->roots, (size_t)n * sizeof *r);
+	if (!r)
+		return -1;
+	for (int i = dp->n_roots; i < n; i++)
+		r[i] = -1;
+	dp->roots = r;
+	dp->n_roots = n;
 	return 0;
 }
 
@@ -111,17 +156,10 @@ static int root_of(device_points *dp, const scene *s, int pigment)
 {
 	if (dp->n_roots > 0 && s->n_images != dp->n_images)
 		device_points_forget(dp);
-	if (pigment >= dp->n_roots) {
-		int n = s->n_pigments > pigment ? s->n_pigments : pigment + 1;
-		int *r = realloc(dp->roots, (size_t)n * sizeof *r);
-		if (!r)
-			return -1;
-		for (int i = dp->n_roots; i < n; i++)
-			r[i] = -1;
-		dp->roots = r;
-		dp->n_roots = n;
+	if (dp->n_roots == 0)
 		dp->n_images = s->n_images;
-	}
+	if (grow_roots(dp, s, pigment))
+		return -1;
 	if (dp->roots[pigment] < 0)
 		dp->roots[pigment] = lower_texture_pigment(&dp->lt, s, pigment);
 	return dp->roots[pigment];
@@ -143,7 +181,7 @@ static int send(device_points *dp)
 {
 	const lower_textures *lt = &dp->lt;
 	int now[4] = { lt->n_patterns, lt->n_warps, lt->n_maps, (int)lt->n_texels };
-	if (dp->bufs[PB_params] && memcmp(now, dp->sent, sizeof now) == 0)
+	if (dp->args_set && dp->bufs[PB_params] && memcmp(now, dp->sent, sizeof now) == 0)
 		return 0;
 	dev_params params;
 	memset(&params, 0, sizeof params);
@@ -159,17 +197,39 @@ static int send(device_points *dp)
 		case PB_texels: host = lt->texels; bytes = lt->n_texels * sizeof(float4); break;
 		case PB_params: host = &params; bytes = sizeof params; break;
 		default:
-			if (dp->bufs[i])
-				continue;
+			bytes = 0;
 		}
-		if (make(dp, i, host, bytes))
+		if ((!dp->bufs[i] || host) && make(dp, i, host, bytes))
 			return -1;
 		cl_int err = clSetKernelArg(dp->k, i, sizeof(cl_mem), &dp->bufs[i]);
 		if (err != CL_SUCCESS)
 			return device_fail("clSetKernelArg", err);
 	}
 	memcpy(dp->sent, now, sizeof now);
+	dp->args_set = true;
 	return 0;
+}
+
+/* The program pigment needs: with the scene's functions when its tree runs
+ * function patterns, read at level 1 (lower_function_source_reading), their
+ * pigments lowered into lt as the render's are. */
+static int program_for(device_points *dp, const scene *s, int pigment)
+{
+	if (scene_pigment_levels(s, pigment) == 0)
+		return use_program(dp, NULL, 1);
+	for (int f = 0; f < s->n_functions; f++)
+		for (int i = 0; i < s->functions[f].n_ops; i++) {
+			const scene_fop *o = &s->functions[f].ops[i];
+			if ((o->op == FOP_PATTERN || o->op == FOP_PIGMENT) && root_of(dp, s, o->arg) < 0)
+				return -1;
+		}
+	if (grow_roots(dp, s, s->n_pigments - 1))
+		return -1;   /* roots covers every pigment lower_function_source may look up */
+	char *text = lower_function_source_reading(s, dp->roots, pigment);
+	if (!text)
+		return -1;
+	int levels = lower_function_levels(s), below = 1 + scene_pigment_levels(s, pigment);
+	return use_program(dp, text, below > levels ? below : levels);
 }
 
 /* Room for n points in the points and out buffers. */
@@ -206,10 +266,14 @@ int device_points_eval(void *self, const scene *s, int pigment, bool colour, int
 		return -1;
 	}
 	int root = root_of(dp, s, pigment);
+	if (root < 0 || program_for(dp, s, pigment)) {
+		diag_error(loc, "the pattern function could not be made ready for the device");
+		return -1;
+	}
 	if (n <= 0)
 		return 0;
 	float4 *host = malloc((size_t)n * 3 * sizeof *host), *got = host + n;
-	if (root < 0 || !host || send(dp) || room(dp, n)) {
+	if (!host || send(dp) || room(dp, n)) {
 		free(host);
 		diag_error(loc, "the pattern function could not be made ready for the device");
 		return -1;

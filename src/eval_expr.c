@@ -986,9 +986,9 @@ int eval_pattern_points(struct eval *e, src_loc loc, int pigment, bool colour, i
 
 /* A pattern function's value (a float) or a pigment function's colour at the
  * call's point, from the kernels (eval_pattern_points): POV-Ray evaluates
- * them wherever the scene calls them. The device runs no function inside a
- * pattern function (function_pattern.cl), so one made of a function pattern
- * is refused here as it is in the functions that call it. */
+ * them wherever the scene calls them. Function patterns nested deeper than
+ * the kernels' levels (function_pattern.cl) are refused here as they are in
+ * the functions that call them. */
 static int pattern_function(struct eval *e, const ast_node *call, const value *fn, bool colour, value *out)
 {
 	if (!e->opt->pattern_at) {
@@ -1008,9 +1008,9 @@ static int pattern_function(struct eval *e, const ast_node *call, const value *f
 	if (m->pattern < 0) {   /* a colour: a pattern function of it is 0, as POV-Ray's */
 		for (int i = 0; colour && i < 5; i++)
 			c[i] = m->pigment[i];
-	} else if (eval_function_has_function_pattern(e->s, m->pattern)) {
-		eval_error(e, call->loc, "'%s' is made of a function pattern: the device runs a pattern function's "
-		           "pattern only when it calls no function", call->str);
+	} else if (scene_pigment_levels(e->s, m->pattern) >= SCENE_FUNCTION_LEVELS_MAX) {
+		eval_error(e, call->loc, "'%s' runs function patterns nested %d deep, more than eclat's kernels run (%d)",
+		           call->str, scene_pigment_levels(e->s, m->pattern), SCENE_FUNCTION_LEVELS_MAX - 1);
 		return -1;
 	} else if (eval_pattern_points(e, call->loc, m->pattern, colour, 1, p, c)) {
 		return -1;

@@ -130,24 +130,11 @@ const ast_node *eval_function_pattern_body(const ast_node *def)
 	return NULL;
 }
 
-/* Whether pigment node of the pool, or one nested in its maps, is a function
- * pattern: the device would run a function inside a function. */
-static bool has_function_pattern(const scene *s, int node, int depth)
+/* Whether a function that reads pigment would run function patterns nested
+ * deeper than the kernels' levels (scene_function_levels). */
+static bool too_deep(const scene *s, int pigment)
 {
-	if (node < 0 || node >= s->n_pigments || depth > 16)
-		return false;
-	const scene_pigment *pg = &s->pigments[node];
-	if (pg->kind == PATTERN_FUNCTION)
-		return true;
-	for (int i = 0; i < pg->n_map; i++)
-		if (has_function_pattern(s, pg->map[i].pigment, depth + 1))
-			return true;
-	return false;
-}
-
-bool eval_function_has_function_pattern(const scene *s, int pigment)
-{
-	return has_function_pattern(s, pigment, 0);
+	return scene_pigment_levels(s, pigment) >= SCENE_FUNCTION_LEVELS_MAX;
 }
 
 int eval_function_pigment(struct eval *e, const ast_node *def, scene_material *out)
@@ -170,11 +157,12 @@ int eval_function_pigment_pattern(struct eval *e, const ast_node *b, const char 
 	if (eval_material_value(e, &block, &v))
 		return -1;
 	eval_value_free(&v);
-	if (has_function_pattern(e->s, v.mat.pattern, 0)) {
+	if (too_deep(e->s, v.mat.pattern)) {
 		bool skipped = false;
 		fallback = instead;
-		unsupported(e, &skipped, b->loc, "this pigment_pattern's pigment holds a function pattern: the device "
-		            "runs a pigment_pattern only when its pigment calls no function");
+		unsupported(e, &skipped, b->loc, "this pigment_pattern's pigment runs function patterns nested %d "
+		            "deep, more than eclat's kernels run (%d)", scene_pigment_levels(e->s, v.mat.pattern),
+		            SCENE_FUNCTION_LEVELS_MAX - 1);
 		return skipped ? 1 : -1;
 	}
 	scene_function f = { .n_params = 3, .loc = b->loc, .key = b };
@@ -201,9 +189,10 @@ static int function_pigment(struct fcomp *c, const value *fn, const char *name, 
 		return unsupported(c->e, c->skipped, use, "'%s' is a pattern or pigment function, which a "
 		                   "parametric's function cannot call yet (a pigment's function pattern, an isosurface's "
 		                   "and a height_field's can)", name);
-	if (has_function_pattern(c->e->s, fn->mat.pattern, 0))
-		return unsupported(c->e, c->skipped, use, "'%s' is made of a function pattern: the device runs a "
-		                   "pattern function's pattern only when it calls no function", name);
+	if (too_deep(c->e->s, fn->mat.pattern))
+		return unsupported(c->e, c->skipped, use, "'%s' runs function patterns nested %d deep, more than "
+		                   "eclat's kernels run (%d)", name, scene_pigment_levels(c->e->s, fn->mat.pattern),
+		                   SCENE_FUNCTION_LEVELS_MAX - 1);
 	*out = fn->mat;
 	return 0;
 }

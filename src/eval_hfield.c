@@ -159,9 +159,9 @@ static int function_heights(struct eval *e, const ast_node *fn, double **h, int 
 	if (eval_function_pattern_body(fn) && e->opt->pattern_at) {
 		if (eval_function_pigment(e, fn, &pm))
 			return -1;
-		if (pm.pattern >= 0 && eval_function_has_function_pattern(e->s, pm.pattern)) {
-			static const char msg[] = "this height_field's pigment holds a function pattern: the device runs a "
-			                          "pattern function's pattern only when it calls no function";
+		if (pm.pattern >= 0 && scene_pigment_levels(e->s, pm.pattern) >= SCENE_FUNCTION_LEVELS_MAX) {
+			static const char msg[] = "this height_field's pigment runs function patterns nested deeper than "
+			                          "eclat's kernels run";
 			if (!e->opt->skip_unsupported) {
 				eval_error(e, fn->loc, "%s", msg);
 				return -1;

@@ -370,9 +370,6 @@ int eval_function_pigment(struct eval *e, const ast_node *def, scene_material *o
  * generator in effect so far: its pattern's value (colour false: out[5 * i])
  * or its colour (out[5 * i ...]). 0, or -1 after an error at loc. */
 int eval_pattern_points(struct eval *e, src_loc loc, int pigment, bool colour, int n, const double *p, double *out);
-/* Whether the pool's pigment, or one in its maps, is a function pattern, which
- * the device does not run inside a pattern function. */
-bool eval_function_has_function_pattern(const scene *s, int pigment);
 /* pigment_pattern { PIGMENT } (block b) as a function pattern's program: the
  * grey of the pigment's colour at x, y, z (POV-Ray 3.7's pigment_pattern).
  * Returns as eval_function_index does. */

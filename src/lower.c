@@ -994,8 +994,11 @@ const char *lower_kernel_options(const lower_result *lr)
 {
 	static _Thread_local char buf[192];
 	int k = lr->kernels;
-	snprintf(buf, sizeof buf, "-cl-std=CL1.2%s%s%s%s%s%s%s", lr->layout == LOWER_LAYOUT_WIDE ? " -DBVH_WIDE=1" : "",
-	         lr->functions ? " -DSCENE_FUNCTIONS=1" : "", k ? " -DKERNELS_SOME=1" : "",
+	char levels[32] = "";
+	if (lr->functions && lr->function_levels > 1)
+		snprintf(levels, sizeof levels, " -DFUNCTION_LEVELS=%d", lr->function_levels);
+	snprintf(buf, sizeof buf, "-cl-std=CL1.2%s%s%s%s%s%s%s%s", lr->layout == LOWER_LAYOUT_WIDE ? " -DBVH_WIDE=1" : "",
+	         lr->functions ? " -DSCENE_FUNCTIONS=1" : "", levels, k ? " -DKERNELS_SOME=1" : "",
 	         k & LOWER_KERNELS_PATH ? " -DKERNELS_PATH=1" : "", k & LOWER_KERNELS_WHITTED ? " -DKERNELS_WHITTED=1" : "",
 	         k & LOWER_KERNELS_WHITTED_AA1 ? " -DKERNELS_WHITTED_AA1=1" : "",
 	         k & LOWER_KERNELS_WHITTED_AA2 ? " -DKERNELS_WHITTED_AA2=1" : "");
@@ -1079,6 +1082,7 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 		rc = -1;
 	int *roots = lower_function_roots(&out->textures, s);
 	out->functions = lower_function_source(s, roots);
+	out->function_levels = lower_function_levels(s);
 	free(roots);
 	if (s->n_functions > 0 && !out->functions)
 		rc = -1;   /* said why, or out of memory: no kernel without its functions */

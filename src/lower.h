@@ -117,6 +117,7 @@ typedef struct {
 	lower_bvh_stats *stats;   /* [0] the top level, then one per mesh placed */
 	int n_stats;
 	dev_params params;        /* camera and background; the renderer fills the rest */
+	int function_levels;      /* lower_function_levels: FUNCTION_LEVELS when above 1 */
 	char *functions;          /* the scene's functions as OpenCL C (lower_function.c), built
 	                           * after the kernels' files; NULL when it has none */
 } lower_result;
@@ -169,9 +170,19 @@ void lower_background_alpha(const scene *s, dev_params *p);
 /* The OpenCL build options for lr's kernels (the node layout is a -D, and
  * SCENE_FUNCTIONS says that lr->functions follows the kernels' files). */
 const char *lower_kernel_options(const lower_result *lr);
+/* The levels of functions the scene's run through function patterns
+ * (scene_function_levels): lowering writes each function once a level, and
+ * the kernels build with FUNCTION_LEVELS when there is more than one. */
+int lower_function_levels(const scene *s);
 /* The scene's functions as OpenCL C, or NULL when it has none (or on out of
  * memory, or after an error that a program is malformed). */
 char *lower_function_source(const scene *s, const int *roots);
+/* The same for a program whose kernel also reads pigment read as a level 1
+ * function does (src/device_points.c's pattern_points): its function
+ * patterns' functions at level 2, and as many levels as it needs
+ * (FUNCTION_LEVELS: the larger of lower_function_levels and 1 +
+ * scene_pigment_levels). read -1: none. */
+char *lower_function_source_reading(const scene *s, const int *roots, int read);
 /* 1 when function f's program keeps scene.h's promises; else 0, why in why. */
 int lower_function_valid(const scene *s, int f, char *why, size_t n);
 

@@ -70,10 +70,22 @@ static void put(struct text *t, const char *fmt, ...)
 	t->len += n;
 }
 
-/* One op as "real tN = ...;" on the temporaries named by stack. */
-static void statement(struct text *t, const scene *s, const int *roots, const scene_fop *o, int *stack, int *top,
-                      int temp)
+/* Level L's names end in _L, level 1's in nothing (function_pattern.cl). */
+static const char *suffix(int level, char buf[16])
 {
+	if (level <= 1)
+		return "";
+	snprintf(buf, 16, "_%d", level);
+	return buf;
+}
+
+/* One op as "real tN = ...;" on the temporaries named by stack, in a function
+ * of level L. */
+static void statement(struct text *t, const scene *s, const int *roots, const scene_fop *o, int *stack, int *top,
+                      int temp, int level)
+{
+	char buf[16];
+	const char *sfx = suffix(level, buf);
 	put(t, "\treal t%d = ", temp);
 	if (o->op == FOP_CONST) {
 		/* %g writes "inf" and "nan", which OpenCL C would read as names:
@@ -95,14 +107,14 @@ static void statement(struct text *t, const scene *s, const int *roots, const sc
 		int root = roots ? roots[o->arg] : 0;
 		/* sc is 0 only in raycast.cl's test kernels, which run no pattern */
 		if (o->op == FOP_PATTERN)
-			put(t, "sc ? function_pattern(sc, %d, ", root);
+			put(t, "sc ? function_pattern%s(sc, %d, ", sfx, root);
 		else
-			put(t, "sc ? function_pigment(sc, %d, %d, ", root, (int)o->value);
+			put(t, "sc ? function_pigment%s(sc, %d, %d, ", sfx, root, (int)o->value);
 		put(t, "t%d, t%d, t%d) : (real)0;\n", stack[*top], stack[*top + 1], stack[*top + 2]);
 	} else if (o->op == FOP_CALL) {
 		int n = s->functions[o->arg].n_params;
 		*top -= n;
-		put(t, "scene_fn%d(sc", o->arg);
+		put(t, "scene_fn%d%s(sc", o->arg, sfx);
 		for (int i = 0; i < n; i++)
 			put(t, ", t%d", stack[*top + i]);
 		put(t, ");\n");
@@ -120,16 +132,17 @@ static void statement(struct text *t, const scene *s, const int *roots, const sc
 	stack[(*top)++] = temp;
 }
 
-static void function(struct text *t, const scene *s, const int *roots, int f)
+static void function(struct text *t, const scene *s, const int *roots, int f, int level)
 {
+	char buf[16];
 	const scene_function *fn = &s->functions[f];
-	put(t, "static real scene_fn%d(const scene_data *sc", f);
+	put(t, "static real scene_fn%d%s(const scene_data *sc", f, suffix(level, buf));
 	for (int i = 0; i < fn->n_params; i++)
 		put(t, ", real p%d", i);
 	put(t, ")\n{\n");
 	int stack[SCENE_FUNCTION_STACK], top = 0;
 	for (int i = 0; i < fn->n_ops; i++)
-		statement(t, s, roots, &fn->ops[i], stack, &top, i);
+		statement(t, s, roots, &fn->ops[i], stack, &top, i, level);
 	if (top > 0)
 		put(t, "\treturn t%d;\n}\n\n", stack[top - 1]);
 	else
@@ -197,7 +210,69 @@ int *lower_function_roots(lower_textures *lt, const scene *s)
 	return roots;
 }
 
+/* The function patterns in pigment pg's tree: their functions are needed at
+ * the level below (row). */
+static void mark_pigment(const scene *s, int pg, bool *row, int depth)
+{
+	if (pg < 0 || pg >= s->n_pigments || depth > 64)
+		return;
+	const scene_pigment *p = &s->pigments[pg];
+	int f = (int)p->params[0][0];
+	if (p->kind == PATTERN_FUNCTION && f >= 0 && f < s->n_functions)
+		row[f] = true;
+	for (int i = 0; i < p->n_map; i++)
+		mark_pigment(s, p->map[i].pigment, row, depth + 1);
+}
+
+/* Which functions each level needs (levels rows of n_functions): level 1
+ * all of them (patterns, isosurfaces and the host's points call any); level
+ * L + 1 those of the function patterns that level L's functions read, and
+ * what they call. A level's copies are only those, so that a nest does not
+ * multiply the program by every function at every level. */
+static bool *needed(const scene *s, int levels, int read)
+{
+	int n = s->n_functions;
+	bool *need = calloc((size_t)levels * n + 1, sizeof *need);
+	if (!need)
+		return NULL;
+	for (int f = 0; f < n; f++)
+		need[f] = true;
+	if (levels > 1)
+		mark_pigment(s, read, need + n, 0);
+	for (int level = 1; level <= levels; level++) {
+		bool *row = need + (size_t)(level - 1) * n, *next = level < levels ? row + n : NULL;
+		for (int f = n - 1; f >= 0; f--) {   /* callers first: a call names an earlier function */
+			if (!row[f])
+				continue;
+			const scene_function *fn = &s->functions[f];
+			for (int i = 0; i < fn->n_ops; i++) {
+				const scene_fop *o = &fn->ops[i];
+				if (o->op == FOP_CALL && o->arg >= 0 && o->arg < f)
+					row[o->arg] = true;
+				else if ((o->op == FOP_PATTERN || o->op == FOP_PIGMENT) && next)
+					mark_pigment(s, o->arg, next, 0);
+			}
+		}
+	}
+	return need;
+}
+
+int lower_function_levels(const scene *s)
+{
+	int most = 1;
+	for (int f = 0; f < s->n_functions; f++) {
+		int l = scene_function_levels(s, f);
+		most = l > most ? l : most;
+	}
+	return most;
+}
+
 char *lower_function_source(const scene *s, const int *roots)
+{
+	return lower_function_source_reading(s, roots, -1);
+}
+
+char *lower_function_source_reading(const scene *s, const int *roots, int read)
 {
 	if (s->n_functions == 0)
 		return NULL;
@@ -209,18 +284,47 @@ char *lower_function_source(const scene *s, const int *roots)
 			return NULL;
 		}
 	}
+	int levels = lower_function_levels(s), below = 1 + scene_pigment_levels(s, read);
+	levels = below > levels ? below : levels;
+	if (levels > SCENE_FUNCTION_LEVELS_MAX) {
+		diag_error(SRC_NOWHERE, "the scene's functions run function patterns nested %d deep, more than the "
+		           "kernels' %d: eclat's error, not the scene's", levels, SCENE_FUNCTION_LEVELS_MAX);
+		return NULL;
+	}
 	struct text t = { 0 };
 	put(&t, "/* The scene's functions, written by src/lower_function.c. */\n");
-	for (int f = 0; f < s->n_functions; f++)
-		function(&t, s, roots, f);
-	put(&t, "static real scene_function_at(const scene_data *sc, int f, real x, real y, real z)\n{\n\tswitch (f) {\n");
-	for (int f = 0; f < s->n_functions; f++) {
-		put(&t, "\tcase %d: return scene_fn%d(sc", f, f);
-		for (int i = 0; i < s->functions[f].n_params; i++)
-			put(&t, ", %s", i == 0 ? "x" : i == 1 ? "y" : i == 2 ? "z" : "0");
-		put(&t, ");\n");
+	/* the deeper levels' pattern readers (function_pattern.cl's macros) */
+	for (int level = 2; level <= levels; level++) {
+		if (level < levels)
+			put(&t, "FUNCTION_PATTERN_AT(%d)\n", level + 1);
+		if (level < levels)
+			put(&t, "FUNCTION_PATTERN_LEVEL(_%d, pattern_at_%d)\n", level, level + 1);
+		else
+			put(&t, "FUNCTION_PATTERN_LEVEL(_%d, function_plain_at)\n", level);
 	}
-	put(&t, "\t}\n\treturn 0;\n}\n");
+	bool *need = needed(s, levels, read);
+	if (!need)
+		return NULL;
+	for (int level = 1; level <= levels; level++) {
+		char buf[16];
+		const char *sfx = suffix(level, buf);
+		const bool *here = need + (size_t)(level - 1) * s->n_functions;
+		for (int f = 0; f < s->n_functions; f++)
+			if (here[f])
+				function(&t, s, roots, f, level);
+		put(&t, "static real scene_function_at%s(const scene_data *sc, int f, real x, real y, real z)\n{\n"
+		    "\tswitch (f) {\n", sfx);
+		for (int f = 0; f < s->n_functions; f++) {
+			if (!here[f])
+				continue;
+			put(&t, "\tcase %d: return scene_fn%d%s(sc", f, f, sfx);
+			for (int i = 0; i < s->functions[f].n_params; i++)
+				put(&t, ", %s", i == 0 ? "x" : i == 1 ? "y" : i == 2 ? "z" : "0");
+			put(&t, ");\n");
+		}
+		put(&t, "\t}\n\treturn 0;\n}\n");
+	}
+	free(need);
 	if (t.failed) {
 		free(t.s);
 		return NULL;

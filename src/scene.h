@@ -558,6 +558,15 @@ typedef int (*scene_pattern_points)(void *ctx, int pigment, bool colour, int n, 
  * one call for all n points. 0, or -1 when pattern failed or memory ran out. */
 int scene_function_eval_many(const scene *s, int f, int n, const double *args, double *out,
                              scene_pattern_points pattern, void *ctx);
+/* The levels of functions a call of function f runs on the device: 1 when
+ * the patterns its pattern and pigment ops read (its callees' too) are no
+ * function patterns, 2 when they run functions of level 1, and so on; the
+ * kernels make a copy of the functions for each level (OpenCL C has no
+ * recursion). A pigment's: the deepest level of the function patterns in its
+ * tree, 0 without any. A cycle, which eval cannot make, counts as too deep. */
+#define SCENE_FUNCTION_LEVELS_MAX 4
+int scene_function_levels(const scene *s, int f);
+int scene_pigment_levels(const scene *s, int pigment);
 /* Whether function f, or one it calls, calls a pattern or pigment function,
  * which only the device evaluates (scene_function_eval cannot). */
 bool scene_function_calls_patterns(const scene *s, int f);

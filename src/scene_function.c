@@ -3,6 +3,7 @@
  * same order, as the OpenCL that lowering writes, in double. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "scene.h"
 
@@ -217,6 +218,76 @@ int scene_function_eval_many(const scene *s, int f, int n, const double *args, d
 		out[i] = top > 0 ? col[top - 1][i] : 0;
 	free(stack);
 	return rc;
+}
+
+/* The levels below each function and pigment, found once each (a chain of
+ * functions that call the one before twice would be walked 2^n times
+ * otherwise): memo[i] -1 not yet, -2 being found (a cycle: too deep). */
+struct levels {
+	const scene *s;
+	int *fmemo, *pmemo;
+};
+
+static int function_levels(struct levels *lv, int f);
+
+static int pigment_levels(struct levels *lv, int pg)
+{
+	const scene *s = lv->s;
+	if (pg < 0 || pg >= s->n_pigments)
+		return 0;
+	if (lv->pmemo[pg] != -1)
+		return lv->pmemo[pg] == -2 ? SCENE_FUNCTION_LEVELS_MAX + 1 : lv->pmemo[pg];
+	lv->pmemo[pg] = -2;
+	const scene_pigment *p = &s->pigments[pg];
+	int most = p->kind == PATTERN_FUNCTION ? function_levels(lv, (int)p->params[0][0]) : 0;
+	for (int i = 0; i < p->n_map; i++) {
+		int l = pigment_levels(lv, p->map[i].pigment);
+		most = l > most ? l : most;
+	}
+	return lv->pmemo[pg] = most;
+}
+
+static int function_levels(struct levels *lv, int f)
+{
+	const scene *s = lv->s;
+	if (f < 0 || f >= s->n_functions)
+		return 0;
+	if (lv->fmemo[f] != -1)
+		return lv->fmemo[f] == -2 ? SCENE_FUNCTION_LEVELS_MAX + 1 : lv->fmemo[f];
+	lv->fmemo[f] = -2;
+	const scene_function *fn = &s->functions[f];
+	int level = 1;
+	for (int i = 0; i < fn->n_ops; i++) {
+		const scene_fop *o = &fn->ops[i];
+		int l = o->op == FOP_PATTERN || o->op == FOP_PIGMENT ? 1 + pigment_levels(lv, o->arg)
+		      : o->op == FOP_CALL ? function_levels(lv, o->arg) : 1;
+		level = l > level ? l : level;
+	}
+	return lv->fmemo[f] = level;
+}
+
+static int levels_of(const scene *s, int f, int pigment)
+{
+	struct levels lv = { s, malloc(((size_t)s->n_functions + 1) * sizeof(int)),
+	                     malloc(((size_t)s->n_pigments + 1) * sizeof(int)) };
+	if (!lv.fmemo || !lv.pmemo)
+		abort();
+	memset(lv.fmemo, 0xff, ((size_t)s->n_functions + 1) * sizeof(int));
+	memset(lv.pmemo, 0xff, ((size_t)s->n_pigments + 1) * sizeof(int));
+	int l = f >= 0 ? function_levels(&lv, f) : pigment_levels(&lv, pigment);
+	free(lv.fmemo);
+	free(lv.pmemo);
+	return l;
+}
+
+int scene_function_levels(const scene *s, int f)
+{
+	return levels_of(s, f, -1);
+}
+
+int scene_pigment_levels(const scene *s, int pigment)
+{
+	return levels_of(s, -1, pigment);
 }
 
 /* Calls reach only functions made before the caller (eval compiles a callee
