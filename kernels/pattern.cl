@@ -233,6 +233,91 @@ static inline float pattern_warp_turbulence(global const dev_warp *w, int genera
 
 /* ---- warps ---- */
 
+/* The angle of (x, z) from the x axis, over a turn, as POV-Ray finds it. */
+static inline float pattern_warp_turn(float x, float z, float len)
+{
+	float theta = z == 0.0f ? (x > 0.0f ? 0.0f : PATTERN_PI) : acos(x / len);
+	if (z < 0.0f)
+		theta = 2.0f * PATTERN_PI - theta;
+	return theta / (2.0f * PATTERN_PI);
+}
+
+/* POV-Ray 3.7's mapping warps (warps.cpp): the surface's coordinates into x and
+ * y, the distance into z, then turned to the orientation. A point on the
+ * axis (or at the centre) stays where it is, as POV-Ray leaves it. */
+static float3 pattern_warp_mapping(global const dev_warp *w, float3 p)
+{
+	float x = p.x, y = p.y, z = p.z, dist_exp = w->a.w;
+	if (w->kind == WARP_CUBIC) {
+		float ax = fabs(x), ay = fabs(y), az = fabs(z);
+		if (ax == 0.0f && ay == 0.0f && az == 0.0f)
+			return p;
+		if (x >= 0.0f && x >= ay && x >= az)
+			return (float3)(0.75f - 0.25f * (z / x + 1.0f) / 2.0f, 1.0f / 3.0f + (y / x + 1.0f) / 6.0f, x);
+		if (y >= 0.0f && y >= ax && y >= az)
+			return (float3)(0.25f + 0.25f * (x / y + 1.0f) / 2.0f, 1.0f - (z / y + 1.0f) / 6.0f, y);
+		if (z >= 0.0f && z >= ax && z >= ay)
+			return (float3)(0.25f + 0.25f * (x / z + 1.0f) / 2.0f, 1.0f / 3.0f + (y / z + 1.0f) / 6.0f, z);
+		if (x < 0.0f && x <= -ay && x <= -az)
+			return (float3)(0.25f * (z / -x + 1.0f) / 2.0f, 1.0f / 3.0f + (y / -x + 1.0f) / 6.0f, -x);
+		if (y < 0.0f && y <= -ax && y <= -az)
+			return (float3)(0.25f + 0.25f * (x / -y + 1.0f) / 2.0f, (z / -y + 1.0f) / 6.0f, -y);
+		return (float3)(1.0f - 0.25f * (x / -z + 1.0f) / 2.0f, 1.0f / 3.0f + (y / -z + 1.0f) / 6.0f, -z);
+	}
+	if (w->kind == WARP_PLANAR) {
+		z = dist_exp;   /* the offset */
+	} else if (w->kind == WARP_CYLINDRICAL) {
+		float len = sqrt(x * x + z * z);
+		if (len == 0.0f)
+			return p;
+		float theta = pattern_warp_turn(x, z, len);
+		if (dist_exp != 0.0f)
+			theta *= dist_exp == 1.0f ? len : pow(len, dist_exp);
+		x = theta;
+		z = len;
+	} else if (w->kind == WARP_SPHERICAL) {
+		float dist = sqrt(x * x + y * y + z * z);
+		if (dist == 0.0f)
+			return p;
+		x /= dist;
+		y /= dist;
+		z /= dist;
+		float phi = 0.5f + asin(clamp(y, -1.0f, 1.0f)) / PATTERN_PI, len = sqrt(x * x + z * z);
+		float theta = len == 0.0f ? 0.0f : pattern_warp_turn(x, z, len);
+		if (dist_exp != 0.0f) {
+			float k = dist_exp == 1.0f ? dist : pow(dist, dist_exp);
+			theta *= k;
+			phi *= k;
+		}
+		x = theta;
+		y = phi;
+		z = dist;
+	} else {   /* toroidal */
+		float len = sqrt(x * x + z * z);
+		if (len == 0.0f)
+			return p;
+		float theta = pattern_warp_turn(x, z, len);
+		float rx = len - w->b.x;
+		len = sqrt(rx * rx + y * y);
+		float phi = len == 0.0f ? 0.0f : acos(clamp(-rx / len, -1.0f, 1.0f));   /* on the core circle: 0 */
+		if (y > 0.0f)
+			phi = 2.0f * PATTERN_PI - phi;
+		phi /= 2.0f * PATTERN_PI;
+		if (dist_exp != 0.0f) {
+			float k = dist_exp == 1.0f ? len : pow(len, dist_exp);
+			theta *= k;
+			phi *= k;
+		}
+		x = theta;
+		y = phi;
+		z = len;
+	}
+	float3 o = w->a.xyz;
+	if (o.x == 0.0f && o.y == 0.0f && o.z == 1.0f)
+		return (float3)(x, y, z);
+	return (float3)(o.x * z + o.y * x + o.z * x, o.x * y - o.y * z + o.z * y, -o.x * x + o.y * y + o.z * z);
+}
+
 static inline float3 pattern_warp(global const dev_warp *w, float3 p)
 {
 	if (w->kind == WARP_TURBULENCE) {
@@ -269,6 +354,8 @@ static inline float3 pattern_warp(global const dev_warp *w, float3 p)
 		float4 q = (float4)(p, 1.0f);
 		return (float3)(dot(w->a, q), dot(w->b, q), dot(w->c, q));
 	}
+	if (w->kind >= WARP_PLANAR)
+		return pattern_warp_mapping(w, p);
 	if (w->kind == WARP_BLACK_HOLE) {
 		float3 centre = w->a.xyz;
 		if (w->c.w != 0.0f) {

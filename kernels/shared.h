@@ -257,7 +257,8 @@ enum {                       /* ORDER: the names in src/eval_pattern.c */
 /* POV-Ray's wave types, applied to a continuous pattern's value. */
 enum { WAVE_RAMP = 0, WAVE_SINE, WAVE_TRIANGLE, WAVE_SCALLOP, WAVE_CUBIC, WAVE_POLY };
 /* Warps, applied in order to the point before the pattern (dev_warp). */
-enum { WARP_TURBULENCE = 0, WARP_REPEAT, WARP_BLACK_HOLE, WARP_TRANSFORM };
+enum { WARP_TURBULENCE = 0, WARP_REPEAT, WARP_BLACK_HOLE, WARP_TRANSFORM, WARP_PLANAR, WARP_CYLINDRICAL,
+       WARP_SPHERICAL, WARP_TOROIDAL, WARP_CUBIC };
 
 /* One warp, 64 bytes. A pattern's warps are in POV-Ray's list order, which is
  * the order they apply in: each warp { } written goes to the FRONT of the list
@@ -279,7 +280,11 @@ enum { WARP_TURBULENCE = 0, WARP_REPEAT, WARP_BLACK_HOLE, WARP_TRANSFORM };
  *   POV-Ray adjusts them for a repeat (Check_BH_Parameters); turbulence not
  *   kept, nor a type other than 0 (which does nothing in 3.7: drop the warp).
  * transform: a, b, c the rows of the affine map applied to the point (the
- *   inverse of the transformation written), as dev_pattern.rows. */
+ *   inverse of the transformation written), as dev_pattern.rows.
+ * planar, cylindrical, spherical, toroidal, cubic: POV-Ray 3.7's mapping
+ *   warps, which take a plane, a cylinder, a sphere, a torus or a cube's
+ *   surface to the xy plane (warps.cpp); a.xyz the orientation (unit; <0, 0, 1>
+ *   by default), a.w dist_exp (planar: its offset), b.x a torus's major radius. */
 typedef struct {
 	float4 a, b, c;
 	int kind, classic, pad1, pad2;

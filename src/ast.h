@@ -319,6 +319,10 @@ enum kw_class {
 #define AST_WORD_SYS "sys"
 #define AST_WORD_AOI "aoi"
 #define AST_WORD_CUBIC "cubic"
+#define AST_WORD_TOROIDAL "toroidal"      /* a warp { }: the mapping warps' words */
+#define AST_WORD_ORIENTATION "orientation"
+#define AST_WORD_DIST_EXP "dist_exp"
+#define AST_WORD_MAJOR_RADIUS "major_radius"
 #define AST_WORD_SQUARE "square"
 #define AST_WORD_TRIANGULAR "triangular"
 #define AST_WORD_NOISE_GENERATOR "noise_generator"

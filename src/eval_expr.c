@@ -1067,8 +1067,18 @@ int eval_call_function(struct eval *e, const ast_node *call, const value *fn, va
 		return -1;
 	}
 	if (body->kids[0]->kind == AST_CALL && strcmp(body->kids[0]->str, "internal") == 0) {
-		eval_error(e, call->loc, "'%s' is one of POV-Ray's internal functions, which eclat does not have", call->str);
-		return -1;
+		/* eval_internal.c writes them in the function language: the host runs that too */
+		const ast_node *number = body->kids[0]->n_kids == 1 ? body->kids[0]->kids[0] : NULL;
+		double k = -1;
+		const ast_node *written = number && number->kind == AST_NUMBER ? eval_internal_function((int)(k = number->num))
+		                        : NULL;
+		if (!written || k != (int)k) {
+			eval_error(e, call->loc, "'%s' is one of POV-Ray's internal functions, which eclat does not have",
+			           call->str);
+			return -1;
+		}
+		value w = { .kind = V_FUNCTION, .node = written };
+		return eval_call_function(e, call, &w, out);
 	}
 	if (call->n_kids != n_params) {
 		eval_error(e, call->loc, "function '%s' takes %d argument%s, not %d", call->str, n_params,

@@ -16,6 +16,21 @@
 /* min(10, max(P0 * r, -10)): the "field strength" clamp many of them share. */
 #define FIELD(r) "min(10, max(P0 * (" r "), -10))"
 
+/* f_helix1's pieces (fnintern.cpp names them as it reassigns x and z): the
+ * angle about y, wound by the helices, in [0, 2 pi) (the origin's x nudged,
+ * as POV-Ray does); the point's z along the helix and x off its centre line;
+ * both turned by P6 degrees (no turn when P6 is 0: cos 1, sin 0); the cross
+ * section's radius for P5 1 (a circle), 0 (a square) or another exponent. */
+#define HELIX_TH1 "mod(atan2(z, select(-(abs(x) + abs(z)), x, 0.000001)) * P0 + y * P1 * P0, 2 * pi)"
+#define HELIX_TH "(" HELIX_TH1 " + select(" HELIX_TH1 ", 2 * pi, 0))"
+#define HELIX_Z "((" HELIX_TH " - pi) / P4 / (P1 * P0))"
+#define HELIX_X "(sqrt(x*x + z*z) - P3)"
+#define HELIX_XR "(" HELIX_X " * cos(radians(P6)) - " HELIX_Z " * sin(radians(P6)))"
+#define HELIX_ZR "(" HELIX_X " * sin(radians(P6)) + " HELIX_Z " * cos(radians(P6)))"
+#define HELIX_R2 "(P5 = 1 ? sqrt(" HELIX_X " * " HELIX_X " + " HELIX_Z " * " HELIX_Z ") : (P5 != 0 ?" \
+	" pow(pow(abs(" HELIX_XR "), 2 / P5) + pow(abs(" HELIX_ZR "), 2 / P5), P5 * 0.5) :" \
+	" max(abs(" HELIX_XR "), abs(" HELIX_ZR "))))"
+
 static const struct {
 	int number;
 	const char *text;
@@ -27,6 +42,8 @@ static const struct {
 	      " + exp(-(x*x*P0 + y*y + z*z*P0) * P1) + exp(-(x*x + y*y*P0 + z*z*P0) * P1)) }" },   /* f_flange_cover */
 	{ 23, "function(x, y, z, P0) { " FIELD("-(pow(2*x*x + y*y + z*z - 1, 3) - 0.1*x*x*z*z*z - y*y*z*z*z)") " }" },
 	                                                                                      /* f_heart */
+	{ 25, "function(x, y, z, P0, P1, P2, P3, P4, P5, P6) { -P2 + min(P3 + sqrt(x*x + z*z), " HELIX_R2 ") }" },
+	                                                                                      /* f_helix1 */
 	{ 41, "function(x, y, z, P0) { " FIELD("-(4*x*x*(x*x + y*y + z*z) - y*y*(1 - y*y - z*z))") " }" },   /* f_mitre */
 	{ 45, "function(x, y, z, P0) { " FIELD("-(x*x - y + z*z)") " }" },   /* f_paraboloid */
 	{ 47, "function { atan2(sqrt(x*x + z*z), y) }" },   /* f_ph */

@@ -257,6 +257,55 @@ static int turbulence_item(struct eval *e, const ast_node *item, scene_warp *w)
 	}
 }
 
+/* An orientation vector, made a unit one as POV-Ray does. */
+static int orientation(struct eval *e, struct cursor *c, const ast_node *at, const ast_node *arg, double a[4])
+{
+	double v[3];
+	if ((arg ? eval_expect_vector(e, arg, v) : next_vector(e, c, at, v)) != 0)
+		return -1;
+	double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+	if (!(l > 0) || !isfinite(l)) {
+		eval_error(e, (arg ? arg : at)->loc, "a warp's orientation must be a vector other than <0, 0, 0>");
+		return -1;
+	}
+	for (int k = 0; k < 3; k++)
+		a[k] = v[k] / l;
+	return 0;
+}
+
+/* planar [<Orientation>, Offset] | cylindrical | spherical | toroidal | cubic:
+ * the warp begun, with POV-Ray's defaults (Create_Warp): orientation
+ * <0, 0, 1>, dist_exp 0, major_radius 1. */
+static int mapping_warp(struct eval *e, struct cursor *c, const ast_node *item, const char *mapping, scene_warp *w)
+{
+	static const char *const names[] = { "planar", "cylindrical", "spherical", AST_WORD_TOROIDAL, AST_WORD_CUBIC };
+	*w = (scene_warp){ .kind = WARP_PLANAR, .a = { 0, 0, 1, 0 }, .b = { 1 } };
+	for (int k = 0; k < 5; k++)
+		if (strcmp(mapping, names[k]) == 0)
+			w->kind = WARP_PLANAR + k;
+	if (w->kind != WARP_PLANAR)
+		return 0;
+	int err = 0;
+	const ast_node *v = eval_next_expr(c, &err);
+	if (err)
+		return -1;
+	return v && (orientation(e, c, item, v, w->a) || next_float(e, c, item, &w->a[3])) ? -1 : 0;
+}
+
+/* orientation <V>, dist_exp F, and a toroidal warp's major_radius F. 1: none of them. */
+static int mapping_item(struct eval *e, struct cursor *c, const ast_node *item, const char *name, scene_warp *w)
+{
+	if (!name)
+		return 1;
+	if (strcmp(name, AST_WORD_ORIENTATION) == 0)
+		return orientation(e, c, item, NULL, w->a);
+	if (strcmp(name, AST_WORD_DIST_EXP) == 0)
+		return next_float(e, c, item, &w->a[3]);
+	if (strcmp(name, AST_WORD_MAJOR_RADIUS) == 0 && w->kind == WARP_TOROIDAL)
+		return next_float(e, c, item, &w->b[0]);
+	return 1;
+}
+
 /* warp { turbulence ... | repeat <V> [offset <V>] [flip <V>] |
  *        black_hole <Centre>, Radius [strength S] [falloff F] [inverse] [repeat <V>]
  *        [turbulence <V>] } */
@@ -273,12 +322,14 @@ static int warp_block(struct eval *e, const ast_node *b, scene_pigment *pg)
 		const char *name = word(e, item);
 		const char *mapping = item->kind == AST_FLAG && (item->kw == KW_PLANAR || item->kw == KW_SPHERICAL ||
 		                      item->kw == KW_CYLINDRICAL) ? ast_keyword_name(item->kw)
-		                    : name && (strcmp(name, "toroidal") == 0 || strcmp(name, "cubic") == 0) ? name : NULL;
-		if (w.kind < 0 && mapping) {   /* POV-Ray 3.7's mapping warps: the pattern is left unwarped */
-			eval_warn_once(e, item->loc, "mapping warp", "the '%s' warp is not supported yet; ignored", mapping);
-			eval_cursor_free(&c);
-			return 0;
+		                    : name && (strcmp(name, AST_WORD_TOROIDAL) == 0 || strcmp(name, AST_WORD_CUBIC) == 0) ? name : NULL;
+		if (w.kind < 0 && mapping) {   /* POV-Ray 3.7's mapping warps */
+			rc = mapping_warp(e, &c, item, mapping, &w);
+			continue;
 		}
+		if (w.kind > WARP_PLANAR && w.kind < WARP_CUBIC && (rc = mapping_item(e, &c, item, name, &w)) <= 0)
+			continue;
+		rc = 0;
 		if (w.kind < 0 && item->kind == AST_ARG && item->kw == KW_TURBULENCE)
 			w = (scene_warp){ .kind = WARP_TURBULENCE, .a = { 0, 0, 0, 0.5 }, .b = { 2, 6 } };
 		if (w.kind == WARP_TURBULENCE && (rc = turbulence_item(e, item, &w)) <= 0)

@@ -697,7 +697,8 @@ static void dump_pigment(FILE *out, const scene *s, int index, const scene_pigme
 	}
 	fnum(out, "frequency", pg->frequency);
 	fnum(out, "phase", pg->phase);
-	static const char *const warps[] = { "turbulence", "repeat", "black_hole", "transform" };
+	static const char *const warps[] = { "turbulence", "repeat", "black_hole", "transform", "planar", "cylindrical",
+	                                     "spherical", "toroidal", "cubic" };
 	for (const scene_warp *w = pg->warps; w < pg->warps + pg->n_warps; w++) {
 		fprintf(out, " %s%s", w->classic ? "classic " : "", warps[w->kind]);
 		if (w->kind == WARP_TRANSFORM) {
