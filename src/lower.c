@@ -209,6 +209,13 @@ int lower_add_data(struct lowering *lw, float4 a)
 	return lw->data.n - 1;
 }
 
+int lower_add_record(struct lowering *lw, float4 a, float4 b, float4 c)
+{
+	push_prim(&lw->data, (dev_prim){ .a = a, .b = b, .c = c, .type = PRIM_DATA, .material = -1, .object = -1,
+	                                 .link = -1 });
+	return lw->data.n - 1;
+}
+
 bool lower_in_csg(const struct lowering *lw)
 {
 	return lw->target != &lw->top;
