@@ -221,8 +221,12 @@ typedef struct {
  * MATERIAL_ROUGH: roughness was given, so the path tracer's reflection is rough;
  * MATERIAL_TEXTURE_MAP: pattern is a pattern of whole textures;
  * MATERIAL_INTERIOR: the object has an interior_texture, the next material,
- * for the side its surface normal turns away from (texture_point). */
-enum { MATERIAL_LOCAL = 1, MATERIAL_ROUGH = 2, MATERIAL_TEXTURE_MAP = 4, MATERIAL_INTERIOR = 8 };
+ * for the side its surface normal turns away from (texture_point);
+ * MATERIAL_BLOB (with MATERIAL_TEXTURE_MAP): a blob whose components have
+ * textures of their own: its pattern's map entries are the components'
+ * textures, in the blob's order, weighted by the components' fields at the
+ * point, not picked by a value (texture_blend_at). */
+enum { MATERIAL_LOCAL = 1, MATERIAL_ROUGH = 2, MATERIAL_TEXTURE_MAP = 4, MATERIAL_INTERIOR = 8, MATERIAL_BLOB = 16 };
 
 /* ---- Appearance: patterns, maps and pigments (kernels/pattern.cl, kernels/texture.cl).
  *

@@ -147,6 +147,11 @@ static int add_material(struct lowering *lw, const scene_material *m, int local)
 	return lw->n_mats - 2;
 }
 
+void lower_blob_textures(struct lowering *lw, const scene_object *o, int mat)
+{
+	lw->mats[mat] = lower_texture_blob(&lw->textures, lw->s, o, &lw->mats[mat]);
+}
+
 /* ---- shapes ---- */
 
 static void push_prim(struct prim_list *l, dev_prim p)

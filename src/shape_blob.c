@@ -213,6 +213,11 @@ static int lower(struct lowering *lw, const scene *s, const scene_object *o, int
 		diag_warning(o->loc, "blob with a singular transform (a scale of 0?) skipped");
 		return 0;
 	}
+	for (int j = 0; j < bl->n_parts; j++)
+		if (bl->part[j].texture) {   /* POV-Ray's blob of several textures */
+			lower_blob_textures(lw, o, mat);
+			break;
+		}
 	p.link = lower_add_data(lw, (float4){ (float)bl->n_parts, (float)bl->threshold, 0, 0 });
 	for (int j = 0; j < bl->n_parts; j++) {   /* two records a component: kernels/shape_blob.cl */
 		const scene_blob_part *c = &bl->part[j];
