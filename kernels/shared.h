@@ -132,8 +132,9 @@ enum { PRISM_OPEN = 1, PRISM_FLAT = 2, PRISM_CONIC = 4 };
  *   threshold, accuracy, max_gradient, max_trace and flags (kernels/shape_isosurface.cl).
  * Blob: the map to its own space; its first record's a.x is its number of
  *   components, a.y its threshold; each component then two records: a.xyz one
- *   end (the centre) and a.w the radius, a.xyz the other end and a.w the
- *   strength (kernels/shape_blob.cl).
+ *   end (the centre) and a.w the radius, b.xyz the other end and b.w the
+ *   strength, c.x 1 when the component has a space of its own, whose map from
+ *   the blob's is the second record's rows a, b, c (kernels/shape_blob.cl).
  * Julia fractal: the map to its own space; four records: a the constant c,
  *   the slice (unit length), then slice distance, 1/precision, exit value and
  *   bounding radius, then max_iteration, algebra and function as floats
