@@ -226,7 +226,7 @@ typedef struct {
  * MATERIAL_BLOB (with MATERIAL_TEXTURE_MAP): a blob whose components have
  * textures of their own: its pattern's map entries are the components'
  * textures, in the blob's order, weighted by the components' fields at the
- * point, not picked by a value (texture_blend_at). */
+ * point, not picked by a value (texture_blend_at), then the blob's own. */
 enum { MATERIAL_LOCAL = 1, MATERIAL_ROUGH = 2, MATERIAL_TEXTURE_MAP = 4, MATERIAL_INTERIOR = 8, MATERIAL_BLOB = 16 };
 
 /* ---- Appearance: patterns, maps and pigments (kernels/pattern.cl, kernels/texture.cl).

@@ -337,18 +337,19 @@ static inline int texture_blob(const scene_data *sc, const shading_point *sp, gl
 	global const dev_pattern *pt = &sc->patterns[m->pattern];
 	global const dev_map_entry *e = sc->maps + pt->map_first;
 	global const dev_prim *p = &sc->prims[sp->prim];
-	stack[0] = e[0].material;
+	int parts = pt->map_count - 1;
+	stack[0] = e[parts].material;   /* the blob's own */
 	weight[0] = 1.0f;
 	if (p->type != PRIM_BLOB)
 		return 1;
 	real3 v = intersect_to_local_real(p, sp->x), g = (real3)(0);
 	real sum = 0;
-	for (int j = 0; j < pt->map_count; j++)
+	for (int j = 0; j < parts; j++)
 		sum += fabs(blob_component_field(sc->prims, p->link + 1 + 2 * j, v, &g));
-	if (!(sum > (real)0))   /* no component reaches the point: POV-Ray shows nothing; the first */
+	if (!(sum > (real)0))   /* no component reaches the point: POV-Ray shows nothing; the blob's own */
 		return 1;
 	int n = 0;
-	for (int j = 0; j < pt->map_count; j++) {
+	for (int j = 0; j < parts; j++) {
 		float w = (float)(fabs(blob_component_field(sc->prims, p->link + 1 + 2 * j, v, &g)) / sum);
 		if (!(w > 0.0f) || w < sc->p->classic.w)
 			continue;

@@ -375,16 +375,17 @@ dev_material lower_texture_blob(lower_textures *lt, const scene *s, const scene_
 	int own_sub = add_sub(lt);
 	lt->subs[own_sub] = *own;
 	lt->subs[own_sub].flags &= ~MATERIAL_INTERIOR;
-	/* a pattern of no value whose map's entries are the components' textures */
+	/* a pattern of no value whose map's entries are the components' textures,
+	 * then the blob's own (what a point that no component reaches shows) */
 	int at = lt->n_patterns++, first = lt->n_maps;
 	lt->patterns = grow_to(lt->patterns, &lt->cap_patterns, lt->n_patterns, sizeof *lt->patterns);
-	lt->patterns[at] = (dev_pattern){ .kind = PATTERN_SOLID, .map_first = first, .map_count = bl->n_parts,
+	lt->patterns[at] = (dev_pattern){ .kind = PATTERN_SOLID, .map_first = first, .map_count = bl->n_parts + 1,
 	                                  .rows = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } } };
-	lt->n_maps += bl->n_parts;
+	lt->n_maps += bl->n_parts + 1;
 	lt->maps = grow_to(lt->maps, &lt->cap_maps, lt->n_maps, sizeof *lt->maps);
 	struct surface sf = { &o->material, 0, o->material.uv == SCENE_UV_OBJECT };
-	for (int j = 0; j < bl->n_parts; j++) {
-		int t = bl->part[j].texture - 1, m = own_sub;
+	for (int j = 0; j <= bl->n_parts; j++) {
+		int t = j < bl->n_parts ? bl->part[j].texture - 1 : -1, m = own_sub;
 		if (t >= 0) {   /* placed in the blob's space, which o->xf takes to world */
 			int n_subs = lt->n_subs;
 			m = lower_layers(lt, s, &sf, t, &o->xf, -1, 0);
