@@ -1,21 +1,37 @@
 /* shape_blob.cl: POV-Ray's blob, kept as the map from world space to its own;
  * its records (src/shape_blob.c): the first's a.x its number of components
- * and a.y its threshold, then two a component: one end (the centre) and the
- * radius, the other end (the same for a sphere) and the strength.
+ * and a.y its threshold, then two a component: a.xyz one end (the centre) and
+ * a.w the radius, b.xyz the other end (the same for a sphere) and b.w the
+ * strength, c.x 1 when the component has a space of its own (a non-uniform
+ * scale: POV-Ray's ellipsoidal components), whose map from the blob's space
+ * is the next record's rows a, b, c.
  *
  * As trace() in src/shape_blob.c, in double where the device has it: the ray
  * is walked from stretch boundary to stretch boundary of the components'
  * pieces (a sphere, or a cylinder's cap, body and cap), and over each
  * stretch the pieces' quartics are added up and the first root of the sum
- * less the threshold taken (kernels/roots.cl). */
+ * less the threshold taken (kernels/roots.cl). A component in a space of its
+ * own sees the ray there, with the same t. */
 
 typedef struct {
 	real t0, t1, A, B, C, r2, s;
 } blob_piece;
 
-static inline bool blob_piece_of(global const dev_prim *prims, int rec, int k, real3 o, real3 d, blob_piece *out)
+/* v (a point when w is 1, a direction when 0) in the space of the component
+ * whose records start at rec. */
+static inline real3 blob_own(global const dev_prim *prims, int rec, real3 v, real w)
 {
-	float4 ea = prims[rec].a, eb = prims[rec + 1].a;
+	if (prims[rec].c.x == 0.0f)
+		return v;
+	global const dev_prim *m = &prims[rec + 1];
+	return (real3)(dot(convert_real3(m->a.xyz), v) + w * (real)m->a.w, dot(convert_real3(m->b.xyz), v) + w * (real)m->b.w,
+	               dot(convert_real3(m->c.xyz), v) + w * (real)m->c.w);
+}
+
+static inline bool blob_piece_of(global const dev_prim *prims, int rec, int k, real3 ro, real3 rd, blob_piece *out)
+{
+	float4 ea = prims[rec].a, eb = prims[rec].b;
+	real3 o = blob_own(prims, rec, ro, (real)1), d = blob_own(prims, rec, rd, (real)0);
 	real3 a = convert_real3(ea.xyz), b = convert_real3(eb.xyz), ax = b - a;
 	real len = length(ax), r = (real)ea.w;
 	bool sphere = !(len > (real)0);
@@ -109,25 +125,36 @@ static inline float blob_intersect(float3 o, float3 d, global const dev_prim *pr
 	}
 }
 
+/* The field at v (the blob's space) of the component whose records start at
+ * rec, its gradient added to *g. */
+static inline real blob_component_field(global const dev_prim *prims, int rec, real3 v, real3 *g)
+{
+	float4 ea = prims[rec].a, eb = prims[rec].b;
+	real3 a = convert_real3(ea.xyz), ax = convert_real3(eb.xyz) - a, w = blob_own(prims, rec, v, (real)1) - a;
+	real len2 = dot(ax, ax);
+	if (len2 > (real)0)
+		w -= clamp(dot(w, ax) / len2, (real)0, (real)1) * ax;
+	real r2 = (real)ea.w * (real)ea.w, d2 = dot(w, w);
+	if (d2 >= r2)
+		return (real)0;
+	real u = (real)1 - d2 / r2, s = (real)eb.w;
+	real3 gl = s * (real)2 * u * ((real)-2 * w / r2);
+	if (prims[rec].c.x != 0.0f) {   /* back to the blob's space: the transpose of the rows */
+		global const dev_prim *m = &prims[rec + 1];
+		gl = gl.x * convert_real3(m->a.xyz) + gl.y * convert_real3(m->b.xyz) + gl.z * convert_real3(m->c.xyz);
+	}
+	*g += gl;
+	return s * u * u;
+}
+
 /* The field at v (the blob's space) and its gradient into *g. */
 static inline real blob_field(global const dev_prim *prims, global const dev_prim *p, real3 v, real3 *g)
 {
 	int n = (int)prims[p->link].a.x;
 	real f = 0;
 	*g = (real3)(0);
-	for (int j = 0; j < n; j++) {
-		float4 ea = prims[p->link + 1 + 2 * j].a, eb = prims[p->link + 2 + 2 * j].a;
-		real3 a = convert_real3(ea.xyz), ax = convert_real3(eb.xyz) - a, w = v - a;
-		real len2 = dot(ax, ax);
-		if (len2 > (real)0)
-			w -= clamp(dot(w, ax) / len2, (real)0, (real)1) * ax;
-		real r2 = (real)ea.w * (real)ea.w, d2 = dot(w, w);
-		if (d2 >= r2)
-			continue;
-		real u = (real)1 - d2 / r2, s = (real)eb.w;
-		f += s * u * u;
-		*g += s * (real)2 * u * ((real)-2 * w / r2);
-	}
+	for (int j = 0; j < n; j++)
+		f += blob_component_field(prims, p->link + 1 + 2 * j, v, g);
 	return f;
 }
 

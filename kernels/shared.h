@@ -132,8 +132,9 @@ enum { PRISM_OPEN = 1, PRISM_FLAT = 2, PRISM_CONIC = 4 };
  *   threshold, accuracy, max_gradient, max_trace and flags (kernels/shape_isosurface.cl).
  * Blob: the map to its own space; its first record's a.x is its number of
  *   components, a.y its threshold; each component then two records: a.xyz one
- *   end (the centre) and a.w the radius, a.xyz the other end and a.w the
- *   strength (kernels/shape_blob.cl).
+ *   end (the centre) and a.w the radius, b.xyz the other end and b.w the
+ *   strength, c.x 1 when the component has a space of its own, whose map from
+ *   the blob's is the second record's rows a, b, c (kernels/shape_blob.cl).
  * Julia fractal: the map to its own space; four records: a the constant c,
  *   the slice (unit length), then slice distance, 1/precision, exit value and
  *   bounding radius, then max_iteration, algebra and function as floats
@@ -221,8 +222,12 @@ typedef struct {
  * MATERIAL_ROUGH: roughness was given, so the path tracer's reflection is rough;
  * MATERIAL_TEXTURE_MAP: pattern is a pattern of whole textures;
  * MATERIAL_INTERIOR: the object has an interior_texture, the next material,
- * for the side its surface normal turns away from (texture_point). */
-enum { MATERIAL_LOCAL = 1, MATERIAL_ROUGH = 2, MATERIAL_TEXTURE_MAP = 4, MATERIAL_INTERIOR = 8 };
+ * for the side its surface normal turns away from (texture_point);
+ * MATERIAL_BLOB (with MATERIAL_TEXTURE_MAP): a blob whose components have
+ * textures of their own: its pattern's map entries are the components'
+ * textures, in the blob's order, weighted by the components' fields at the
+ * point, not picked by a value (texture_blend_at), then the blob's own. */
+enum { MATERIAL_LOCAL = 1, MATERIAL_ROUGH = 2, MATERIAL_TEXTURE_MAP = 4, MATERIAL_INTERIOR = 8, MATERIAL_BLOB = 16 };
 
 /* ---- Appearance: patterns, maps and pigments (kernels/pattern.cl, kernels/texture.cl).
  *

@@ -325,6 +325,47 @@ typedef struct {
 	int n;
 } texture_blend;
 
+/* A blob's textures at sp (MATERIAL_BLOB) onto the stack: each component's
+ * texture weighted by the size of its field there over their sum, as POV-Ray's
+ * Determine_Textures weighs them, but for the weights under adc_bailout,
+ * which its ComputeTextureColour skips; the weights of one texture (the
+ * components without one of their own show the blob's) added up. Returns how
+ * many. */
+static inline int texture_blob(const scene_data *sc, const shading_point *sp, global const dev_material *m, int *stack,
+                               float *weight)
+{
+	global const dev_pattern *pt = &sc->patterns[m->pattern];
+	global const dev_map_entry *e = sc->maps + pt->map_first;
+	global const dev_prim *p = &sc->prims[sp->prim];
+	int parts = pt->map_count - 1;
+	stack[0] = e[parts].material;   /* the blob's own */
+	weight[0] = 1.0f;
+	if (p->type != PRIM_BLOB)
+		return 1;
+	real3 v = intersect_to_local_real(p, sp->x), g = (real3)(0);
+	real sum = 0;
+	for (int j = 0; j < parts; j++)
+		sum += fabs(blob_component_field(sc->prims, p->link + 1 + 2 * j, v, &g));
+	if (!(sum > (real)0))   /* no component reaches the point: POV-Ray shows nothing; the blob's own */
+		return 1;
+	int n = 0;
+	for (int j = 0; j < parts; j++) {
+		float w = (float)(fabs(blob_component_field(sc->prims, p->link + 1 + 2 * j, v, &g)) / sum);
+		if (!(w > 0.0f) || w < sc->p->classic.w)
+			continue;
+		int k = 0;
+		while (k < n && stack[k] != e[j].material)
+			k++;
+		if (k < n) {
+			weight[k] += w;
+		} else if (n < TEXTURE_BLEND) {
+			stack[n] = e[j].material;
+			weight[n++] = w;
+		}
+	}
+	return n > 0 ? n : 1;
+}
+
 static inline texture_blend texture_blend_at(const scene_data *sc, const shading_point *sp, int material)
 {
 	texture_blend b;
@@ -332,8 +373,12 @@ static inline texture_blend texture_blend_at(const scene_data *sc, const shading
 	int stack[TEXTURE_BLEND];
 	float weight[TEXTURE_BLEND];
 	int n = 0;
-	stack[n] = material;
-	weight[n++] = 1.0f;
+	if (sc->materials[material].flags & MATERIAL_BLOB) {
+		n = texture_blob(sc, sp, &sc->materials[material], stack, weight);
+	} else {
+		stack[n] = material;
+		weight[n++] = 1.0f;
+	}
 	while (n > 0) {
 		n--;
 		int mi = stack[n];

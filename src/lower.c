@@ -147,6 +147,11 @@ static int add_material(struct lowering *lw, const scene_material *m, int local)
 	return lw->n_mats - 2;
 }
 
+void lower_blob_textures(struct lowering *lw, const scene_object *o, int mat)
+{
+	lw->mats[mat] = lower_texture_blob(&lw->textures, lw->s, o, &lw->mats[mat]);
+}
+
 /* ---- shapes ---- */
 
 static void push_prim(struct prim_list *l, dev_prim p)
@@ -206,6 +211,13 @@ void lower_add_prim(struct lowering *lw, dev_prim p, int material, int object, c
 int lower_add_data(struct lowering *lw, float4 a)
 {
 	push_prim(&lw->data, (dev_prim){ .a = a, .type = PRIM_DATA, .material = -1, .object = -1, .link = -1 });
+	return lw->data.n - 1;
+}
+
+int lower_add_record(struct lowering *lw, float4 a, float4 b, float4 c)
+{
+	push_prim(&lw->data, (dev_prim){ .a = a, .b = b, .c = c, .type = PRIM_DATA, .material = -1, .object = -1,
+	                                 .link = -1 });
 	return lw->data.n - 1;
 }
 

@@ -206,6 +206,11 @@ int lower_texture_density(lower_textures *lt, const scene *s, int pattern, const
  * by ambient_light); its pattern pigments go into lt. local: a mesh's own
  * texture, whose patterns are in the mesh's space. */
 dev_material lower_texture(lower_textures *lt, const scene *s, const scene_material *m, int local);
+/* The material of a blob whose components have textures of their own
+ * (MATERIAL_BLOB): own, the blob's material, with a map whose entries are
+ * the components' textures in order (own's for those without one), placed
+ * in the blob's space, with the blob's interior, then own's. */
+dev_material lower_texture_blob(lower_textures *lt, const scene *s, const scene_object *o, const dev_material *own);
 /* The material of m's interior_texture (m->interior_texture > 0), with m's interior. */
 dev_material lower_interior_texture(lower_textures *lt, const scene *s, const scene_material *m);
 /* Appends the materials of texture_maps' entries and lower layers (lt->subs)

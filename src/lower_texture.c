@@ -359,6 +359,56 @@ dev_material lower_interior_texture(lower_textures *lt, const scene *s, const sc
 	return lt->subs[top];
 }
 
+/* The same plain solid texture twice (two components with one declared
+ * colour): one material, so that their weights add up on the device. */
+static bool same_plain(const dev_material *a, const dev_material *b)
+{
+	return a->pattern < 0 && a->normal < 0 && a->below < 0 && !(a->flags & MATERIAL_TEXTURE_MAP) &&
+	       memcmp(a, b, sizeof *a) == 0;
+}
+
+dev_material lower_texture_blob(lower_textures *lt, const scene *s, const scene_object *o, const dev_material *own)
+{
+	const scene_blob *bl = &s->blobs[o->poly];
+	/* the blob's texture, for its components without one; POV-Ray's blob of
+	 * several textures has no interior_texture */
+	int own_sub = add_sub(lt);
+	lt->subs[own_sub] = *own;
+	lt->subs[own_sub].flags &= ~MATERIAL_INTERIOR;
+	/* a pattern of no value whose map's entries are the components' textures,
+	 * then the blob's own (what a point that no component reaches shows) */
+	int at = lt->n_patterns++, first = lt->n_maps;
+	lt->patterns = grow_to(lt->patterns, &lt->cap_patterns, lt->n_patterns, sizeof *lt->patterns);
+	lt->patterns[at] = (dev_pattern){ .kind = PATTERN_SOLID, .map_first = first, .map_count = bl->n_parts + 1,
+	                                  .rows = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } } };
+	lt->n_maps += bl->n_parts + 1;
+	lt->maps = grow_to(lt->maps, &lt->cap_maps, lt->n_maps, sizeof *lt->maps);
+	struct surface sf = { &o->material, 0, o->material.uv == SCENE_UV_OBJECT };
+	for (int j = 0; j <= bl->n_parts; j++) {
+		int t = j < bl->n_parts ? bl->part[j].texture - 1 : -1, m = own_sub;
+		if (t >= 0) {   /* placed in the blob's space, which o->xf takes to world */
+			int n_subs = lt->n_subs;
+			m = lower_layers(lt, s, &sf, t, &o->xf, -1, 0);
+			for (int k = 0; k < j && lt->n_subs == n_subs + 1; k++)
+				if (lt->maps[first + k].material != own_sub &&
+				    same_plain(&lt->subs[m], &lt->subs[lt->maps[first + k].material])) {
+					lt->n_subs--;
+					m = lt->maps[first + k].material;
+					break;
+				}
+		}
+		const dev_material *sm = &lt->subs[m];   /* its average colour, as a texture_map's entries have */
+		lt->maps[first + j] = (dev_map_entry){ .colour = sm->pigment, .transmit = sm->ambient.w, .value = (float)j,
+		                                       .pigment = -1, .material = m };
+	}
+	dev_material d = *own;
+	d.flags = (d.flags & ~MATERIAL_INTERIOR) | MATERIAL_TEXTURE_MAP | MATERIAL_BLOB;
+	d.pattern = at;
+	d.normal = -1;
+	d.below = -1;
+	return d;
+}
+
 void lower_textures_append(lower_textures *lt, dev_material **mats, int *n_mats)
 {
 	int base = *n_mats;

@@ -276,9 +276,17 @@ enum { SCENE_BOUND_NONE, SCENE_BOUND_SPHERE, SCENE_BOUND_BOX };
  * (a == b) or a cylinder from a to b with hemispherical caps, of radius r and
  * strength s, whose field is s (1 - d^2/r^2)^2 within r of its centre or axis
  * (d the distance); the surface is where the fields add up to threshold.
+ * A component's own transformations (src/eval_blob.c) that keep distances'
+ * ratios are folded into a, b and r; any other (a non-uniform scale: POV-Ray's
+ * ellipsoidal and stretched components) leaves a, b and r in the component's
+ * own space, where its field is taken at inv(x). A component's own texture is
+ * in the pool, placed in the blob's space; the others show the blob's.
  * Shared by every copy. */
 typedef struct {
 	double a[3], b[3], r, s;
+	bool xformed;        /* xf and inv hold: the field is the component's own at inv(x) */
+	xform xf, inv;       /* the component's own space to the blob's, and back */
+	int texture;         /* 1 + its own texture in scene.textures, 0: the blob's */
 } scene_blob_part;
 typedef struct {
 	double threshold;

@@ -110,9 +110,14 @@ void lower_add_prim(struct lowering *lw, dev_prim p, int material, int object, c
                     const double hi[3]);
 /* A PRIM_DATA record holding a: the link to it. */
 int lower_add_data(struct lowering *lw, float4 a);
+/* The same holding three numbers a, b and c. */
+int lower_add_record(struct lowering *lw, float4 a, float4 b, float4 c);
 /* A triangle (smooth with normals, else NULL), unless it has no area. */
 void lower_add_triangle(struct lowering *lw, const double v[3][3], const double (*normals)[3], int material,
                         int object, src_loc loc);
+/* Makes material mat (the blob o's own, just added) the blend of its
+ * components' textures (lower_texture_blob). */
+void lower_blob_textures(struct lowering *lw, const scene_object *o, int mat);
 /* Whether the shapes lowered now are a CSG's leaves. */
 bool lower_in_csg(const struct lowering *lw);
 /* Sets p's rows to the inverse of local-to-world (the shape's own space to the

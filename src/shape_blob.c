@@ -32,8 +32,16 @@ static double dot3(const double a[3], const double b[3])
 
 /* Piece k (0: the sphere or the cap at a; 1: the body; 2: the cap at b) of
  * component p along the ray; false when the ray is nowhere within reach. */
-static bool piece_of(const scene_blob_part *p, int k, const double o[3], const double d[3], struct piece *out)
+static bool piece_of(const scene_blob_part *p, int k, const double ro[3], const double rd[3], struct piece *out)
 {
+	double o[3], d[3];   /* the ray in the component's own space */
+	if (p->xformed) {
+		scene_xform_point(&p->inv, ro, o);
+		scene_xform_vector(&p->inv, rd, d);
+	} else {
+		for (int i = 0; i < 3; i++)
+			o[i] = ro[i], d[i] = rd[i];
+	}
 	double ax[3] = { p->b[0] - p->a[0], p->b[1] - p->a[1], p->b[2] - p->a[2] }, len = sqrt(dot3(ax, ax));
 	bool sphere = !(len > 0);
 	if (sphere && k > 0)
@@ -122,29 +130,38 @@ static double blob_hit(const scene_blob *bl, const double o[3], const double d[3
 	}
 }
 
+/* Component p's field at x (the blob's space), its gradient added to g. */
+static double part_field(const scene_blob_part *p, const double bx[3], double g[3])
+{
+	double x[3] = { bx[0], bx[1], bx[2] };
+	if (p->xformed)
+		scene_xform_point(&p->inv, bx, x);
+	double ax[3] = { p->b[0] - p->a[0], p->b[1] - p->a[1], p->b[2] - p->a[2] }, len = sqrt(dot3(ax, ax));
+	double v[3] = { x[0] - p->a[0], x[1] - p->a[1], x[2] - p->a[2] };
+	if (len > 0) {   /* from the nearest point of the axis */
+		double s = dot3(v, ax) / (len * len);
+		s = s < 0 ? 0 : s > 1 ? 1 : s;
+		for (int i = 0; i < 3; i++)
+			v[i] -= s * ax[i];
+	}
+	double r2 = p->r * p->r, d2 = dot3(v, v);
+	if (d2 >= r2)
+		return 0;
+	double u = 1 - d2 / r2, gl[3];
+	for (int i = 0; i < 3; i++)
+		gl[i] = p->s * 2 * u * (-2 * v[i] / r2);
+	for (int i = 0; i < 3; i++)   /* back to the blob's space: the transpose of inv */
+		g[i] += p->xformed ? p->inv.m[0][i] * gl[0] + p->inv.m[1][i] * gl[1] + p->inv.m[2][i] * gl[2] : gl[i];
+	return p->s * u * u;
+}
+
 /* The field at x and its gradient into g. */
 static double field(const scene_blob *bl, const double x[3], double g[3])
 {
 	double f = 0;
 	g[0] = g[1] = g[2] = 0;
-	for (int j = 0; j < bl->n_parts; j++) {
-		const scene_blob_part *p = &bl->part[j];
-		double ax[3] = { p->b[0] - p->a[0], p->b[1] - p->a[1], p->b[2] - p->a[2] }, len = sqrt(dot3(ax, ax));
-		double v[3] = { x[0] - p->a[0], x[1] - p->a[1], x[2] - p->a[2] };
-		if (len > 0) {   /* from the nearest point of the axis */
-			double s = dot3(v, ax) / (len * len);
-			s = s < 0 ? 0 : s > 1 ? 1 : s;
-			for (int i = 0; i < 3; i++)
-				v[i] -= s * ax[i];
-		}
-		double r2 = p->r * p->r, d2 = dot3(v, v);
-		if (d2 >= r2)
-			continue;
-		double u = 1 - d2 / r2;
-		f += p->s * u * u;
-		for (int i = 0; i < 3; i++)
-			g[i] += p->s * 2 * u * (-2 * v[i] / r2);
-	}
+	for (int j = 0; j < bl->n_parts; j++)
+		f += part_field(&bl->part[j], x, g);
 	return f;
 }
 
@@ -180,7 +197,9 @@ static void bounds(const scene *s, const scene_object *o, double lo[3], double h
 			a[i] = fmin(p->a[i], p->b[i]) - p->r;
 			b[i] = fmax(p->a[i], p->b[i]) + p->r;
 		}
-		shape_grow_xformed_box(&o->xf, a, b, lo, hi);
+		/* from the component's own space, through the blob's, to world */
+		xform to_world = p->xformed ? scene_xform_then(&p->xf, &o->xf) : o->xf;
+		shape_grow_xformed_box(&to_world, a, b, lo, hi);
 	}
 }
 
@@ -194,11 +213,22 @@ static int lower(struct lowering *lw, const scene *s, const scene_object *o, int
 		diag_warning(o->loc, "blob with a singular transform (a scale of 0?) skipped");
 		return 0;
 	}
+	for (int j = 0; j < bl->n_parts; j++)
+		if (bl->part[j].texture) {   /* POV-Ray's blob of several textures */
+			lower_blob_textures(lw, o, mat);
+			break;
+		}
 	p.link = lower_add_data(lw, (float4){ (float)bl->n_parts, (float)bl->threshold, 0, 0 });
-	for (int j = 0; j < bl->n_parts; j++) {
+	for (int j = 0; j < bl->n_parts; j++) {   /* two records a component: kernels/shape_blob.cl */
 		const scene_blob_part *c = &bl->part[j];
-		lower_add_data(lw, (float4){ (float)c->a[0], (float)c->a[1], (float)c->a[2], (float)c->r });
-		lower_add_data(lw, (float4){ (float)c->b[0], (float)c->b[1], (float)c->b[2], (float)c->s });
+		const xform *m = &c->inv;
+		float4 rows[3] = { { 0 } };
+		for (int i = 0; i < 3 && c->xformed; i++)
+			rows[i] = (float4){ (float)m->m[i][0], (float)m->m[i][1], (float)m->m[i][2], (float)m->m[i][3] };
+		lower_add_record(lw, (float4){ (float)c->a[0], (float)c->a[1], (float)c->a[2], (float)c->r },
+		                 (float4){ (float)c->b[0], (float)c->b[1], (float)c->b[2], (float)c->s },
+		                 (float4){ c->xformed ? 1.0f : 0.0f, 0, 0, 0 });
+		lower_add_record(lw, rows[0], rows[1], rows[2]);
 	}
 	double blo[3] = { INFINITY, INFINITY, INFINITY }, bhi[3] = { -INFINITY, -INFINITY, -INFINITY };
 	bounds(s, o, blo, bhi);

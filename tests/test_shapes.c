@@ -194,7 +194,8 @@ static void make_poly(scene_object *o)
 }
 
 /* Two to six components, spheres and cylinders, a negative one now and then,
- * overlapping about the unit cube. */
+ * some in a space of their own (scaled unevenly and turned, as POV-Ray's
+ * ellipsoidal components), overlapping about the unit cube. */
 static void make_blob(scene_object *o)
 {
 	scene_blob bl = { .threshold = between(0.2, 0.8) };
@@ -209,6 +210,18 @@ static void make_blob(scene_object *o)
 			memcpy(p->b, p->a, sizeof p->a);
 		p->r = between(0.3, 0.9);
 		p->s = uniform() < 0.15 ? -between(0.2, 1) : between(0.5, 1.5);
+		if (uniform() < 0.3) {   /* about its centre, so that it stays near the others */
+			double sc[3] = { between(0.4, 1.6), between(0.4, 1.6), between(0.4, 1.6) };
+			double deg[3] = { between(-90, 90), between(-90, 90), between(-90, 90) }, back[3], there[3];
+			for (int i = 0; i < 3; i++)
+				back[i] = -p->a[i], there[i] = p->a[i];
+			xform t = scene_xform_translate(back), s1 = scene_xform_scale(sc), r = scene_xform_rotate(deg);
+			xform m = scene_xform_then(&t, &s1);
+			m = scene_xform_then(&m, &r);
+			t = scene_xform_translate(there);
+			p->xf = scene_xform_then(&m, &t);
+			p->xformed = lower_invert(&p->xf, &p->inv) == 0;
+		}
 	}
 	o->poly = scene_add_blob(maker_scene, &bl);
 }
