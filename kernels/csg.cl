@@ -116,6 +116,12 @@ static inline bool csg_op_inside(const scene_data *sc, global const bvh_node *no
 	                       kind);
 }
 
+/* The program's int i. */
+static inline int csg_program_int(global const dev_prim *prog, int i)
+{
+	return ((global const int *)&prog[i / CSG_OPS_PER_RECORD])[i % CSG_OPS_PER_RECORD];
+}
+
 /* Whether the point x of leaf k's surface is on the CSG's surface; *flip when
  * the CSG's inside is on the leaf's outside there. The stacks are bits, the
  * top in bit 0: v1 with the point inside leaf k, v0 with it outside, has for
@@ -132,7 +138,7 @@ static inline bool csg_classify(const scene_data *sc, global const bvh_node *nod
 	global const dev_prim *prog = &prims[as_int(csg->a.z)];
 	uint v1 = 0, v0 = 0, has = 0;
 	for (int i = 0; i < n_ops; i++) {
-		int code = ((global const int *)&prog[i / CSG_OPS_PER_RECORD])[i % CSG_OPS_PER_RECORD];
+		int code = csg_program_int(prog, i);
 		int op = code >> CSG_OP_SHIFT, arg = code & ((1 << CSG_OP_SHIFT) - 1);
 		if (op == CSG_LEAF || op == CSG_LEAF_BOXED) {
 			uint in = arg == k ? 1u : 0u;
@@ -146,6 +152,17 @@ static inline bool csg_classify(const scene_data *sc, global const bvh_node *nod
 		if (op == CSG_NOT) {
 			v1 ^= 1u;
 			v0 ^= 1u;
+			continue;
+		}
+		if (op == CSG_SKIP) {   /* its mask in the next two ints */
+			uint lo = (uint)csg_program_int(prog, i + 1), hi = (uint)csg_program_int(prog, i + 2);
+			i += 2;
+			if (((near | 1ul << (k & 63)) & ((ulong)hi << 32 | lo)) != 0ul)
+				continue;   /* the part may hold leaf k or one whose box holds x: read it */
+			i += arg >> 1;
+			v1 = v1 << 1 | (uint)(arg & 1);
+			v0 = v0 << 1 | (uint)(arg & 1);
+			has <<= 1;
 			continue;
 		}
 		uint mask = (1u << arg) - 1u;   /* the top arg entries (arg < 32, lowering says) */

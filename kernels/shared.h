@@ -183,8 +183,13 @@ typedef struct {
  * which keeps its parts' inner surfaces) combine the top n. Lowering writes
  * CSG_LEAF_BOXED k for a leaf whose inside lies within its box (its box
  * record's a.w), so that the kernels answer it outside where the leaf tree
- * says the point is outside that box, without reading its record. */
-enum { CSG_LEAF = 1, CSG_NOT = 2, CSG_AND = 3, CSG_OR = 4, CSG_UNION = 5, CSG_LEAF_BOXED = 6 };
+ * says the point is outside that box, without reading its record; and
+ * CSG_SKIP (n << 1 | v) before a part of n ops whose leaves are all such,
+ * followed by two ints, the low and high halves of the 64-bit mask of its
+ * leaves (bit k % 64 for leaf k): when no leaf of the mask is the one
+ * classified or has a box that holds the point, each is outside, and the part
+ * is v (src/lower_csg_program.c). */
+enum { CSG_LEAF = 1, CSG_NOT = 2, CSG_AND = 3, CSG_OR = 4, CSG_UNION = 5, CSG_LEAF_BOXED = 6, CSG_SKIP = 7 };
 #define CSG_OP_SHIFT 24
 #define CSG_OPS_PER_RECORD 12   /* a, b and c of a PRIM_DATA record */
 #define CSG_STACK 32   /* the deepest a program may nest; lowering checks it */

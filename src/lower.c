@@ -660,6 +660,13 @@ static int lower_csg(struct lowering *lw, const scene *s, int index)
 		           CSG_STACK);
 		rc = -1;
 	}
+	csg_prog run = { 0 };   /* the program as the kernels run it, when it is not too deep */
+	if (rc == 0 && ok && lower_csg_program(p.ops, p.n, boxes, n_seen, &run) <= CSG_STACK) {
+		free(p.ops);
+		p = run;
+	} else {
+		free(run.ops);
+	}
 	dev_prim *nodes = NULL;
 	int n_nodes = 0, root = 0, *list = NULL;
 	if (rc == 0 && ok && n_seen > 0 &&
