@@ -6,7 +6,10 @@
  * program gives different answers with the point just inside the leaf and just
  * outside it, the other leaves answering their inside tests. A union keeps its
  * parts' inner surfaces (POV-Ray returns all of a union's hits): where the leaf
- * is under a union, the union answers as the leaf's own part does. */
+ * is under a union, the union answers as the leaf's own part does. A tree
+ * over the leaves' boxes (src/lower_csg_tree.c) gives each crossing the
+ * leaves whose boxes the ray meets, and each classification those whose
+ * boxes hold the point, so that neither touches every leaf. */
 
 #define CSG_CROSSINGS 256   /* leaf surfaces a ray may cross in one CSG object, at most */
 
@@ -125,16 +128,16 @@ static inline int csg_program_int(global const dev_prim *prog, int i)
 /* Whether the point x of leaf k's surface is on the CSG's surface; *flip when
  * the CSG's inside is on the leaf's outside there. The stacks are bits, the
  * top in bit 0: v1 with the point inside leaf k, v0 with it outside, has for
- * the entries that hold leaf k. The program still reads every op, an int
- * each; but the leaves' boxes that hold x come from the leaf tree, and only
- * their leaves (and those whose inside their box does not bound, and
- * clipped_by's) are asked. */
+ * the entries that hold leaf k. The leaves whose boxes hold x come from the
+ * leaf tree, and only they (and those whose inside their box does not bound,
+ * and clipped_by's) are asked; a part of the program that holds none of them
+ * nor leaf k is skipped where lowering put a CSG_SKIP before it. */
 static inline bool csg_classify(const scene_data *sc, global const bvh_node *nodes, global const dev_prim *prims,
                                 global const dev_prim *csg,
                                 int k, float3 x, bool *flip, uint *counts, int kind)
 {
 	int n_ops = as_int(csg->a.w);
-	ulong near = csg_near(prims, csg, x);
+	ulong near = as_int(csg->b.z) == CSG_NO_TREE ? ~0ul : csg_near(prims, csg, x);
 	global const dev_prim *prog = &prims[as_int(csg->a.z)];
 	uint v1 = 0, v0 = 0, has = 0;
 	for (int i = 0; i < n_ops; i++) {
@@ -187,13 +190,15 @@ static inline bool csg_classify(const scene_data *sc, global const bvh_node *nod
 
 /* Leaf k's hit past t, when it is nearer than *best (of hits at the same t,
  * the first leaf's is kept, as a loop over the leaves in order would keep it:
- * a leaf before *which is asked for hits up to the float after *best). */
+ * a leaf before *which is asked for hits up to the float after *best, which
+ * is positive and finite then, so that the float after it is its bits plus
+ * one). */
 static inline void csg_leaf_hit(const scene_data *sc, float3 o, float3 d, global const bvh_node *nodes,
                                 global const dev_prim *prims, global const dev_prim *csg, int k, float tmin, float t,
                                 float *best, int *which, int *tri, uint *counts, int kind)
 {
 	global const dev_prim *q = &prims[as_int(csg->a.x) + k];
-	float hi = k < *which ? nextafter(*best, INFINITY) : *best;
+	float hi = k < *which ? as_float(as_int(*best) + 1) : *best;
 	int tk_tri = -1;
 	float tk = q->type == PRIM_CSG_MESH ? csg_mesh_intersect(nodes, prims, q, o, d, tmin, t, hi, &tk_tri, counts, kind)
 	                                   : shape_intersect(sc, o, d, prims, q, t, hi);
@@ -215,6 +220,12 @@ static inline int csg_nearest(const scene_data *sc, float3 o, float3 d, float3 i
 	int which = -1, stack[CSG_TREE_STACK], sp = 0;
 	float enter[CSG_TREE_STACK];
 	int root = as_int(csg->b.z);
+	if (root == CSG_NO_TREE) {   /* few leaves, or overlapping ones: each in turn */
+		for (int k = 0; k < csg->link; k++)
+			if (csg_box_entry(csg_box(prims, csg, k), o, inv, t, *best) < INFINITY)
+				csg_leaf_hit(sc, o, d, nodes, prims, csg, k, tmin, t, best, &which, tri, counts, kind);
+		return which;
+	}
 	float e = csg_box_entry(csg_tree_box(prims, csg, root), o, inv, t, *best);
 	if (e < INFINITY) {
 		stack[0] = root;

@@ -157,7 +157,8 @@ enum { PRISM_OPEN = 1, PRISM_FLAT = 2, PRISM_CONIC = 4 };
  *   a leaf: a.xyz, b.xyz its padded bounds, a.w 1 when the leaf's inside lies
  *   within them; kernels/csg.cl's csg_box); b.y, b.z, b.w (ints): the tree
  *   over the boxes of the leaves rays may meet (src/lower_csg_tree.c): its
- *   first node record, its root and its list of leaves' first record (ints,
+ *   first node record, its root (CSG_NO_TREE: none, the kernels loop over
+ *   the leaves) and its list of leaves' first record (ints,
  *   CSG_OPS_PER_RECORD in a record's a, b and c). A reference in the tree is
  *   a node (>= 0, counted from b.y) or a leaf k (~k, whose box is its box
  *   record). A node's record: a.xyz and b.xyz its box, c.x and c.y (ints) its
@@ -194,6 +195,7 @@ enum { CSG_LEAF = 1, CSG_NOT = 2, CSG_AND = 3, CSG_OR = 4, CSG_UNION = 5, CSG_LE
 #define CSG_OPS_PER_RECORD 12   /* a, b and c of a PRIM_DATA record */
 #define CSG_STACK 32   /* the deepest a program may nest; lowering checks it */
 #define CSG_TREE_STACK 32   /* the deepest a CSG's leaf tree may be; lowering checks it */
+#define CSG_NO_TREE (-0x7fffffff - 1)   /* a CSG record's root when it has no leaf tree */
 
 /* A surface's material, 208 bytes, one per texture: POV-Ray's finish and
  * interior as the scene gives them (lower.c changes nothing but ambient, which

@@ -660,20 +660,19 @@ static int lower_csg(struct lowering *lw, const scene *s, int index)
 		           CSG_STACK);
 		rc = -1;
 	}
-	csg_prog run = { 0 };   /* the program as the kernels run it, when it is not too deep */
-	if (rc == 0 && ok && lower_csg_program(p.ops, p.n, boxes, n_seen, &run) <= CSG_STACK) {
+	dev_prim *nodes = NULL;
+	int n_nodes = 0, root = CSG_NO_TREE, *list = NULL;
+	if (rc == 0 && ok && lower_csg_tree(boxes, n_seen, &nodes, &n_nodes, &list, &root) > CSG_TREE_STACK) {
+		diag_error(g->loc, "this CSG object has more parts than the %d levels of their tree the kernels can "
+		           "walk", CSG_TREE_STACK);
+		rc = -1;
+	}
+	csg_prog run = { 0 };   /* the program as the kernels run it, when it is not too deep; skips need the tree */
+	if (rc == 0 && ok && lower_csg_program(p.ops, p.n, boxes, root == CSG_NO_TREE ? 0 : n_seen, &run) <= CSG_STACK) {
 		free(p.ops);
 		p = run;
 	} else {
 		free(run.ops);
-	}
-	dev_prim *nodes = NULL;
-	int n_nodes = 0, root = 0, *list = NULL;
-	if (rc == 0 && ok && n_seen > 0 &&
-	    lower_csg_tree(boxes, n_seen, &nodes, &n_nodes, &list, &root) > CSG_TREE_STACK) {
-		diag_error(g->loc, "this CSG object has more parts than the %d levels of their tree the kernels can "
-		           "walk", CSG_TREE_STACK);
-		rc = -1;
 	}
 	double blo[3], bhi[3];
 	csg_bounds(g->ops, g->n_ops, g->n_leaves, (const double (*)[3])lo, (const double (*)[3])hi, blo, bhi);
@@ -696,7 +695,7 @@ static int lower_csg(struct lowering *lw, const scene *s, int index)
 		for (int j = 0; j < n_nodes; j++)
 			push_prim(&lw->data, nodes[j]);
 		int list_first = lw->data.n;
-		for (int i = 0; i < n_seen; i += CSG_OPS_PER_RECORD) {   /* as the program's records */
+		for (int i = 0; list && i < n_seen; i += CSG_OPS_PER_RECORD) {   /* as the program's records */
 			dev_prim r = { .type = PRIM_DATA, .material = -1, .object = -1, .link = -1 };
 			int n = n_seen - i < CSG_OPS_PER_RECORD ? n_seen - i : CSG_OPS_PER_RECORD;
 			memcpy(&r, list + i, n * sizeof *list);

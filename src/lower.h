@@ -203,10 +203,11 @@ dev_material lower_interior_texture(lower_textures *lt, const scene *s, const sc
 void lower_textures_append(lower_textures *lt, dev_material **mats, int *n_mats);
 void lower_textures_free(lower_textures *lt);
 /* The tree over a CSG object's first n leaf boxes (lowering's box records,
- * those of the leaves rays may meet; n at least 1), as shared.h's CSG record
+ * those of the leaves rays may meet), as shared.h's CSG record
  * has it: its nodes in a new array and how many, its list of leaves (n ints,
  * which the runs of leaves index) and its root's reference in *root; free()
- * the arrays. Returns the tree's depth, which the kernels' stack
+ * the arrays. *root is CSG_NO_TREE where a tree would not pay (then the
+ * arrays are NULL). Returns the tree's depth, which the kernels' stack
  * (CSG_TREE_STACK) must hold (lower_csg_tree.c). */
 int lower_csg_tree(const dev_prim *boxes, int n, dev_prim **nodes, int *n_nodes, int **list, int *root);
 /* A CSG object's program (CSG_LEAF_BOXED for the leaves whose insides lie

@@ -35,55 +35,54 @@ static void *alloc(size_t n)
 struct node {
 	int op, arg;          /* a leaf's op and number, CSG_NOT, or an associative op */
 	struct node **kid;
-	int n_kids;
+	int n_kids, height;
 };
 
-static void free_node(struct node *t)
-{
-	for (int i = 0; i < t->n_kids; i++)
-		free_node(t->kid[i]);
-	free(t->kid);
-	free(t);
-}
+/* The tree of the postfix program, in nodes (one an op at most), chains of
+ * one op (AND, OR, UNION: each associative, a union's keeping of its parts'
+ * inner surfaces too) made one node with all their parts; its root, or NULL
+ * when the program is not one formula or nests too deep for emit_node's
+ * recursion (the caller then keeps the program as it is). */
+#define MAX_HEIGHT 1000
 
-/* The tree of the postfix program, chains of one op (AND, OR, UNION: each
- * associative, a union's keeping of its parts' inner surfaces too) made one
- * node with all their parts. */
-static struct node *parse(const int *ops, int n)
+static struct node *parse(const int *ops, int n, struct node *nodes)
 {
 	struct node **stack = alloc((n + 1) * sizeof *stack);
-	int sp = 0;
-	for (int i = 0; i < n; i++) {
+	int sp = 0, ok = 1;
+	for (int i = 0; i < n && ok; i++) {
 		int op = csg_op_code(ops[i]), arg = csg_op_arg(ops[i]);
-		struct node *t = alloc(sizeof *t);
+		struct node *t = &nodes[i];
 		t->op = op;
 		t->arg = arg;
 		int take = op == CSG_LEAF || op == CSG_LEAF_BOXED ? 0 : op == CSG_NOT ? 1 : arg;
 		if (take > sp || take < 0) {
-			free(t);
-			sp = -1;
+			ok = 0;
 			break;
 		}
 		int parts = 0;
 		for (int j = sp - take; j < sp; j++)
 			parts += stack[j]->op == op && op != CSG_NOT ? stack[j]->n_kids : 1;
 		t->kid = alloc(parts * sizeof *t->kid);
+		t->height = 1;
 		for (int j = sp - take; j < sp; j++) {
-			if (stack[j]->op == op && op != CSG_NOT) {
-				memcpy(t->kid + t->n_kids, stack[j]->kid, stack[j]->n_kids * sizeof *t->kid);
-				t->n_kids += stack[j]->n_kids;
-				free(stack[j]->kid);
-				free(stack[j]);
+			struct node *k = stack[j];
+			if (k->op == op && op != CSG_NOT) {   /* its parts become t's: k is left empty */
+				memcpy(t->kid + t->n_kids, k->kid, k->n_kids * sizeof *t->kid);
+				t->n_kids += k->n_kids;
+				t->height = t->height > k->height ? t->height : k->height;
+				free(k->kid);
+				k->kid = NULL;
+				k->n_kids = 0;
 			} else {
-				t->kid[t->n_kids++] = stack[j];
+				t->kid[t->n_kids++] = k;
+				t->height = t->height > k->height + 1 ? t->height : k->height + 1;
 			}
 		}
+		ok = t->height <= MAX_HEIGHT;
 		sp -= take;
 		stack[sp++] = t;
 	}
-	struct node *root = sp == 1 ? stack[0] : NULL;
-	for (int j = 0; j < sp && !root; j++)
-		free_node(stack[j]);
+	struct node *root = ok && sp == 1 ? stack[0] : NULL;
 	free(stack);
 	return root;
 }
@@ -165,7 +164,8 @@ static void emit_parts(const struct emit *e, const struct node *t, int first, in
 		f->value = t->op == CSG_AND ? f->value && g.value : f->value || g.value;
 		csg_push(&body, t->op, 2);
 	}
-	if (f->boxed && body.n >= SKIP_MIN_OPS && volume(f->lo, f->hi) < 0.5 * e->volume) {
+	if (f->boxed && body.n >= SKIP_MIN_OPS && body.n < 1 << (CSG_OP_SHIFT - 2) &&
+	    volume(f->lo, f->hi) < 0.5 * e->volume) {   /* n << 1 | v in the operand */
 		csg_push(out, CSG_SKIP, body.n << 1 | f->value);
 		push_raw(out, (int)(unsigned)(f->mask & 0xffffffffu));
 		push_raw(out, (int)(unsigned)(f->mask >> 32));
@@ -203,9 +203,13 @@ static void emit_node(const struct emit *e, const struct node *t, csg_prog *out,
 int lower_csg_program(const int *ops, int n, const dev_prim *boxes, int n_seen, csg_prog *out)
 {
 	memset(out, 0, sizeof *out);
-	struct node *root = parse(ops, n);
-	if (!root)
-		return CSG_STACK + 1;   /* not one formula: the caller keeps its own */
+	struct node *nodes = alloc((n + 1) * sizeof *nodes), *root = parse(ops, n, nodes);
+	if (!root) {
+		for (int i = 0; i < n; i++)
+			free(nodes[i].kid);
+		free(nodes);
+		return CSG_STACK + 1;
+	}
 	struct emit e = { boxes, n_seen, 0 };
 	double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
 	for (int j = 0; j < n_seen; j++)
@@ -216,6 +220,8 @@ int lower_csg_program(const int *ops, int n, const dev_prim *boxes, int n_seen, 
 	e.volume = volume(lo, hi);
 	struct facts f;
 	emit_node(&e, root, out, &f);
-	free_node(root);
+	for (int i = 0; i < n; i++)
+		free(nodes[i].kid);
+	free(nodes);
 	return f.depth;
 }

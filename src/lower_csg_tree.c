@@ -5,6 +5,7 @@
  *   dev_prim *nodes; int *list, n_nodes, root;
  *   int depth = lower_csg_tree(boxes, n, &nodes, &n_nodes, &list, &root);
  *   if (depth > CSG_TREE_STACK) ...   too deep for the kernels
+ *   root == CSG_NO_TREE: no tree (nodes and list NULL)
  *
  * A CSG has tens of leaves, rarely thousands: the tree is split at the median
  * of the longest side of its boxes' centres, which keeps it balanced (its
@@ -16,7 +17,9 @@
  * CSG before the tree. Leaves whose boxes are unbounded (lowering clamps a
  * plane's or an inverse quadric's to +-1e30) are a run of their own beside
  * the bounded ones' tree, where they would not swell every box above them:
- * every ray tests them all. */
+ * every ray tests them all. A tree that would spare a ray too few box tests
+ * to pay for its own (a CSG of a few leaves, or of leaves that all overlap)
+ * is not made: the kernels then loop over the leaves. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -166,8 +169,43 @@ static int build(struct build *b, int first, int count, const struct box *r, int
 	return me;
 }
 
+static struct box ref_box(const struct build *b, int ref)
+{
+	return ref < 0 ? corners(&b->boxes[~ref]) : corners(&b->nodes[ref]);
+}
+
+/* The box tests a ray that meets ref's box makes below it, by the surface
+ * area heuristic: a run's leaves' boxes, or a node's children's and what
+ * those it meets make (every ray meets an unbounded box). */
+static double tests(const struct build *b, int ref)
+{
+	if (ref < 0)
+		return 0;
+	const dev_prim *n = &b->nodes[ref];
+	int kid[2], count;
+	memcpy(kid, &n->c, sizeof kid);
+	memcpy(&count, &n->c.w, sizeof count);
+	if (count > 0)
+		return count;
+	struct box r = ref_box(b, ref);
+	double area = half_area(&r), sum = 2;
+	for (int i = 0; i < 2; i++) {
+		struct box c = ref_box(b, kid[i]);
+		double p = isfinite(area) && area > 0 ? half_area(&c) / area : 1;
+		sum += (p < 1 ? p : 1) * tests(b, kid[i]);
+	}
+	return sum;
+}
+
 int lower_csg_tree(const dev_prim *boxes, int n, dev_prim **nodes, int *n_nodes, int **list, int *root)
 {
+	if (n < 1) {
+		*nodes = NULL;
+		*n_nodes = 0;
+		*list = NULL;
+		*root = CSG_NO_TREE;
+		return 0;
+	}
 	struct build b = { boxes, alloc((n + 1) * sizeof *b.index), alloc((2 * n + 1) * sizeof *b.nodes), 0 };
 	int n_bounded = 0, at = 0, depth = 0;
 	for (int k = 0; k < n; k++)
@@ -186,6 +224,15 @@ int lower_csg_tree(const dev_prim *boxes, int n, dev_prim **nodes, int *n_nodes,
 		set_ints(&b.nodes[me].c, left, right, 0, 0);
 		depth = 1 + (d0 > d1 ? d0 : d1);
 		*root = me;
+	}
+	if (2 * (1 + tests(&b, *root)) >= n) {   /* a visit costs about two of a loop's box tests */
+		free(b.nodes);
+		free(b.index);
+		*nodes = NULL;
+		*n_nodes = 0;
+		*list = NULL;
+		*root = CSG_NO_TREE;
+		return 0;
 	}
 	*nodes = b.nodes;
 	*n_nodes = b.n_nodes;
