@@ -156,9 +156,17 @@ enum { PRISM_OPEN = 1, PRISM_FLAT = 2, PRISM_CONIC = 4 };
  *   many of its leaves rays may meet (the rest are clipped_by's, which only
  *   answer inside tests); b.x (int): its first leaf box record (PRIM_DATA, one
  *   a leaf: a.xyz, b.xyz its padded bounds, a.w 1 when the leaf's inside lies
- *   within them; kernels/csg.cl's csg_box). The leaves
- *   and the program's records (PRIM_DATA, CSG_OPS_PER_RECORD ops each in a, b
- *   and c) are after every BVH's primitives, where no BVH points.
+ *   within them; kernels/csg.cl's csg_box); b.y, b.z, b.w (ints): the tree
+ *   over the boxes of the leaves rays may meet (src/lower_csg_tree.c): its
+ *   first node record, its root (CSG_NO_TREE: none, the kernels loop over
+ *   the leaves) and its list of leaves' first record (ints,
+ *   CSG_OPS_PER_RECORD in a record's a, b and c). A reference in the tree is
+ *   a node (>= 0, counted from b.y) or a leaf k (~k, whose box is its box
+ *   record). A node's record: a.xyz and b.xyz its box, c.x and c.y (ints) its
+ *   two children; or, when c.w (int) is not 0, a run of c.w leaves, those of
+ *   the list from c.z on, in the leaves' order. The leaves, the program's
+ *   records (PRIM_DATA, CSG_OPS_PER_RECORD ops each in a, b and c), the boxes
+ *   and the tree are after every BVH's primitives, where no BVH points.
  * CSG mesh: a mesh (height field, parametric...) as a CSG's leaf: as an
  *   instance, but link is its PRIM_DATA record: a.xyz the direction in the
  *   mesh's space along which crossings are counted for its inside (POV-Ray's
@@ -174,11 +182,21 @@ typedef struct {
 /* A CSG program's ops (kernels/csg.cl): each an int, the op in the top 8 bits
  * and its operand below. CSG_LEAF k pushes whether the point is inside leaf k;
  * CSG_NOT inverts the top; CSG_AND n, CSG_OR n (merge) and CSG_UNION n (a union,
- * which keeps its parts' inner surfaces) combine the top n. */
-enum { CSG_LEAF = 1, CSG_NOT = 2, CSG_AND = 3, CSG_OR = 4, CSG_UNION = 5 };
+ * which keeps its parts' inner surfaces) combine the top n. Lowering writes
+ * CSG_LEAF_BOXED k for a leaf whose inside lies within its box (its box
+ * record's a.w), so that the kernels answer it outside where the leaf tree
+ * says the point is outside that box, without reading its record; and
+ * CSG_SKIP (n << 1 | v) before a part of n ops whose leaves are all such,
+ * followed by two ints, the low and high halves of the 64-bit mask of its
+ * leaves (bit k % 64 for leaf k): when no leaf of the mask is the one
+ * classified or has a box that holds the point, each is outside, and the part
+ * is v (src/lower_csg_program.c). */
+enum { CSG_LEAF = 1, CSG_NOT = 2, CSG_AND = 3, CSG_OR = 4, CSG_UNION = 5, CSG_LEAF_BOXED = 6, CSG_SKIP = 7 };
 #define CSG_OP_SHIFT 24
 #define CSG_OPS_PER_RECORD 12   /* a, b and c of a PRIM_DATA record */
 #define CSG_STACK 32   /* the deepest a program may nest; lowering checks it */
+#define CSG_TREE_STACK 32   /* the deepest a CSG's leaf tree may be; lowering checks it */
+#define CSG_NO_TREE (-0x7fffffff - 1)   /* a CSG record's root when it has no leaf tree */
 
 /* A surface's material, 208 bytes, one per texture: POV-Ray's finish and
  * interior as the scene gives them (lower.c changes nothing but ambient, which

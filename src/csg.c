@@ -32,7 +32,7 @@ int csg_depth(const int *ops, int n)
 	int sp = 0, deepest = 0;
 	for (int i = 0; i < n; i++) {
 		int op = csg_op_code(ops[i]);
-		if (op == CSG_LEAF)
+		if (op == CSG_LEAF || op == CSG_LEAF_BOXED)   /* lowering's programs have both */
 			sp++;
 		else if (op != CSG_NOT)
 			sp -= csg_op_arg(ops[i]) - 1;

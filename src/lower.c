@@ -646,6 +646,10 @@ static int lower_csg(struct lowering *lw, const scene *s, int index)
 	if (!ok)
 		diag_warning(g->loc, "CSG object skipped: a part is too far from the origin, too large or too thin "
 		             "for the device's single precision (a coordinate or scale past %g)", LOWER_FAR);
+	dev_prim *boxes = xmalloc((leaves.n + 1) * sizeof *boxes);   /* a box a leaf, in the leaves' order */
+	for (int k = 0; k < g->n_leaves; k++)
+		for (int j = first[k]; j < last[k]; j++)
+			boxes[j] = csg_leaf_box(&s->objects[g->first + k], lo[k], hi[k]);
 	csg_prog p = { 0 };
 	for (int i = 0; i < g->n_ops; i++) {
 		int op = csg_op_code(g->ops[i]), arg = csg_op_arg(g->ops[i]);
@@ -658,7 +662,7 @@ static int lower_csg(struct lowering *lw, const scene *s, int index)
 			continue;
 		}
 		for (int j = first[arg]; j < last[arg]; j++) {
-			csg_push(&p, CSG_LEAF, j);
+			csg_push(&p, boxes[j].a.w != 0 ? CSG_LEAF_BOXED : CSG_LEAF, j);
 			if (j > first[arg])
 				csg_push(&p, CSG_UNION, 2);
 		}
@@ -667,6 +671,20 @@ static int lower_csg(struct lowering *lw, const scene *s, int index)
 		diag_error(g->loc, "this CSG object nests deeper than the %d levels the kernels can classify",
 		           CSG_STACK);
 		rc = -1;
+	}
+	dev_prim *nodes = NULL;
+	int n_nodes = 0, root = CSG_NO_TREE, *list = NULL;
+	if (rc == 0 && ok && lower_csg_tree(boxes, n_seen, &nodes, &n_nodes, &list, &root) > CSG_TREE_STACK) {
+		diag_error(g->loc, "this CSG object has more parts than the %d levels of their tree the kernels can "
+		           "walk", CSG_TREE_STACK);
+		rc = -1;
+	}
+	csg_prog run = { 0 };   /* the program as the kernels run it, when it is not too deep; skips need the tree */
+	if (rc == 0 && ok && lower_csg_program(p.ops, p.n, boxes, root == CSG_NO_TREE ? 0 : n_seen, &run) <= CSG_STACK) {
+		free(p.ops);
+		p = run;
+	} else {
+		free(run.ops);
 	}
 	double blo[3], bhi[3];
 	csg_bounds(g->ops, g->n_ops, g->n_leaves, (const double (*)[3])lo, (const double (*)[3])hi, blo, bhi);
@@ -682,18 +700,23 @@ static int lower_csg(struct lowering *lw, const scene *s, int index)
 			memcpy(&r, p.ops + i, n * sizeof *p.ops);
 			push_prim(&lw->data, r);
 		}
-		int box_first = lw->data.n;   /* a box a leaf, in the leaves' order (clipped_by's last) */
-		dev_prim *boxes = xmalloc(leaves.n * sizeof *boxes);
-		for (int k = 0; k < g->n_leaves; k++)
-			for (int j = first[k]; j < last[k]; j++)
-				boxes[j] = csg_leaf_box(&s->objects[g->first + k], lo[k], hi[k]);
+		int box_first = lw->data.n;   /* clipped_by's last */
 		for (int j = 0; j < leaves.n; j++)
 			push_prim(&lw->data, boxes[j]);
-		free(boxes);
-		int head[4] = { leaf_first, leaves.n, prog_first, p.n };
+		int node_first = lw->data.n;
+		for (int j = 0; j < n_nodes; j++)
+			push_prim(&lw->data, nodes[j]);
+		int list_first = lw->data.n;
+		for (int i = 0; list && i < n_seen; i += CSG_OPS_PER_RECORD) {   /* as the program's records */
+			dev_prim r = { .type = PRIM_DATA, .material = -1, .object = -1, .link = -1 };
+			int n = n_seen - i < CSG_OPS_PER_RECORD ? n_seen - i : CSG_OPS_PER_RECORD;
+			memcpy(&r, list + i, n * sizeof *list);
+			push_prim(&lw->data, r);
+		}
+		int head[4] = { leaf_first, leaves.n, prog_first, p.n }, tree[4] = { box_first, node_first, root, list_first };
 		dev_prim c = { .type = PRIM_CSG, .material = leaves.p[0].material, .object = g->first, .link = n_seen };
 		memcpy(&c.a, head, sizeof head);
-		memcpy(&c.b, &box_first, sizeof box_first);
+		memcpy(&c.b, tree, sizeof tree);
 		int bounded = 1;
 		for (int k = 0; k < 3; k++)
 			bounded &= blo[k] > -1e9 && bhi[k] < 1e9;
@@ -705,6 +728,9 @@ static int lower_csg(struct lowering *lw, const scene *s, int index)
 		}
 	}
 	free(p.ops);
+	free(boxes);
+	free(nodes);
+	free(list);
 	free(leaves.p);
 	free(first);
 	free(last);
@@ -835,7 +861,8 @@ static bvh_box triangle_box(const dev_prim *p)
 }
 
 /* A record's indices into the data list made absolute: a shape's link to its
- * PRIM_DATA record, a CSG's first leaf and program. */
+ * PRIM_DATA record, a CSG's first leaf, program, leaf box, tree node and
+ * tree list (its tree's references count from those). */
 static void relocate(dev_prim *p, int base)
 {
 	switch (p->type) {
@@ -848,9 +875,11 @@ static void relocate(dev_prim *p, int base)
 		v[0] += base;
 		v[2] += base;
 		memcpy(&p->a, v, sizeof v);
-		memcpy(v, &p->b, sizeof *v);
+		memcpy(v, &p->b, sizeof v);
 		v[0] += base;
-		memcpy(&p->b, v, sizeof *v);
+		v[1] += base;
+		v[3] += base;
+		memcpy(&p->b, v, sizeof v);
 		return;
 	}
 	default:

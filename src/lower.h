@@ -8,6 +8,7 @@
 
 #include "../kernels/shared.h"
 #include "bvh.h"
+#include "csg.h"
 #include "scene.h"
 
 enum { LOWER_BVH_SAH, LOWER_BVH_MEDIAN };
@@ -217,6 +218,20 @@ dev_material lower_interior_texture(lower_textures *lt, const scene *s, const sc
  * after *mats, and makes the references to them indices into *mats. */
 void lower_textures_append(lower_textures *lt, dev_material **mats, int *n_mats);
 void lower_textures_free(lower_textures *lt);
+/* The tree over a CSG object's first n leaf boxes (lowering's box records,
+ * those of the leaves rays may meet), as shared.h's CSG record
+ * has it: its nodes in a new array and how many, its list of leaves (n ints,
+ * which the runs of leaves index) and its root's reference in *root; free()
+ * the arrays. *root is CSG_NO_TREE where a tree would not pay (then the
+ * arrays are NULL). Returns the tree's depth, which the kernels' stack
+ * (CSG_TREE_STACK) must hold (lower_csg_tree.c). */
+int lower_csg_tree(const dev_prim *boxes, int n, dev_prim **nodes, int *n_nodes, int **list, int *root);
+/* A CSG object's program (CSG_LEAF_BOXED for the leaves whose insides lie
+ * within their boxes) as the kernels run it, into *out: its chains rebalanced
+ * and CSG_SKIP before the parts the kernels may skip (lower_csg_program.c);
+ * boxes: the leaves' box records, the first n_seen those of the leaves rays
+ * may meet (the leaf tree's). Returns its depth (more than CSG_STACK: keep ops). */
+int lower_csg_program(const int *ops, int n, const dev_prim *boxes, int n_seen, csg_prog *out);
 /* The inverse of an affine transform; -1 when it is singular. */
 int lower_invert(const xform *t, xform *inv);
 

@@ -18,7 +18,12 @@
  * closed mesh2 with inside_vector, inside by the parity of its crossings: the
  * box's inside; the box's mesh without one and a parametric square, with no
  * inside and only their nearest hit along a ray, as POV-Ray's mesh and
- * parametric give a CSG), and one ok/FAIL line a case: every closest hit of its
+ * parametric give a CSG), then CSG objects of 50 to 140 leaves (spheres,
+ * boxes and cylinders, three levels deep, some parts clipped_by a sphere),
+ * whose hits come through the kernels' tree over the leaves' boxes and whose
+ * classifications skip parts of the program where no leaf's box holds the
+ * point (a traversal that loses a subtree, or a skip taken wrongly, fails
+ * them), and one ok/FAIL line a case: every closest hit of its
  * rays agrees, except rays whose reference hit lies within a hair of another
  * leaf's surface or grazes one, where single precision may go either way,
  * and the host's inside (each leaf's class in double, as trace() and inside()
@@ -46,12 +51,12 @@ static double range(double lo, double hi)
 
 /* ---- the tree and its reference ---- */
 
-enum { SPHERE, BOX, MESH_BOX, OPEN_MESH, SHEET, UNION, MERGE, INTERSECTION, DIFFERENCE };
-static const char *const names[] = { "sphere", "box", "mesh box", "open mesh", "parametric square", "union", "merge",
-                                     "intersection", "difference" };
+enum { SPHERE, BOX, MESH_BOX, OPEN_MESH, SHEET, CYLINDER, UNION, MERGE, INTERSECTION, DIFFERENCE };
+static const char *const names[] = { "sphere", "box", "mesh box", "open mesh", "parametric square", "cylinder",
+                                     "union", "merge", "intersection", "difference" };
 static int leaf_kinds = 2;   /* leaf() draws the first of these kinds */
 
-#define MAX_KIDS 3
+#define MAX_KIDS 16
 #define MAX_HITS 256
 
 struct node {
@@ -59,8 +64,10 @@ struct node {
 	bool inverse;
 	double c[3], r;           /* sphere */
 	double lo[3], hi[3];      /* box, the meshes; a parametric square at z = c[2] */
+	double e[3];              /* cylinder: from c to e, radius r */
 	struct node *kid[MAX_KIDS];
 	int n_kids;
+	struct node *clip;        /* clipped_by { this leaf }, or NULL */
 };
 
 struct hits {
@@ -71,6 +78,19 @@ struct hits {
 static double dot3(const double a[3], const double b[3])
 {
 	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* A cylinder's axis (unit) and length, and x's distance along it and from it. */
+static void cylinder_frame(const struct node *n, const double x[3], double u[3], double *len, double *s, double *rho)
+{
+	double v[3] = { n->e[0] - n->c[0], n->e[1] - n->c[1], n->e[2] - n->c[2] };
+	*len = sqrt(dot3(v, v));
+	for (int k = 0; k < 3; k++)
+		u[k] = v[k] / *len;
+	double w[3] = { x[0] - n->c[0], x[1] - n->c[1], x[2] - n->c[2] };
+	*s = dot3(w, u);
+	double r2 = dot3(w, w) - *s * *s;
+	*rho = sqrt(r2 > 0 ? r2 : 0);
 }
 
 /* How far x is from the leaf's surface, roughly: for the margins. */
@@ -85,6 +105,14 @@ static double surface_distance(const struct node *n, const double x[3])
 		double v[3] = { x[0] - n->c[0], x[1] - n->c[1], x[2] - n->c[2] };
 		return fabs(sqrt(dot3(v, v)) - n->r);
 	}
+	if (n->kind == CYLINDER) {
+		double u[3], len, s, rho;
+		cylinder_frame(n, x, u, &len, &s, &rho);
+		double ds = fmax(0, fmax(-s, s - len)), dr = fmax(0, rho - n->r);
+		if (ds == 0 && dr == 0)
+			return fmin(n->r - rho, fmin(s, len - s));
+		return sqrt(ds * ds + dr * dr);
+	}
 	if (n->kind == BOX || n->kind == MESH_BOX || n->kind == OPEN_MESH) {
 		double inside = INFINITY, out = 0;
 		for (int k = 0; k < 3; k++) {
@@ -94,7 +122,7 @@ static double surface_distance(const struct node *n, const double x[3])
 		}
 		return out > 0 ? out : inside;
 	}
-	double d = INFINITY;
+	double d = n->clip ? surface_distance(n->clip, x) : INFINITY;
 	for (int i = 0; i < n->n_kids; i++)
 		d = fmin(d, surface_distance(n->kid[i], x));
 	return d;
@@ -106,6 +134,10 @@ static bool inside(const struct node *n, const double x[3])
 	if (n->kind == SPHERE) {
 		double v[3] = { x[0] - n->c[0], x[1] - n->c[1], x[2] - n->c[2] };
 		in = dot3(v, v) < n->r * n->r;
+	} else if (n->kind == CYLINDER) {
+		double u[3], len, s, rho;
+		cylinder_frame(n, x, u, &len, &s, &rho);
+		in = s > 0 && s < len && rho < n->r;
 	} else if (n->kind == OPEN_MESH || n->kind == SHEET) {
 		in = false;
 	} else if (n->kind == BOX || n->kind == MESH_BOX) {
@@ -121,6 +153,7 @@ static bool inside(const struct node *n, const double x[3])
 		for (int i = 0; i < n->n_kids; i++)
 			in = in || inside(n->kid[i], x);
 	}
+	in = in && (!n->clip || inside(n->clip, x));   /* a clipped object is only inside its clip */
 	return in != n->inverse;
 }
 
@@ -148,6 +181,31 @@ static void all_hits(const struct node *n, const double o[3], const double d[3],
 			add(out, t);
 		return;
 	}
+	if (n->kind == CYLINDER) {   /* its side between the caps, and the caps within the radius */
+		double u[3], len, s0, rho;
+		cylinder_frame(n, o, u, &len, &s0, &rho);
+		double w[3] = { o[0] - n->c[0], o[1] - n->c[1], o[2] - n->c[2] }, du = dot3(d, u);
+		double pd[3], pw[3];
+		for (int k = 0; k < 3; k++) {
+			pd[k] = d[k] - du * u[k];
+			pw[k] = w[k] - s0 * u[k];
+		}
+		double a = dot3(pd, pd), b = dot3(pd, pw), c = dot3(pw, pw) - n->r * n->r, disc = b * b - a * c;
+		if (a > 0 && disc >= 0)
+			for (int sign = -1; sign <= 1; sign += 2) {
+				double t = (-b + sign * sqrt(disc)) / a, s = s0 + t * du;
+				if (s >= 0 && s <= len)
+					add(out, t);
+			}
+		for (int cap = 0; cap < 2 && du != 0; cap++) {
+			double t = ((cap ? len : 0) - s0) / du, x[3];
+			for (int k = 0; k < 3; k++)
+				x[k] = pw[k] + t * pd[k];
+			if (dot3(x, x) <= n->r * n->r)
+				add(out, t);
+		}
+		return;
+	}
 	if (n->kind == BOX || n->kind == MESH_BOX || n->kind == OPEN_MESH) {
 		double t0 = -INFINITY, t1 = INFINITY;
 		for (int k = 0; k < 3; k++) {
@@ -167,7 +225,7 @@ static void all_hits(const struct node *n, const double o[3], const double d[3],
 		all_hits(n->kid[i], o, d, &h);
 		for (int j = 0; j < h.n; j++) {
 			double x[3] = { o[0] + h.t[j] * d[0], o[1] + h.t[j] * d[1], o[2] + h.t[j] * d[2] };
-			bool keep = true;
+			bool keep = !n->clip || inside(n->clip, x);
 			for (int k = 0; k < n->n_kids && keep; k++) {
 				if (k == i)
 					continue;
@@ -203,6 +261,26 @@ static bool grazes(const struct node *n, const double o[3], const double d[3])
 			t1 = fmin(t1, fmax(a, b));
 		}
 		return fabs(t1 - t0) < 1e-4;
+	}
+	if (n->kind == CYLINDER) {   /* tangent to its side, or through a rim */
+		double u[3], len, s0, rho;
+		cylinder_frame(n, o, u, &len, &s0, &rho);
+		double w[3] = { o[0] - n->c[0], o[1] - n->c[1], o[2] - n->c[2] }, du = dot3(d, u), pd[3], pw[3];
+		for (int k = 0; k < 3; k++) {
+			pd[k] = d[k] - du * u[k];
+			pw[k] = w[k] - s0 * u[k];
+		}
+		double a = dot3(pd, pd), b = dot3(pd, pw), c = dot3(pw, pw) - n->r * n->r, disc = b * b - a * c;
+		if (fabs(disc) < 1e-5)
+			return true;
+		for (int cap = 0; cap < 2 && du != 0; cap++) {
+			double t = ((cap ? len : 0) - s0) / du, x[3];
+			for (int k = 0; k < 3; k++)
+				x[k] = pw[k] + t * pd[k];
+			if (fabs(sqrt(dot3(x, x)) - n->r) < 1e-4)
+				return true;
+		}
+		return false;
 	}
 	for (int i = 0; i < n->n_kids; i++)
 		if (grazes(n->kid[i], o, d))
@@ -244,7 +322,64 @@ static void free_tree(struct node *n)
 {
 	for (int i = 0; i < n->n_kids; i++)
 		free_tree(n->kid[i]);
+	if (n->clip)
+		free_tree(n->clip);
 	free(n);
+}
+
+/* A sphere, box or cylinder about centre, of the size scale. */
+static struct node *small_leaf(const double centre[3], double scale)
+{
+	struct node *n = calloc(1, sizeof *n);
+	n->kind = (int[]){ SPHERE, BOX, CYLINDER }[(int)(cast_uniform() * 3)];
+	for (int k = 0; k < 3; k++)
+		n->c[k] = centre[k] + scale * range(-0.2, 0.2);
+	n->r = scale * range(0.3, 0.6);
+	for (int k = 0; k < 3; k++) {
+		double h = scale * range(0.25, 0.5);
+		n->lo[k] = n->c[k] - h;
+		n->hi[k] = n->c[k] + h;
+		n->e[k] = n->c[k] + scale * range(-0.8, 0.8);   /* a cylinder's other end */
+	}
+	return n;
+}
+
+/* A CSG of many leaves about centre, depth levels deep: each part a leaf or
+ * a CSG of two to four parts of half the size about a point near it (an
+ * intersection's parts closer together, so that they overlap); some parts
+ * clipped_by a sphere about them, and some of an intersection's inverse (an
+ * inverse part elsewhere would leave little to see). */
+static struct node *many_tree(int kind, const double centre[3], double scale, int n_kids, int depth, int parent)
+{
+	struct node *n = calloc(1, sizeof *n);
+	n->kind = kind;
+	n->n_kids = n_kids;
+	double spread = kind == INTERSECTION ? 0.1 : depth == 3 ? 0.5 : 0.25;
+	for (int i = 0; i < n_kids; i++) {
+		double c[3];
+		for (int k = 0; k < 3; k++)
+			c[k] = centre[k] + scale * range(-spread, spread);
+		n->kid[i] = depth > 1 && cast_uniform() < 0.7
+		          ? many_tree(UNION + (int)(cast_uniform() * 4), c, scale * 0.5, 2 + (int)(cast_uniform() * 3), depth - 1,
+		                      kind)
+		          : small_leaf(c, scale * 0.5);
+	}
+	if (depth < 3 && cast_uniform() < 0.25) {
+		n->clip = small_leaf(centre, scale);
+		n->clip->kind = SPHERE;
+		n->clip->r = scale * range(0.3, 0.6);
+	} else {
+		n->inverse = parent == INTERSECTION && cast_uniform() < 0.3;
+	}
+	return n;
+}
+
+static int count_leaves(const struct node *n)
+{
+	int c = n->n_kids ? 0 : 1;
+	for (int i = 0; i < n->n_kids; i++)
+		c += count_leaves(n->kid[i]);
+	return c + (n->clip != NULL);
 }
 
 /* A box of 12 triangles, with the inside_vector or without. */
@@ -273,11 +408,19 @@ static void write_node(FILE *f, const struct node *n)
 	else if (n->kind == BOX)
 		fprintf(f, "box { <%.17g, %.17g, %.17g>, <%.17g, %.17g, %.17g>", n->lo[0], n->lo[1], n->lo[2], n->hi[0],
 		        n->hi[1], n->hi[2]);
+	else if (n->kind == CYLINDER)
+		fprintf(f, "cylinder { <%.17g, %.17g, %.17g>, <%.17g, %.17g, %.17g>, %.17g", n->c[0], n->c[1], n->c[2],
+		        n->e[0], n->e[1], n->e[2], n->r);
 	else
 		fprintf(f, "%s {\n", names[n->kind]);
 	for (int i = 0; i < n->n_kids; i++) {
 		write_node(f, n->kid[i]);
 		fputc('\n', f);
+	}
+	if (n->clip) {
+		fputs("clipped_by { ", f);
+		write_node(f, n->clip);
+		fputs(" }", f);
 	}
 	fprintf(f, "%s }", n->inverse ? " inverse" : "");
 }
@@ -468,6 +611,27 @@ int main(int argc, char **argv)
 		struct node *t = tree(UNION + i % 4, 3);
 		snprintf(what, sizeof what, "tree %d with meshes (%s, three deep)", i, names[UNION + i % 4]);
 		run_case(&dev, prog, what, t, n_rays / 4);
+		free_tree(t);
+	}
+	for (int i = 0; i < 8; i++) {   /* many leaves, so that the leaf tree and the program's skips matter */
+		char what[96];
+		double centre[3] = { 0, 0, 0 };
+		struct node *t;
+		do {
+			t = many_tree(i % 2 ? DIFFERENCE : UNION + i / 2 % 4, centre, 2.0, MAX_KIDS, 3, -1);
+			if (i % 2)
+				t->kid[0] = (free_tree(t->kid[0]), small_leaf(centre, 5.0));   /* a large first part, drilled */
+			if (t->kind == INTERSECTION) {   /* of many parts would be empty: of a union and a merge of them */
+				t->n_kids = 2;
+				for (int k = 0; k < MAX_KIDS; k++)
+					if (k < 2)
+						t->kid[k] = (free_tree(t->kid[k]), many_tree(UNION + k, centre, 2.0, MAX_KIDS / 2, 3, -1));
+					else
+						free_tree(t->kid[k]);
+			}
+		} while (count_leaves(t) < 40 && (free_tree(t), 1));
+		snprintf(what, sizeof what, "many %d (%s, %d leaves, three deep)", i, names[t->kind], count_leaves(t));
+		run_case(&dev, prog, what, t, n_rays / 2);
 		free_tree(t);
 	}
 	clReleaseProgram(prog);
