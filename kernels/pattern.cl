@@ -242,6 +242,22 @@ static inline float pattern_warp_turn(float x, float z, float len)
 	return theta / (2.0f * PATTERN_PI);
 }
 
+/* A mapping warp's surface coordinates (x, y) and distance z: both
+ * coordinates scaled by the distance to the power dist_exp (0: not at all),
+ * then turned to the warp's orientation, as POV-Ray's warps end. */
+static inline float3 pattern_warp_oriented(global const dev_warp *w, float x, float y, float z, float dist_exp)
+{
+	if (dist_exp != 0.0f) {
+		float k = dist_exp == 1.0f ? z : pow(z, dist_exp);
+		x *= k;
+		y *= k;
+	}
+	float3 o = w->a.xyz;
+	if (o.x == 0.0f && o.y == 0.0f && o.z == 1.0f)
+		return (float3)(x, y, z);
+	return (float3)(o.x * z + o.y * x + o.z * x, o.x * y - o.y * z + o.z * y, -o.x * x + o.y * y + o.z * z);
+}
+
 /* POV-Ray 3.7's mapping warps (warps.cpp): the surface's coordinates into x and
  * y, the distance into z, then turned to the orientation. A point on the
  * axis (or at the centre) stays where it is, as POV-Ray leaves it. */
@@ -264,18 +280,18 @@ static float3 pattern_warp_mapping(global const dev_warp *w, float3 p)
 			return (float3)(0.25f + 0.25f * (x / -y + 1.0f) / 2.0f, (z / -y + 1.0f) / 6.0f, -y);
 		return (float3)(1.0f - 0.25f * (x / -z + 1.0f) / 2.0f, 1.0f / 3.0f + (y / -z + 1.0f) / 6.0f, -z);
 	}
-	if (w->kind == WARP_PLANAR) {
-		z = dist_exp;   /* the offset */
-	} else if (w->kind == WARP_CYLINDRICAL) {
+	if (w->kind == WARP_PLANAR)
+		return pattern_warp_oriented(w, x, y, dist_exp, 0.0f);   /* dist_exp holds the offset */
+	if (w->kind == WARP_CYLINDRICAL) {
 		float len = sqrt(x * x + z * z);
 		if (len == 0.0f)
 			return p;
 		float theta = pattern_warp_turn(x, z, len);
 		if (dist_exp != 0.0f)
 			theta *= dist_exp == 1.0f ? len : pow(len, dist_exp);
-		x = theta;
-		z = len;
-	} else if (w->kind == WARP_SPHERICAL) {
+		return pattern_warp_oriented(w, theta, y, len, 0.0f);
+	}
+	if (w->kind == WARP_SPHERICAL) {
 		float dist = sqrt(x * x + y * y + z * z);
 		if (dist == 0.0f)
 			return p;
@@ -284,38 +300,18 @@ static float3 pattern_warp_mapping(global const dev_warp *w, float3 p)
 		z /= dist;
 		float phi = 0.5f + asin(clamp(y, -1.0f, 1.0f)) / PATTERN_PI, len = sqrt(x * x + z * z);
 		float theta = len == 0.0f ? 0.0f : pattern_warp_turn(x, z, len);
-		if (dist_exp != 0.0f) {
-			float k = dist_exp == 1.0f ? dist : pow(dist, dist_exp);
-			theta *= k;
-			phi *= k;
-		}
-		x = theta;
-		y = phi;
-		z = dist;
-	} else {   /* toroidal */
-		float len = sqrt(x * x + z * z);
-		if (len == 0.0f)
-			return p;
-		float theta = pattern_warp_turn(x, z, len);
-		float rx = len - w->b.x;
-		len = sqrt(rx * rx + y * y);
-		float phi = len == 0.0f ? 0.0f : acos(clamp(-rx / len, -1.0f, 1.0f));   /* on the core circle: 0 */
-		if (y > 0.0f)
-			phi = 2.0f * PATTERN_PI - phi;
-		phi /= 2.0f * PATTERN_PI;
-		if (dist_exp != 0.0f) {
-			float k = dist_exp == 1.0f ? len : pow(len, dist_exp);
-			theta *= k;
-			phi *= k;
-		}
-		x = theta;
-		y = phi;
-		z = len;
+		return pattern_warp_oriented(w, theta, phi, dist, dist_exp);
 	}
-	float3 o = w->a.xyz;
-	if (o.x == 0.0f && o.y == 0.0f && o.z == 1.0f)
-		return (float3)(x, y, z);
-	return (float3)(o.x * z + o.y * x + o.z * x, o.x * y - o.y * z + o.z * y, -o.x * x + o.y * y + o.z * z);
+	float len = sqrt(x * x + z * z);   /* toroidal */
+	if (len == 0.0f)
+		return p;
+	float theta = pattern_warp_turn(x, z, len);
+	float rx = len - w->b.x;
+	len = sqrt(rx * rx + y * y);
+	float phi = len == 0.0f ? 0.0f : acos(clamp(-rx / len, -1.0f, 1.0f));   /* on the core circle: 0 */
+	if (y > 0.0f)
+		phi = 2.0f * PATTERN_PI - phi;
+	return pattern_warp_oriented(w, theta, phi / (2.0f * PATTERN_PI), len, dist_exp);
 }
 
 static inline float3 pattern_warp(global const dev_warp *w, float3 p)
