@@ -984,6 +984,19 @@ int eval_pattern_points(struct eval *e, src_loc loc, int pigment, bool colour, i
 	return rc;
 }
 
+/* The point x, y, z a pattern, pigment or transform function is called at. */
+static int point_arguments(struct eval *e, const ast_node *call, double p[3])
+{
+	if (call->n_kids != 3) {
+		eval_error(e, call->loc, "function '%s' takes 3 arguments, not %d", call->str, call->n_kids);
+		return -1;
+	}
+	for (int i = 0; i < 3; i++)
+		if (eval_expect_float(e, call->kids[i], &p[i]))
+			return -1;
+	return 0;
+}
+
 /* A pattern function's value (a float) or a pigment function's colour at the
  * call's point, from the kernels (eval_pattern_points): POV-Ray evaluates
  * them wherever the scene calls them. Function patterns nested deeper than
@@ -996,21 +1009,17 @@ static int pattern_function(struct eval *e, const ast_node *call, const value *f
 		           "the scene", call->str, colour ? "pigment" : "pattern");
 		return -1;
 	}
-	if (call->n_kids != 3) {
-		eval_error(e, call->loc, "function '%s' takes 3 arguments, not %d", call->str, call->n_kids);
-		return -1;
-	}
 	double p[3], c[5] = { 0 };
-	for (int i = 0; i < 3; i++)
-		if (eval_expect_float(e, call->kids[i], &p[i]))
-			return -1;
+	if (point_arguments(e, call, p))
+		return -1;
 	const scene_material *m = &fn->mat;
+	int levels = m->pattern < 0 ? 0 : scene_pigment_levels(e->s, m->pattern);
 	if (m->pattern < 0) {   /* a colour: a pattern function of it is 0, as POV-Ray's */
 		for (int i = 0; colour && i < 5; i++)
 			c[i] = m->pigment[i];
-	} else if (scene_pigment_levels(e->s, m->pattern) >= SCENE_FUNCTION_LEVELS_MAX) {
+	} else if (levels >= SCENE_FUNCTION_LEVELS_MAX) {
 		eval_error(e, call->loc, "'%s' runs function patterns nested %d deep, more than eclat's kernels run (%d)",
-		           call->str, scene_pigment_levels(e->s, m->pattern), SCENE_FUNCTION_LEVELS_MAX - 1);
+		           call->str, levels, SCENE_FUNCTION_LEVELS_MAX - 1);
 		return -1;
 	} else if (eval_pattern_points(e, call->loc, m->pattern, colour, 1, p, c)) {
 		return -1;
@@ -1029,14 +1038,9 @@ static int pattern_function(struct eval *e, const ast_node *call, const value *f
 static int transform_function(struct eval *e, const ast_node *call, const value *fn, const ast_node *b,
                               value *out)
 {
-	if (call->n_kids != 3) {
-		eval_error(e, call->loc, "function '%s' takes 3 arguments, not %d", call->str, call->n_kids);
-		return -1;
-	}
 	double p[3], q[3];
-	for (int i = 0; i < 3; i++)
-		if (eval_expect_float(e, call->kids[i], &p[i]))
-			return -1;
+	if (point_arguments(e, call, p))
+		return -1;
 	ast_node item = { .kind = AST_BLOCK, .kw = KW_TRANSFORM, .loc = b->loc, .kids = b->kids, .n_kids = b->n_kids };
 	xform t = scene_xform_identity();
 	int pushed = eval_env_push(e, fn->env);

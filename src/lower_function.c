@@ -296,9 +296,8 @@ char *lower_function_source_reading(const scene *s, const int *roots, int read)
 	/* the deeper levels' pattern readers (function_pattern.cl's macros) */
 	for (int level = 2; level <= levels; level++) {
 		if (level < levels)
-			put(&t, "FUNCTION_PATTERN_AT(%d)\n", level + 1);
-		if (level < levels)
-			put(&t, "FUNCTION_PATTERN_LEVEL(_%d, pattern_at_%d)\n", level, level + 1);
+			put(&t, "FUNCTION_PATTERN_AT(%d)\nFUNCTION_PATTERN_LEVEL(_%d, pattern_at_%d)\n", level + 1, level,
+			    level + 1);
 		else
 			put(&t, "FUNCTION_PATTERN_LEVEL(_%d, function_plain_at)\n", level);
 	}
