@@ -43,7 +43,8 @@ struct objval {
 	struct lightval *lights;
 	int n_lights;
 	bool compound;
-	bool has_mat;
+	bool has_mat;            /* mat's texture is the compound's own */
+	bool has_interior;       /* mat's interior is the compound's own */
 	scene_material mat;
 	bool uv;                  /* uv_mapping written (before the texture): its textures are uv_mapped */
 	const char *unsupported;  /* a POV-Ray object eclat cannot render: its name */

@@ -208,10 +208,10 @@ static void transform_objval(struct objval *o, const xform *t)
 			o->objs[i].material.tex_xf = scene_xform_then(&o->objs[i].material.tex_xf, t);
 		o->objs[i].material.interior_xf = scene_xform_then(&o->objs[i].material.interior_xf, t);
 	}
-	if (o->has_mat) {
+	if (o->has_mat)
 		o->mat.tex_xf = scene_xform_then(&o->mat.tex_xf, t);
+	if (o->has_mat || o->has_interior)
 		o->mat.interior_xf = scene_xform_then(&o->mat.interior_xf, t);
-	}
 	for (int i = 0; i < o->n_lights; i++)
 		transform_light(&o->lights[i], t);
 	if (o->bound)
@@ -220,30 +220,59 @@ static void transform_objval(struct objval *o, const xform *t)
 
 /* ---- modifiers ---- */
 
-/* A union's texture goes to its parts that have none of their own. This happens
+/* m takes tex's texture and keeps its own interior: an object's texture and
+ * its interior are given, and passed down to a union's parts, apart. */
+static void take_texture(scene_material *m, const scene_material *tex)
+{
+	scene_material own = *m;
+	*m = *tex;
+	eval_apply_value(&(value){ .kind = V_INTERIOR, .mat = own }, m);
+	m->interior_xf = own.interior_xf;
+}
+
+/* A union's texture goes to its parts that have none of their own, and its
+ * interior to those without theirs (POV-Ray's Post_Process). This happens
  * when the union is used (placed in the scene or in another union), so that
  * object { U pigment { ... } } still changes the texture of U's bare parts. */
 static void resolve_texture(struct objval *o)
 {
-	for (int i = 0; o->compound && o->has_mat && i < o->n_objs; i++)
-		if (!o->objs[i].textured) {
-			o->objs[i].material = o->mat;
-			o->objs[i].textured = true;
+	for (int i = 0; o->compound && i < o->n_objs; i++) {
+		scene_object *c = &o->objs[i];
+		if (o->has_mat && !c->textured) {
+			if (c->interior_set)
+				take_texture(&c->material, &o->mat);
+			else
+				c->material = o->mat;
+			c->textured = true;
 		}
-	o->has_mat = false;
+		if (o->has_interior && !c->interior_set) {
+			eval_apply_value(&(value){ .kind = V_INTERIOR, .mat = o->mat }, &c->material);
+			c->material.interior_xf = o->mat.interior_xf;
+			c->interior_set = true;
+		}
+	}
+	o->has_mat = o->has_interior = false;
+}
+
+/* The one shape whose texture and interior an object's modifiers change (its
+ * clipped_by shapes are not seen), or -1 for a compound's own. */
+static int own_shape(const struct objval *o)
+{
+	int shape = -1, shapes = 0;
+	for (int i = 0; !o->compound && i < o->n_objs; i++)
+		if (!o->objs[i].clip) {
+			shape = i;
+			shapes++;
+		}
+	return shapes == 1 ? shape : -1;
 }
 
 /* The texture a pigment, finish or texture modifies: a single shape's own, else
  * the union's, which its bare parts take. */
 static scene_material *target(struct eval *e, struct objval *o, bool *textured)
 {
-	int shape = -1, shapes = 0;   /* a shape's own (its clipped_by shapes are not seen) */
-	for (int i = 0; !o->compound && i < o->n_objs; i++)
-		if (!o->objs[i].clip) {
-			shape = i;
-			shapes++;
-		}
-	if (shapes == 1) {
+	int shape = own_shape(o);
+	if (shape >= 0) {
 		scene_material *m = &o->objs[shape].material;
 		*textured = o->objs[shape].textured;
 		if (!*textured)   /* POV-Ray copies the #default in effect now, not the one at the shape's making */
@@ -252,9 +281,29 @@ static scene_material *target(struct eval *e, struct objval *o, bool *textured)
 		return m;
 	}
 	*textured = o->has_mat;
-	if (!o->has_mat)
-		o->mat = e->default_mat;
+	if (!o->has_mat) {
+		if (o->has_interior)
+			take_texture(&o->mat, &e->default_mat);
+		else
+			o->mat = e->default_mat;
+	}
 	o->has_mat = true;
+	return &o->mat;
+}
+
+/* The interior an interior modifies: a single shape's own, else the
+ * compound's, for its parts that have none. It leaves the texture as it is:
+ * a texture written after it replaces the default rather than layering on it. */
+static scene_material *interior_target(struct eval *e, struct objval *o)
+{
+	int shape = own_shape(o);
+	if (shape >= 0) {
+		o->objs[shape].interior_set = true;
+		return &o->objs[shape].material;
+	}
+	if (!o->has_mat && !o->has_interior)
+		o->mat = e->default_mat;
+	o->has_interior = true;
 	return &o->mat;
 }
 
@@ -360,11 +409,20 @@ static void object_uv(scene_material *m)
 
 static int material_modifier(struct eval *e, const ast_node *item, struct objval *o)
 {
+	if (item->kw == KW_INTERIOR)
+		return eval_material_block(e, item, interior_target(e, o));
 	bool textured;
 	scene_material *m = target(e, o, &textured);
+	if (item->kw == KW_MATERIAL) {   /* its interior is the object's own from now */
+		int shape = own_shape(o);
+		if (shape >= 0)
+			o->objs[shape].interior_set = true;
+		else
+			o->has_interior = true;
+	}
 	if (item->kw != KW_TEXTURE && item->kw != KW_MATERIAL) {
 		int rc = eval_material_block(e, item, m);
-		if (o->uv && item->kw != KW_INTERIOR)
+		if (o->uv)
 			object_uv(m);
 		return rc;
 	}
@@ -1541,7 +1599,7 @@ void eval_place(struct eval *e, value *v)
 	for (int i = 0; i < o->n_objs; i++) {
 		o->objs[i].csg = 0;
 		if (!o->objs[i].textured)   /* POV-Ray's Post_Process: the default when it is placed */
-			o->objs[i].material = e->default_mat;
+			take_texture(&o->objs[i].material, &e->default_mat);
 		scene_add_object(e->s, &o->objs[i]);
 	}
 	for (int i = 0; i < o->n_csgs; i++) {

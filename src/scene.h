@@ -232,6 +232,8 @@ typedef struct {
 	xform xf;            /* object to world */
 	scene_material material;
 	bool textured;       /* false: takes the texture of an enclosing union, else the default */
+	bool interior_set;   /* false: takes the interior of an enclosing union (POV-Ray
+	                      * passes textures and interiors down apart) */
 	int flags;           /* OBJ_ */
 	src_loc loc;
 } scene_object;
