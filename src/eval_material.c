@@ -67,12 +67,16 @@ void eval_apply_value(const value *v, scene_material *m)
 		copy_pigment(m, &v->mat);
 		copy_finish(m, &v->mat);
 		m->normal = v->mat.normal;
+		m->normal_amount = v->mat.normal_amount;
 		m->texture_map = v->mat.texture_map;
 		m->layers = v->mat.layers;
 		m->uv = v->mat.uv;
 		m->uv_xf = v->mat.uv_xf;
 		break;
-	case V_NORMAL: m->normal = v->mat.normal; break;
+	case V_NORMAL:
+		m->normal = v->mat.normal;
+		m->normal_amount = v->mat.normal_amount;
+		break;
 	case V_INTERIOR: copy_interior(m, &v->mat); break;
 	case V_MATERIAL: *m = v->mat; break;
 	default: break;
@@ -1399,7 +1403,9 @@ static int entry_normal(struct eval *e, const ast_node *at, ast_node *const *kid
 		return -1;
 	}
 	ast_node body = { .kind = AST_BLOCK, .kw = KW_NORMAL, .loc = at->loc, .kids = (ast_node **)kids, .n_kids = n };
-	scene_material m = scene_default_material();
+	scene_material m = scene_default_material();   /* POV-Ray starts it from the #default normal */
+	m.normal = e->default_mat.normal;
+	m.normal_amount = e->default_mat.normal_amount;
 	if (normal_block(e, &body, &m))
 		return -1;
 	*normal = m.normal;
@@ -1490,6 +1496,38 @@ static void copy_normal(struct eval *e, struct pattern *p, int base_index, const
  * pattern of its own it modifies the normal m has (normal { slope_map { } }
  * after a texture's normal), as POV-Ray's does; a new pattern is placed by
  * its own transformations only, not by those m's texture took before it. */
+/* What a pattern written in a normal starts from: POV-Ray's Parse_Pattern
+ * changes only the kind of the normal it is given, which keeps its amount and
+ * its transformations and warps; a normal without a pattern yet gives the
+ * amount its bump_size set (#default { normal { bump_size 1.5 } }). */
+typedef struct {
+	double amount;
+	scene_warp warps[SCENE_MAX_WARPS];
+	int n_warps;
+} normal_base;
+
+static normal_base normal_base_of(const struct eval *e, const scene_material *m)
+{
+	normal_base nb = { .amount = m->normal_amount > 0 ? m->normal_amount : 0.5 };
+	if (m->normal >= 0 && m->normal < e->s->n_pigments) {
+		const scene_pigment *pg = &e->s->pigments[m->normal];
+		nb.amount = pg->bump_size;
+		nb.n_warps = pg->n_warps;
+		memcpy(nb.warps, pg->warps, sizeof nb.warps);
+	}
+	return nb;
+}
+
+static void normal_restart(scene_pigment *pg, const normal_base *nb)
+{
+	pg->bump_size = nb->amount;
+	pg->accuracy = 0.02;
+	if (nb->n_warps > 0 && pg->n_warps == 0) {
+		pg->n_warps = nb->n_warps;
+		memcpy(pg->warps, nb->warps, sizeof pg->warps);
+	}
+}
+
 static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 {
 	struct pattern p = { .kind = -1 };
@@ -1497,6 +1535,8 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 	int err = 0, rc = 0;
 	bool first = true, amount = false;
 	const ast_node *item;
+	const normal_base nb = normal_base_of(e, m);
+	double bare_amount = 0;   /* bump_size in a normal without a pattern */
 	if (m->normal >= 0 && m->normal < e->s->n_pigments)
 		copy_normal(e, &p, m->normal, b);
 	eval_cursor_init(&c, e, b);
@@ -1508,8 +1548,7 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		}
 		if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_BUMP_MAP) == 0) {
 			start_pattern(&p, item, AST_WORD_BUMP_MAP);
-			p.pg.bump_size = 0.5;   /* its bump_size, or the amount after it, may change it */
-			p.pg.accuracy = 0.02;
+			normal_restart(&p.pg, &nb);   /* its bump_size, or the amount after it, may change it */
 			amount = false;
 			rc = eval_bump_map(e, item, &p.pg);
 			first = false;
@@ -1524,10 +1563,8 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 			}
 		} else if ((rc = pattern_start(e, &c, item, &p)) <= 0) {
 			amount = false;
-			if (rc == 0 && p.kind > 0) {
-				p.pg.bump_size = 0.5;
-				p.pg.accuracy = 0.02;
-			}
+			if (rc == 0 && p.kind > 0)
+				normal_restart(&p.pg, &nb);
 		} else if (p.at && p.kind > 0 && (rc = normal_item(e, &c, item, &p, &amount)) <= 0) {
 			;
 		} else if (p.at && p.kind > 0 && item->kind == AST_BLOCK && item->kw == KW_UNKNOWN &&
@@ -1537,8 +1574,13 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 			;
 		} else if ((rc = image_pattern_block(e, item, &p)) <= 0) {
 			amount = false;
-			p.pg.bump_size = 0.5;
-			p.pg.accuracy = 0.02;
+			normal_restart(&p.pg, &nb);
+		} else if (!(p.at && p.kind > 0) && item->kind == AST_IDENT && !eval_lookup(e, item->str) &&
+		           strcmp(item->str, AST_WORD_BUMP_SIZE) == 0) {
+			const ast_node *arg = eval_next_expr(&c, &err);
+			if (!arg && !err)
+				eval_error(e, item->loc, "'bump_size' needs a value");
+			rc = arg ? eval_expect_float(e, arg, &bare_amount) : -1;
 		} else if ((rc = pattern_word(e, &c, item, &p)) <= 0) {
 			;   /* a pattern eclat does not have (warned below), or another POV-Ray word (warned) */
 		} else if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
@@ -1580,6 +1622,8 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 	p.pg.uv |= p.uv;
 	xform id = scene_xform_identity();
 	bool moved = p.at != b && m->uv == SCENE_UV_NONE && !p.pg.uv && memcmp(&m->tex_xf, &id, sizeof id) != 0;
+	if (!(p.at && p.kind > 0) && bare_amount != 0)
+		m->normal_amount = (float)bare_amount;
 	if (p.at && p.kind > 0) {
 		m->normal = scene_add_pigment(e->s, &p.pg);
 		if (moved) {   /* so that tex_xf brings it back to where it is written */

@@ -109,6 +109,9 @@ typedef struct {
 	                          * pattern, its average colour */
 	int pattern;             /* the pattern pigment (scene.pigments), or -1: pigment[] */
 	int normal;              /* the normal's pattern (scene.pigments), or -1: none */
+	float normal_amount;     /* a normal without a pattern yet (#default { normal {
+	                          * bump_size 1.5 } }): the amount its pattern starts
+	                          * with when one is written; 0: POV-Ray's 0.5 */
 	xform tex_xf;            /* the texture's space to world (to the mesh's space for a
 	                          * mesh's own textures): the transformations written after it */
 	int uv;                  /* SCENE_UV_: whether its patterns are uv_mapped, and how placed */
