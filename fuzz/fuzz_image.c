@@ -78,7 +78,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		free(d.rgba);
 		unsigned char *idx;
 		int w, h;
-		if (image_png_indices(path, &lim, &idx, &w, &h)) {
+		if (image_indices(path, &lim, &idx, &w, &h)) {
 			if (w != d.width || h != d.height)
 				abort();
 			free(idx);

@@ -41,7 +41,7 @@ int image_read(const char *path, const image_limits *lim, image_data *out, char 
 	return -1;
 }
 
-int image_png_indices(const char *path, const image_limits *lim, unsigned char **out, int *width, int *height)
+int image_indices(const char *path, const image_limits *lim, unsigned char **out, int *width, int *height)
 {
 	(void)path, (void)lim, (void)width, (void)height;
 	*out = NULL;

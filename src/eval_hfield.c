@@ -7,7 +7,9 @@
  * places it). As in POV-Ray:
  *  - the image's bottom row is z = 0;
  *  - a height is a 16-bit value over 65536: an indexed image's palette index
- *    times 256 (a PNG's, through libpng); an 8-bit colour image's red is its
+ *    times 256 (a PNG's or a GIF's, through libpng or giflib); a POT file's
+ *    (Fractint's: a GIF twice as wide as its heights) left half's index times
+ *    256 plus its right half's (gif.cpp); an 8-bit colour image's red is its
  *    high byte and green its low byte; a grey image, or one of more than 8 bits,
  *    gives its grey value times 65535 (imageutil.cpp's image_height_at);
  *  - a function's image has the function's value at x = column / (W - 1) and
@@ -41,7 +43,8 @@ static int claim_grid(struct eval *e, src_loc loc, int w, int h)
 }
 
 /* The grid's heights (0 .. 65535), bottom row first, from the image file. */
-static int image_heights(struct eval *e, const ast_node *at, const char *name, double **h, int *w, int *hh)
+static int image_heights(struct eval *e, const ast_node *at, const char *name, bool pot, double **h, int *w,
+                         int *hh)
 {
 	char *path = eval_find_file(e, at->loc.file, name);
 	const char *use = path ? path : name;
@@ -58,12 +61,20 @@ static int image_heights(struct eval *e, const ast_node *at, const char *name, d
 		return -1;
 	}
 	unsigned char *index = NULL;
-	int iw, ih;
-	if (!image_png_indices(use, &lim, &index, &iw, &ih) || iw != d.width || ih != d.height) {
+	int iw, ih, kind = image_indices(use, &lim, &index, &iw, &ih);
+	if (!kind || iw != d.width || ih != d.height) {
 		free(index);
 		index = NULL;
 	}
 	free(path);
+	if (pot && (!index || kind != IMAGE_INDICES_GIF || d.width % 2 != 0)) {   /* POV-Ray: "Invalid width for POT file" */
+		eval_error(e, at->loc, "'%s' is no POT file (a GIF twice as wide as its heights)", name);
+		free(d.rgba);
+		free(index);
+		return -1;
+	}
+	int half = pot ? d.width / 2 : 0;   /* a POT's right half holds its heights' low bytes */
+	d.width -= half;
 	if (claim_grid(e, at->loc, d.width, d.height)) {
 		free(d.rgba);
 		free(index);
@@ -75,9 +86,10 @@ static int image_heights(struct eval *e, const ast_node *at, const char *name, d
 	bool grey = d.channels <= 2, deep = d.bits > 8;
 	for (int z = 0; z < d.height; z++)
 		for (int x = 0; x < d.width; x++) {
-			size_t at = (size_t)(d.height - 1 - z) * d.width + x;
+			size_t row = (size_t)(d.height - 1 - z) * (d.width + half), at = row + x;
 			const float *p = d.rgba + 4 * at;
-			double v = index ? index[at] * 256.0   /* POV-Ray's 256, not 257: its 3.6 heights */
+			double v = pot ? index[at] * 256.0 + index[at + half]
+			         : index ? index[at] * 256.0   /* POV-Ray's 256, not 257: its 3.6 heights */
 			         : grey ? p[0] * 65535.0
 			         : deep ? (0.297 * p[0] + 0.589 * p[1] + 0.114 * p[2]) * 65535.0   /* POV-Ray's Greyscale */
 			                : (p[0] * 256.0 + p[1]) * 255.0;
@@ -296,7 +308,7 @@ int eval_height_field_arguments(struct eval *e, struct cursor *c, const ast_node
 				eval_error(e, b->loc, "a height_field starts with its image file or its function");
 			return -1;
 		}
-		rc = image_heights(e, name, file, &h, &w, &hh);
+		rc = image_heights(e, name, file, typed && strcmp(t, "pot") == 0, &h, &w, &hh);
 		free(file);
 	}
 	if (rc < 0)

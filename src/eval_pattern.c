@@ -738,7 +738,7 @@ static void image_numbers(struct eval *e, const char *path, scene_image *im)
 	image_limits lim = { IMAGE_MAX_TEXELS, e->opt->mesh_time_limit, eval_memory_left(e) };
 	unsigned char *index = NULL;
 	int w, h;
-	bool indexed = image_png_indices(path, &lim, &index, &w, &h) && w == im->width && h == im->height;
+	bool indexed = image_indices(path, &lim, &index, &w, &h) && w == im->width && h == im->height;
 	long n = (long)im->width * im->height;
 	for (long i = 0; i < n; i++) {
 		float *c = &im->rgba[4 * i];

@@ -81,12 +81,14 @@ typedef struct {
 int image_read(const char *path, const image_limits *lim, image_data *out, char *err, size_t errlen);
 int image_read_here(const char *path, long max_texels, image_data *out, char *err, size_t errlen);
 
-/* A colormapped PNG's palette indices, top row first, one byte a pixel (free()
- * them): 1, or 0 when the file is no such PNG (or not one of at most max_texels
- * pixels, or unreadable: image_read says why). libpng (src/image_png.c), in a
- * child process as image_read's decoder is. */
-int image_png_indices(const char *path, const image_limits *lim, unsigned char **out, int *width, int *height);
-int image_png_indices_here(const char *path, long max_texels, unsigned char **out, int *width, int *height);
+/* A colormapped PNG's or a GIF's palette indices, top row first, one byte a
+ * pixel (free() them): IMAGE_INDICES_PNG or _GIF, or 0 when the file is no
+ * such image (or not one of at most max_texels pixels, or unreadable:
+ * image_read says why). libpng and giflib (src/image_indices.c), in a child
+ * process as image_read's decoder is. */
+enum { IMAGE_INDICES_PNG = 1, IMAGE_INDICES_GIF = 2 };
+int image_indices(const char *path, const image_limits *lim, unsigned char **out, int *width, int *height);
+int image_indices_here(const char *path, long max_texels, unsigned char **out, int *width, int *height);
 /* 1 when the extension of path names a format OpenImageIO can write. */
 int image_format_known(const char *path);
 /* 1 when that format can hold an alpha channel. */

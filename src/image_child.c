@@ -1,4 +1,4 @@
-/* image_child.c: image_read and image_png_indices, with OpenImageIO and libpng
+/* image_child.c: image_read and image_indices, with OpenImageIO and libpng
  * in a child process (src/loader.h): a decoder that crashes or hangs on a hostile
  * file makes an error that names the file, and eclat goes on. */
 #include <stdio.h>
@@ -97,7 +97,7 @@ struct indices_job {
 	const char *path;
 	long max_texels;
 	unsigned char *px;
-	int width, height;
+	int width, height, kind;
 };
 
 static int indices_work(int fd, void *arg)
@@ -105,7 +105,7 @@ static int indices_work(int fd, void *arg)
 	struct indices_job *j = arg;
 	int head[3] = { 0, 0, 0 };
 	unsigned char *px = NULL;
-	head[0] = image_png_indices_here(j->path, j->max_texels, &px, &head[1], &head[2]);
+	head[0] = image_indices_here(j->path, j->max_texels, &px, &head[1], &head[2]);
 	return loader_write(fd, head, sizeof head) ||
 	       (head[0] && loader_write(fd, px, (size_t)head[1] * head[2]));
 }
@@ -130,10 +130,11 @@ static int indices_take(int fd, void *arg, char *err, size_t errlen)
 	}
 	j->width = head[1];
 	j->height = head[2];
+	j->kind = head[0];
 	return 0;
 }
 
-int image_png_indices(const char *path, const image_limits *lim, unsigned char **out, int *width, int *height)
+int image_indices(const char *path, const image_limits *lim, unsigned char **out, int *width, int *height)
 {
 	*out = NULL;
 	if (loader_not_a_file(path))
@@ -141,12 +142,12 @@ int image_png_indices(const char *path, const image_limits *lim, unsigned char *
 	long max = lim->max_texels;
 	if (lim->max_bytes > 0 && lim->max_bytes < max)
 		max = (long)lim->max_bytes;   /* a byte a pixel */
-	struct indices_job j = { path, max, NULL, 0, 0 };
+	struct indices_job j = { path, max, NULL, 0, 0, 0 };
 	char err[LOADER_ERR_LEN];
-	if (loader_run("libpng", lim->time_limit, indices_work, indices_take, &j, err, sizeof err) || !j.px)
+	if (loader_run("libpng or giflib", lim->time_limit, indices_work, indices_take, &j, err, sizeof err) || !j.px)
 		return 0;   /* image_read, which ran first, reads the same file and says what is wrong */
 	*out = j.px;
 	*width = j.width;
 	*height = j.height;
-	return 1;
+	return j.kind == IMAGE_INDICES_GIF ? IMAGE_INDICES_GIF : IMAGE_INDICES_PNG;
 }
