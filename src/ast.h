@@ -397,6 +397,7 @@ enum kw_class {
 #define AST_WORD_TGA "tga"
 #define AST_WORD_PPM "ppm"
 #define AST_WORD_SYS "sys"
+#define AST_WORD_POT "pot"   /* a height field's Fractint file (eval_hfield.c) */
 /* polygon, prism, text and their words (eval_outline.c); open and sturm after
  * any shape that takes them (eval_object.c) */
 #define AST_WORD_POLYGON "polygon"

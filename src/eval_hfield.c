@@ -308,7 +308,7 @@ int eval_height_field_arguments(struct eval *e, struct cursor *c, const ast_node
 				eval_error(e, b->loc, "a height_field starts with its image file or its function");
 			return -1;
 		}
-		rc = image_heights(e, name, file, typed && strcmp(t, "pot") == 0, &h, &w, &hh);
+		rc = image_heights(e, name, file, typed && strcmp(t, AST_WORD_POT) == 0, &h, &w, &hh);
 		free(file);
 	}
 	if (rc < 0)
