@@ -29,13 +29,15 @@ static inline float image_turns(float c, float z)
 	return theta / (2.0f * PATTERN_PI);
 }
 
-/* One texel: POV-Ray's no_interpolation (once: the nearest edge texel, else wrapped). */
-static inline float4 image_texel(const scene_data *sc, global const dev_image *im, float x, float y, int once)
+/* One texel of plane 0 (the colours) or 1 (IMAGE_FILTER's filters): POV-Ray's
+ * no_interpolation (once: the nearest edge texel, else wrapped). */
+static inline float4 image_texel(const scene_data *sc, global const dev_image *im, int plane, float x, float y,
+                                 int once)
 {
 	int w = im->width, h = im->height;
 	int ix = once ? (x < 0.0f ? 0 : x >= (float)w ? w - 1 : (int)x) : (int)image_wrap(x, (float)w);
 	int iy = once ? (y < 0.0f ? 0 : y >= (float)h ? h - 1 : (int)y) : (int)image_wrap(y, (float)h);
-	return sc->texels[im->first + clamp(iy, 0, h - 1) * w + clamp(ix, 0, w - 1)];
+	return sc->texels[im->first + plane * w * h + clamp(iy, 0, h - 1) * w + clamp(ix, 0, w - 1)];
 }
 
 /* Where p (the pattern's space, warped) falls on pt's image, in texels, x to
@@ -87,16 +89,16 @@ static bool image_pos(const scene_data *sc, global const dev_pattern *pt, float3
 	return true;
 }
 
-/* The colour at texel position (x, y): the texel, or POV-Ray's interpolation
- * of four (2 bilinear, 4 normalized distance), unmultiplied by alpha where
- * the image is premultiplied. */
-static float4 image_at(const scene_data *sc, global const dev_pattern *pt, float x, float y)
+/* The colour (plane 0) or the filter (plane 1) at texel position (x, y): the
+ * texel, or POV-Ray's interpolation of four (2 bilinear, 4 normalized
+ * distance), unmultiplied by alpha where the image is premultiplied. */
+static float4 image_at_plane(const scene_data *sc, global const dev_pattern *pt, float x, float y, int plane)
 {
 	global const dev_image *im = &sc->images[(int)pt->params[0].x];
 	int interp = (int)pt->params[0].z, once = pt->params[0].w != 0.0f;
 	float4 c;
 	if (interp == 0) {
-		c = image_texel(sc, im, x, y, once);
+		c = image_texel(sc, im, plane, x, y, once);
 	} else {
 		x += 0.5f;
 		y += 0.5f;
@@ -115,13 +117,18 @@ static float4 image_at(const scene_data *sc, global const dev_pattern *pt, float
 			for (int k = 0; k < 4; k++)
 				f[k] = isinf(sum) ? (isinf(f[k]) ? 1.0f : 0.0f) : f[k] / sum;
 		}
-		c = f[0] * image_texel(sc, im, fx, fy, once) + f[1] * image_texel(sc, im, fx - 1.0f, fy, once) +
-		    f[2] * image_texel(sc, im, fx, fy - 1.0f, once) +
-		    f[3] * image_texel(sc, im, fx - 1.0f, fy - 1.0f, once);
+		c = f[0] * image_texel(sc, im, plane, fx, fy, once) + f[1] * image_texel(sc, im, plane, fx - 1.0f, fy, once) +
+		    f[2] * image_texel(sc, im, plane, fx, fy - 1.0f, once) +
+		    f[3] * image_texel(sc, im, plane, fx - 1.0f, fy - 1.0f, once);
 	}
-	if ((im->flags & IMAGE_PREMULTIPLIED) && c.w > 1e-10f)
+	if (plane == 0 && (im->flags & IMAGE_PREMULTIPLIED) && c.w > 1e-10f)
 		c.xyz /= c.w;
 	return c;
+}
+
+static inline float4 image_at(const scene_data *sc, global const dev_pattern *pt, float x, float y)
+{
+	return image_at_plane(sc, pt, x, y, 0);
 }
 
 /* POV-Ray's grey of a colour. */

@@ -406,7 +406,9 @@ typedef struct {
 typedef struct {
 	int width, height, first, flags;
 } dev_image;
-enum { IMAGE_PREMULTIPLIED = 1 };
+/* IMAGE_FILTER: a second plane of width * height texels follows the colours,
+ * each texel's filter in x: a palette's filter N, V (POV-Ray's per entry). */
+enum { IMAGE_PREMULTIPLIED = 1, IMAGE_FILTER = 2 };
 
 /* The objects buffer: one int of POV-Ray's object flags per scene object (the
  * values of scene.h's OBJ_ flags), indexed by dev_prim.object. */

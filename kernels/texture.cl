@@ -105,6 +105,8 @@ static inline pigment_colour texture_image(const scene_data *sc, global const de
 	float4 c = image_at(sc, pt, x, y);
 	out.rgb = c.xyz;
 	out.filter = pt->params[1].x;
+	if (sc->images[(int)pt->params[0].x].flags & IMAGE_FILTER)   /* a palette's filters */
+		out.filter += image_at_plane(sc, pt, x, y, 1).x;
 	out.transmit = 1.0f - c.w + pt->params[1].y;
 	return out;
 }

@@ -7,6 +7,7 @@
  * it has any (checks that need all of them at the end, as pavement's), and its
  * case in kernels/pattern.cl. */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -750,17 +751,63 @@ static void image_numbers(struct eval *e, const char *path, scene_image *im)
 	im->premultiplied = false;
 }
 
-static int image_load(struct eval *e, const char *name, double gamma, int premul, int how, src_loc loc)
+/* An image_map's filter and transmit: [0] filter, [1] transmit, for all
+ * entries (filter all F) or for one (filter N, F). POV-Ray sets them in an
+ * indexed image's palette, replacing what the entries had; in another image
+ * the values for all are added to each texel's. */
+struct palette_ft {
+	bool any;                 /* some value written for one entry */
+	bool all[2], set[2][256];
+	float all_value[2], value[2][256];
+	src_loc loc;              /* the first for one entry */
+};
+
+/* POV-Ray's palette, filter and transmit set, on texel's indices: the alpha
+ * becomes 1 - transmit and the filters a plane of their own (when some is
+ * not 0). */
+static int palette_apply(struct eval *e, scene_image *im, const unsigned char *index, const struct palette_ft *ft)
+{
+	long n = (long)im->width * im->height;
+	bool filters = false;
+	for (int i = 0; i < 256; i++)
+		filters |= (ft->set[0][i] && ft->value[0][i] != 0) || (ft->all[0] && ft->all_value[0] != 0);
+	if (filters) {   /* a float here, a float4 on the device */
+		if (eval_memory_claim(e, im->loc, (double)n * 5 * sizeof(float), "the image's filters"))
+			return -1;
+		im->filter = eval_xrealloc(NULL, (size_t)n * sizeof *im->filter);
+	}
+	for (long k = 0; k < n; k++) {
+		int i = index[k];
+		float *c = &im->rgba[4 * k];
+		if (ft->set[1][i] || ft->all[1])
+			c[3] = 1 - (ft->set[1][i] ? ft->value[1][i] : ft->all_value[1]);
+		if (filters)
+			im->filter[k] = ft->set[0][i] ? ft->value[0][i] : ft->all[0] ? ft->all_value[0] : 0;
+	}
+	return 0;
+}
+
+/* The image for a pattern; an image_map's with its palette_ft (NULL for
+ * none), which *palette says it took (the image has a palette). */
+static int image_load(struct eval *e, const char *name, double gamma, int premul, int how, src_loc loc,
+                      const struct palette_ft *ft, bool *palette)
 {
 	scene *s = e->s;
 	char *path = eval_find_file(e, loc.file, name);
 	const char *use = path ? path : name;
 	char key[4200];
-	snprintf(key, sizeof key, "%s\t%g\t%d%s", use, gamma, premul,
-	         how == USE_DATA ? "\tdata" : how == USE_NUMBER ? "\tnumber" : "");
+	unsigned hash = 2166136261u;   /* FNV-1a of the palette's filter and transmit, which make a variant */
+	bool ft_any = ft && (ft->any || ft->all[0] || ft->all[1]);
+	for (size_t i = 0; ft_any && i < offsetof(struct palette_ft, loc); i++)
+		hash = (hash ^ ((const unsigned char *)ft)[i]) * 16777619u;
+	snprintf(key, sizeof key, "%s\t%g\t%d%s%s%08x", use, gamma, premul,
+	         how == USE_DATA ? "\tdata" : how == USE_NUMBER ? "\tnumber" : "", ft_any ? "\tft" : "",
+	         ft_any ? hash : 0u);
+	*palette = false;
 	for (int i = 0; i < s->n_images; i++)
 		if (strcmp(s->images[i].key, key) == 0) {
 			free(path);
+			*palette = s->images[i].palette;
 			return i;
 		}
 	image_data d;
@@ -785,6 +832,24 @@ static int image_load(struct eval *e, const char *name, double gamma, int premul
 		im.decode = SCENE_DECODE_NONE;
 	if (how == USE_NUMBER)
 		image_numbers(e, use, &im);
+	if (ft_any) {
+		unsigned char *index = NULL;
+		int w, h;
+		bool indexed = image_indices(use, &lim, &index, &w, &h) && w == im.width && h == im.height;
+		int bad = indexed ? palette_apply(e, &im, index, ft) : 0;
+		free(index);
+		if (!indexed && ft->any)   /* POV-Ray: "filter not allowed with non color-mapped image" */
+			eval_error(e, ft->loc, "filter and transmit of one palette entry need an image with a palette "
+			           "(a colormapped PNG or a GIF), which '%s' is not", name);
+		if (bad || (!indexed && ft->any)) {
+			free(path);
+			free(im.filter);
+			free(im.key);
+			free(im.rgba);
+			return -1;
+		}
+		*palette = im.palette = indexed;
+	}
 	free(path);
 	if (gamma > 0 && how != USE_NUMBER) {
 		im.decode = SCENE_DECODE_POWER;
@@ -808,6 +873,8 @@ struct image_map_read {
 	int want;                 /* IM_ */
 	int ft;                   /* KW_FILTER or KW_TRANSMIT being read */
 	bool ft_all;
+	int ft_index;             /* the palette entry being given it, when not all */
+	struct palette_ft palette;
 	char *file;
 	src_loc file_loc;
 	double gamma;             /* 0: the file's */
@@ -945,17 +1012,31 @@ static int image_map_item(struct eval *e, const ast_node *n, struct image_map_re
 		}
 		if (eval_expect_float(e, n, &v))
 			return -1;
-		eval_warn_once(e, n->loc, "image_map index", "%s of one palette index is not supported; "
-		               "it is ignored", ast_keyword_name(r->ft));
+		r->ft_index = (int)(v + 0.01);   /* POV-Ray's rounding of the entry */
+		if (!(v + 0.01 >= 0 && v + 0.01 < 256)) {
+			eval_error(e, n->loc, "%s's palette entry must be from 0 to 255, not %g", ast_keyword_name(r->ft), v);
+			return -1;
+		}
+		if (!r->palette.any)
+			r->palette.loc = n->loc;
+		r->palette.any = true;
 		r->ft_all = false;
 		r->want = IM_FT_VALUE;
 		return 0;
-	case IM_FT_VALUE:
+	case IM_FT_VALUE: {
 		if (eval_expect_float(e, n, &v))
 			return -1;
-		if (r->ft_all)
-			r->pg->params[1][r->ft == KW_FILTER ? 0 : 1] = v;
+		int k = r->ft == KW_FILTER ? 0 : 1;
+		if (r->ft_all) {
+			r->pg->params[1][k] = v;
+			r->palette.all[k] = true;
+			r->palette.all_value[k] = (float)v;
+		} else {
+			r->palette.set[k][r->ft_index] = true;
+			r->palette.value[k][r->ft_index] = (float)v;
+		}
 		break;
+	}
 	}
 	r->want = IM_ANY;
 	return 0;
@@ -989,12 +1070,16 @@ static int image_block(struct eval *e, const ast_node *b, scene_pigment *pg,
 		rc = -1;
 	}
 	int how = pg->kind == PATTERN_IMAGE_MAP ? USE_COLOUR : pg->kind == PATTERN_MATERIAL_MAP ? USE_NUMBER : USE_DATA;
-	int at = rc || err ? -1 : image_load(e, r.file, r.gamma, r.premul, how, r.file_loc);
+	bool palette = false;
+	int at = rc || err ? -1 : image_load(e, r.file, r.gamma, r.premul, how, r.file_loc,
+	                                     how == USE_COLOUR ? &r.palette : NULL, &palette);
 	free(r.file);
 	if (at < 0)
 		return -1;
 	pg->params[0][0] = at;
 	const scene_image *im = &e->s->images[at];
+	if (palette)   /* the palette holds them now, set rather than added */
+		pg->params[1][0] = pg->params[1][1] = 0;
 	if (pg->kind != PATTERN_IMAGE_MAP) {
 		pg->frequency = 0;   /* POV-Ray's: its value is the image's */
 		pg->params[1][0] = r.alpha;
@@ -1002,8 +1087,12 @@ static int image_block(struct eval *e, const ast_node *b, scene_pigment *pg,
 		return 0;
 	}
 	pg->map = eval_xrealloc(pg->map, sizeof *pg->map);
+	double filter = 0;
+	long n = (long)im->width * im->height;
+	for (long i = 0; im->filter && i < n; i++)
+		filter += im->filter[i] / n;
 	pg->map[0] = (scene_map_entry){ .colour = { im->average[0], im->average[1], im->average[2],
-	                                            (float)pg->params[1][0],
+	                                            (float)(pg->params[1][0] + filter),
 	                                            1 - im->average[3] + (float)pg->params[1][1] },
 	                                .pigment = -1 };
 	pg->n_map = 1;

@@ -85,8 +85,8 @@ static void lower_images(lower_textures *lt, const scene *s)
 	if (lt->images || s->n_images == 0)
 		return;
 	long total = 0;
-	for (int i = 0; i < s->n_images; i++)
-		total += (long)s->images[i].width * s->images[i].height;
+	for (int i = 0; i < s->n_images; i++)   /* a plane of filters after the colours, for some */
+		total += (long)s->images[i].width * s->images[i].height * (s->images[i].filter ? 2 : 1);
 	if (total <= 0)
 		return;
 	lt->images = calloc(s->n_images, sizeof *lt->images);
@@ -100,7 +100,8 @@ static void lower_images(lower_textures *lt, const scene *s)
 		const scene_image *im = &s->images[i];
 		long n = (long)im->width * im->height;
 		lt->images[i] = (dev_image){ .width = im->width, .height = im->height, .first = (int)lt->n_texels,
-		                             .flags = im->premultiplied ? IMAGE_PREMULTIPLIED : 0 };
+		                             .flags = (im->premultiplied ? IMAGE_PREMULTIPLIED : 0) |
+		                                      (im->filter ? IMAGE_FILTER : 0) };
 		bool transcode = im->decode != SCENE_DECODE_NONE && (g > 0 || im->gamma_given);
 		for (long k = 0; k < n; k++) {
 			const float *c = &im->rgba[4 * k];
@@ -115,6 +116,9 @@ static void lower_images(lower_textures *lt, const scene *s)
 			lt->texels[lt->n_texels + k] = (float4){ rgb[0], rgb[1], rgb[2], a };
 		}
 		lt->n_texels += n;
+		for (long k = 0; im->filter && k < n; k++)
+			lt->texels[lt->n_texels + k] = (float4){ im->filter[k], 0, 0, 0 };
+		lt->n_texels += im->filter ? n : 0;
 	}
 	lt->n_images = s->n_images;
 }

@@ -276,6 +276,7 @@ void scene_free(scene *s)
 	for (int i = 0; i < s->n_images; i++) {
 		free(s->images[i].key);
 		free(s->images[i].rgba);
+		free(s->images[i].filter);
 	}
 	free(s->images);
 	memset(s, 0, sizeof *s);

@@ -91,6 +91,9 @@ typedef struct {
 	                          * only by a gamma written, never into the working gamma
 	                          * (POV-Ray's); a material_map's red is its material numbers */
 	float average[4];        /* rgb and alpha, as the file has them */
+	float *filter;           /* each texel's filter, from its palette entry's (an image_map's
+	                          * filter N, V), or NULL: none */
+	bool palette;            /* the image_map's filter and transmit went into its palette */
 	src_loc loc;
 } scene_image;
 
