@@ -989,6 +989,10 @@ int eval_block_value(struct eval *e, const ast_node *b, value *out)
 		return sky_sphere(e, b, out);
 	case KW_FOG:
 		return eval_fog_value(e, b, out);
+	case KW_RAINBOW:   /* POV-Ray 3.7 draws a declared rainbow wrong and then crashes */
+		eval_error(e, b->loc, "a rainbow cannot be declared: POV-Ray 3.7 converts a declared rainbow's "
+		           "angles a second time where it is used; write the rainbow where it is used");
+		return -1;
 	case KW_MEDIA:
 		return eval_media_value(e, b, out);
 	case KW_DENSITY:
