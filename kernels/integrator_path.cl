@@ -23,6 +23,8 @@
 #define DIM_SKY 0x40000000u
 /* crand's, one a bounce. */
 #define DIM_CRAND 0x50000000u
+/* The rainbows' jitter: a key a bounce, a dimension a rainbow. */
+#define DIM_RAINBOW 0x60000000u
 
 /* The objects a ray of this bounce may not see: POV-Ray's no_image for the
  * camera's, no_reflection after a reflection. */
@@ -61,6 +63,13 @@ static inline float3 path_radiance(const scene_data *sc, int px, int py, uint ke
 			radiance += beta * fe.add;
 			beta *= fe.att;
 		}
+		float rainbow_transm = 1.0f;   /* what the rainbows leave of the alpha channel's background */
+		if (solids == 0 && p->n_rainbows > 0) {   /* the rainbows' colour over the segment, inside the fogs */
+			rainbow_effect re = rainbow_segment(sc, d, seg, rng_hash(key ^ rng_hash(DIM_RAINBOW + (uint)depth)));
+			radiance += beta * re.add;
+			beta *= re.att;
+			rainbow_transm = re.transm;
+		}
 		if (sigma.x > 0.0f || sigma.y > 0.0f || sigma.z > 0.0f)
 			beta *= exp(-sigma * fmin(seg, 1e30f));   /* Beer-Lambert inside an absorbing interior */
 		if (walk.event == 2)
@@ -98,7 +107,7 @@ static inline float3 path_radiance(const scene_data *sc, int px, int py, uint ke
 				w = light_power_heuristic(last_pdf, sky_pdf(sc->sky_dist, sc->sky_cdf, d));
 			radiance += beta * w * texture_sky(sc, d, depth == 0);
 			if (depth == 0)   /* the camera ray that meets nothing shows the background */
-				*transm = texture_sky_transm(sc, d);
+				*transm = texture_sky_transm(sc, d) * rainbow_transm;
 			break;
 		}
 		shading_point sp = texture_point(sc, hit, o, d);

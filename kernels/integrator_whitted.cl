@@ -45,7 +45,8 @@ typedef struct {
 typedef struct {
 	whitted_ray ray;
 	float3 colour;     /* the ray's colour so far */
-	float fog_t;       /* how far the ray goes through fog (INFINITY: it leaves the scene), or -1 */
+	float fog_t;       /* how far the ray goes through fog and rainbows (INFINITY: it leaves
+	                    * the scene), or -1 */
 	float media_t;     /* how far it goes through its interiors' media, or -1 */
 	float transm;      /* how much of the background shows through, for the alpha channel */
 	whitted_ray child[WHITTED_CHILDREN];
@@ -462,7 +463,7 @@ static inline whitted_frame whitted_shade(const scene_data *sc, whitted_ray ray,
 	int skip = ray.kind & WRAY_REFLECTED ? OBJECT_NO_REFLECTION : OBJECT_NO_IMAGE;
 	int kind = ray.level == 0 ? RAY_CAMERA : RAY_BOUNCE;
 	traverse_hit hit = visibility_closest(sc, ray.o, ray.d, 0.0f, tmax, skip, kind);
-	if (ray.solids == 0 && (p->n_fogs > 0 || p->n_atmosphere > 0))
+	if (ray.solids == 0 && (p->n_fogs > 0 || p->n_atmosphere > 0 || p->n_rainbows > 0))
 		fr.fog_t = hit.prim < 0 ? INFINITY : hit.t;
 	if (ray.solids == 0 && ray.media.n > 0 && hit.prim >= 0)
 		fr.media_t = hit.t;
@@ -499,9 +500,16 @@ static inline float3 whitted_radiance(const scene_data *sc, whitted_ray camera, 
 		}
 		float3 c = top->colour;
 		whitted_ray r = top->ray;
-		if (top->media_t >= 0.0f) {   /* the interiors' media, then the atmosphere's and the fog */
+		if (top->media_t >= 0.0f) {   /* the interiors' media, then the rainbows, the atmosphere's and the fog */
 			media_list l = media_gather(&r.media);
 			c = media_whitted(sc, &l, r.media, r.o, r.d, top->media_t, c);
+		}
+		float tr = top->transm;
+		if (top->fog_t >= 0.0f && p->n_rainbows > 0) {   /* POV-Ray's order: rainbows, atmosphere, fog */
+			uint key = as_uint(r.o.x) ^ rng_hash(as_uint(r.d.y) ^ rng_hash(as_uint(r.d.x) + as_uint(r.o.z)));
+			rainbow_effect re = rainbow_segment(sc, r.d, top->fog_t, key);
+			c = re.add + re.att * c;
+			tr *= re.transm;
 		}
 		if (top->fog_t >= 0.0f && p->n_atmosphere > 0) {
 			media_list l = media_atmosphere(sc);
@@ -511,7 +519,6 @@ static inline float3 whitted_radiance(const scene_data *sc, whitted_ray camera, 
 			fog_effect fe = fog_segment(sc, r.o, r.d, top->fog_t, false);
 			c = fe.add + fe.att * c;
 		}
-		float tr = top->transm;
 		if (--sp == 0) {
 			result = c;
 			*transm = tr;

@@ -434,6 +434,21 @@ typedef struct {
 	int octaves, type, turb_on;
 } dev_fog;
 
+/* A rainbow { }, 80 bytes: POV-Ray 3.7's rainbow (kernels/rainbow.cl), as
+ * Parse_Rainbow leaves it. Angles in radians: angle the band's inner edge,
+ * width its width; arc_angle and falloff_angle half those written, so a
+ * ray's angle from up in the plane square to direction is against them.
+ * pattern: the colour_map as a gradient x pigment's dev_pattern, read at
+ * the band's index. */
+typedef struct {
+	float4 direction;   /* xyz: unit antisolar vector; w: angle */
+	float4 up;          /* xyz: unit up, square to direction; w: width */
+	float4 right;       /* xyz: up x direction; w: distance */
+	float jitter, arc_angle, falloff_angle, falloff_width;
+	int pattern;
+	int pad[3];
+} dev_rainbow;
+
 /* A media { }, 128 bytes: POV-Ray 3.7's participating media (kernels/media.cl).
  * Coefficients are per unit of length, times the density at the point: the
  * product of the colours of densities (each a dev_material whose pigment is
@@ -549,7 +564,8 @@ typedef struct {
 	int sky_sampled;    /* 1: the path tracer samples the sky by sky_dist (kernels/sky_sample.cl) */
 	int camera_normal;  /* the camera's normal { }: the pattern (dev_pattern) that perturbs every
 	                     * camera ray's direction (kernels/texture.cl, camera_perturb), or -1 */
-	int pad_params[3];
+	int n_rainbows;     /* dev_rainbow records */
+	int pad_params[2];
 } dev_params;
 /* SCENE_SHADOWS_PASS: some surface lets shadow rays through (no_shadow, filter,
  * transmit), so shadow rays look at what they meet instead of stopping at the first.
@@ -577,6 +593,7 @@ enum { SCENE_SHADOWS_PASS = 1, SCENE_SKY_LEGACY = 2, SCENE_MEDIA = 4, SCENE_UV =
 	X(dev_image, images) \
 	X(float4, texels) \
 	X(dev_fog, fogs) \
+	X(dev_rainbow, rainbows) \
 	X(float4, camera_rays) \
 	X(dev_media, media) \
 	X(dev_sky, sky_dist) \

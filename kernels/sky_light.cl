@@ -24,8 +24,10 @@ static inline float3 light_sky(const scene_data *sc, const bsdf *m, const materi
 	if (traverse_any(sc, sc->nodes, sc->prims, p->n_prims, p->n_planes, x, wi, 0.0f, INFINITY, sc->counts))
 		return (float3)(0.0f);
 	/* what a bounce ray leaving the scene along wi goes through: the fogs
-	 * (their glow is the path's, unweighted) and the media around x */
+	 * (their glow is the path's, unweighted), the rainbows and the media around x */
 	float3 tr = solids == 0 && p->n_fogs > 0 ? fog_segment(sc, x, wi, INFINITY, true).att : (float3)(1.0f);
+	if (solids == 0 && p->n_rainbows > 0)
+		tr *= rainbow_segment(sc, wi, INFINITY, rng_hash(key ^ rng_hash(dim + 5u))).att;
 	media_list l = media_list_at(sc, &ms, solids);
 	tr *= media_transmittance(sc, &l, x, wi, INFINITY, key, dim + 4);
 	return tr * texture_sky(sc, wi, false) * f * (light_power_heuristic(pdf_sky, pdf_bsdf) / pdf_sky);

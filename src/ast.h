@@ -40,6 +40,7 @@ enum kw_class {
 	X(FACE_INDICES, "face_indices", BLOCK) \
 	X(FINISH, "finish", BLOCK) \
 	X(FOG, "fog", BLOCK) \
+	X(RAINBOW, "rainbow", BLOCK) \
 	X(GLOBAL_SETTINGS, "global_settings", BLOCK) \
 	X(INTERIOR, "interior", BLOCK) \
 	X(INTERSECTION, "intersection", BLOCK) \
@@ -76,6 +77,7 @@ enum kw_class {
 	X(AMBIENT, "ambient", ARG) \
 	X(AMBIENT_LIGHT, "ambient_light", ARG) \
 	X(ANGLE, "angle", ARG) \
+	X(ARC_ANGLE, "arc_angle", ARG) \
 	X(APERTURE, "aperture", ARG) \
 	X(AREA_LIGHT, "area_light", ARG) \
 	X(ASSUMED_GAMMA, "assumed_gamma", ARG) \
@@ -95,6 +97,7 @@ enum kw_class {
 	X(FADE_DISTANCE, "fade_distance", ARG) \
 	X(FADE_POWER, "fade_power", ARG) \
 	X(FALLOFF, "falloff", ARG) \
+	X(FALLOFF_ANGLE, "falloff_angle", ARG) \
 	X(FOCAL_POINT, "focal_point", ARG) \
 	X(FOG_ALT, "fog_alt", ARG) \
 	X(ABSORPTION, "absorption", ARG) \
@@ -142,6 +145,7 @@ enum kw_class {
 	X(TURB_DEPTH, "turb_depth", ARG) \
 	X(TURBULENCE, "turbulence", ARG) \
 	X(UP, "up", ARG) \
+	X(WIDTH, "width", ARG) \
 	X(UV_VECTORS, "uv_vectors", ARG) \
 	X(AGATE, "agate", FLAG) \
 	X(BOXED, "boxed", FLAG) \

@@ -427,6 +427,8 @@ int eval_camera_mesh(struct eval *e, const ast_node *b, scene_camera *c);
 int eval_fog(struct eval *e, const ast_node *b, scene_fog *out);
 int eval_fog_statement(struct eval *e, const ast_node *b);
 int eval_fog_value(struct eval *e, const ast_node *b, value *out);
+/* rainbow { } (eval_rainbow.c), a statement */
+int eval_rainbow_statement(struct eval *e, const ast_node *b);
 /* media { } (eval_media.c): in an interior (appended to m's media), at the
  * scene's level (the atmosphere), and as a value */
 int eval_media_interior(struct eval *e, const ast_node *b, scene_material *m);

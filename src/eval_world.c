@@ -11,7 +11,7 @@
 /* ---- POV-Ray's words ---- */
 
 /* Words of POV-Ray 3.7 that are not eclat keywords: an object type eclat cannot
- * render, a statement, or something else (a modifier, a setting). */
+ * render, a pattern, or something else (a modifier, a setting). */
 const char *eval_pov_word(const char *name)
 {
 	static const char *const objects[] = {
@@ -20,7 +20,6 @@ const char *eval_pov_word(const char *name)
 		"poly", "polygon", "polynomial", "prism", "quadric", "quartic", "sor",
 		"text",
 	};
-	static const char *const statements[] = { "rainbow" };
 	static const char *const patterns[] = {
 		"aoi", "average", "image_pattern",
 		"pigment_pattern", "slope",
@@ -38,9 +37,6 @@ const char *eval_pov_word(const char *name)
 	for (size_t i = 0; i < sizeof objects / sizeof *objects; i++)
 		if (strcmp(objects[i], name) == 0)
 			return "object";
-	for (size_t i = 0; i < sizeof statements / sizeof *statements; i++)
-		if (strcmp(statements[i], name) == 0)
-			return "statement";
 	for (size_t i = 0; i < sizeof patterns / sizeof *patterns; i++)
 		if (strcmp(patterns[i], name) == 0)
 			return "pattern";
@@ -993,6 +989,10 @@ int eval_block_value(struct eval *e, const ast_node *b, value *out)
 		return sky_sphere(e, b, out);
 	case KW_FOG:
 		return eval_fog_value(e, b, out);
+	case KW_RAINBOW:   /* POV-Ray 3.7 draws a declared rainbow wrong and then crashes */
+		eval_error(e, b->loc, "a rainbow cannot be declared: POV-Ray 3.7 converts a declared rainbow's "
+		           "angles a second time where it is used; write the rainbow where it is used");
+		return -1;
 	case KW_MEDIA:
 		return eval_media_value(e, b, out);
 	case KW_DENSITY:
@@ -1033,6 +1033,7 @@ static int statement_block(struct eval *e, const ast_node *b)
 	case KW_BACKGROUND: return background(e, b);
 	case KW_GLOBAL_SETTINGS: return global_settings(e, b);
 	case KW_FOG: return eval_fog_statement(e, b);
+	case KW_RAINBOW: return eval_rainbow_statement(e, b);
 	case KW_MEDIA: return eval_media_statement(e, b);
 	case KW_SKY_SPHERE:
 		if (sky_sphere(e, b, &v))

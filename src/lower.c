@@ -31,6 +31,8 @@ _Static_assert(sizeof(dev_image) == 16, "dev_image is 16 bytes");
 _Static_assert(sizeof(dev_emitter) == 16, "dev_emitter is 16 bytes");
 _Static_assert(sizeof(dev_params) == 208, "dev_params is 208 bytes");
 _Static_assert(sizeof(dev_fog) == 80 && offsetof(dev_fog, distance) == 48, "dev_fog layout");
+_Static_assert(sizeof(dev_rainbow) == 80 && offsetof(dev_rainbow, jitter) == 48 && offsetof(dev_rainbow, pattern) == 64,
+               "dev_rainbow layout");
 _Static_assert(sizeof(dev_media) == 128 && offsetof(dev_media, method) == 80, "dev_media layout");
 _Static_assert(sizeof(dev_sky) == 112 && offsetof(dev_sky, width) == 96, "dev_sky layout");
 _Static_assert((int)OBJECT_NO_SHADOW == (int)OBJ_NO_SHADOW && (int)OBJECT_NO_IMAGE == (int)OBJ_NO_IMAGE &&
@@ -1083,6 +1085,7 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	/* the camera's normal, in the space of its image points: only its own transformations */
 	int camera_normal = s->camera.normal >= 0 && s->camera.normal < s->n_pigments
 	                    ? lower_texture_pigment(&lw.textures, s, s->camera.normal) : -1;
+	lower_rainbows(&lw.textures, s, out);
 	lower_textures_append(&lw.textures, &lw.mats, &lw.n_mats);
 	out->materials = lw.mats;
 	out->n_materials = lw.n_mats;
@@ -1104,7 +1107,7 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	out->params.n_fogs = out->n_fogs;
 	out->params.atmosphere = atmosphere;
 	out->params.n_atmosphere = n_atmosphere;
-	out->params.camera_solids = out->n_fogs || out->textures.n_media ? lower_camera_solids(s) : 0;
+	out->params.camera_solids = out->n_fogs || out->n_rainbows || out->textures.n_media ? lower_camera_solids(s) : 0;
 	out->params.camera_normal = camera_normal;
 	lower_media_warn_open(s);
 	if (rc == 0 && join(&lw, s, out))
@@ -1154,6 +1157,7 @@ void lower_free(lower_result *r)
 	free(r->object_flags);
 	free(r->lights);
 	free(r->fogs);
+	free(r->rainbows);
 	free(r->camera_rays);
 	free(r->emitters);
 	free(r->sky_cdf);

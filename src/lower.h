@@ -107,6 +107,8 @@ typedef struct {
 	int n_lights;
 	dev_fog *fogs;            /* the scene's fogs (lower_fog.c) */
 	int n_fogs;
+	dev_rainbow *rainbows;    /* the scene's rainbows (lower_rainbow.c) */
+	int n_rainbows;
 	float4 *camera_rays;      /* a mesh_camera's rays (lower_camera_mesh.c), the lens of focal
 	                           * blur (lower_camera_lens.c), or NULL */
 	long n_camera_rays;
@@ -129,6 +131,9 @@ void lower_free(lower_result *r);
 
 /* The scene's fogs into out->fogs (lower_fog.c); -1 when out of memory. */
 int lower_fogs(const scene *s, lower_result *out);
+/* The scene's rainbows into out->rainbows and params.n_rainbows, their
+ * colour maps into lt; exits with a message on out of memory. */
+void lower_rainbows(lower_textures *lt, const scene *s, lower_result *out);
 /* The emitter table (lower_emitter.c): a row for each emitting primitive of
  * the top level that next-event estimation can sample, and its link to it;
  * -1 after saying that memory ran out. */

@@ -710,7 +710,7 @@ static void warn_if_dark(const struct options *o, const scene *s, const lower_re
 		const dev_material *m = &lr->materials[i];
 		glows |= m->emission.x > 0 || m->emission.y > 0 || m->emission.z > 0;
 	}
-	if (lr->n_lights == 0 && lr->n_fogs == 0 && !glows && bg[0] <= 0 && bg[1] <= 0 &&
+	if (lr->n_lights == 0 && lr->n_fogs == 0 && lr->n_rainbows == 0 && !glows && bg[0] <= 0 && bg[1] <= 0 &&
 	    bg[2] <= 0)
 		diag_warning(SRC_NOWHERE, "'%s' has no light_source, no emission and a black background: "
 		             "the image will be black", o->scene);

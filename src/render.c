@@ -25,6 +25,7 @@
 #define HOST_images(LR) (LR)->textures.images, (LR)->textures.n_images * sizeof(dev_image)
 #define HOST_texels(LR) (LR)->textures.texels, (LR)->textures.n_texels * sizeof(float4)
 #define HOST_fogs(LR) (LR)->fogs, (LR)->n_fogs * sizeof(dev_fog)
+#define HOST_rainbows(LR) (LR)->rainbows, (LR)->n_rainbows * sizeof(dev_rainbow)
 #define HOST_camera_rays(LR) (LR)->camera_rays, (size_t)(LR)->n_camera_rays * sizeof(float4)
 #define HOST_media(LR) (LR)->textures.media, (LR)->textures.n_media * sizeof(dev_media)
 #define HOST_sky_dist(LR) &(LR)->sky, sizeof(dev_sky)

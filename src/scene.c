@@ -151,6 +151,13 @@ scene_media scene_default_media(void)
 	                      .ratio = 0.9, .aa_threshold = 0.1, .aa_level = 3, .xf = scene_xform_identity(), .prev = -1 };
 }
 
+void scene_add_rainbow(scene *s, const scene_rainbow *r)
+{
+	if (s->n_rainbows == s->cap_rainbows)
+		s->rainbows = grow(s->rainbows, &s->cap_rainbows, sizeof *r);
+	s->rainbows[s->n_rainbows++] = *r;
+}
+
 scene_fog scene_default_fog(void)
 {
 	return (scene_fog){ .type = SCENE_FOG_CONSTANT, .up = { 0, 1, 0 }, .octaves = 6, .omega = 0.5, .lambda = 2,
@@ -267,6 +274,7 @@ void scene_free(scene *s)
 	free(s->objects);
 	free(s->lights);
 	free(s->fogs);
+	free(s->rainbows);
 	free(s->media);
 	for (int i = 0; i < s->n_pigments; i++)
 		free(s->pigments[i].map);
@@ -754,6 +762,8 @@ static void dump_pigments(FILE *out, const scene *s)
 	for (int m = 0; m < s->n_meshes; m++)
 		for (int i = 0; i < s->meshes[m].n_mats; i++)
 			mark_material(s, &s->meshes[m].mats[i], used, used_tex);
+	for (int i = 0; i < s->n_rainbows; i++)
+		mark_pigment(s, s->rainbows[i].pigment, used, used_tex, false);
 	for (int i = 0; i < s->n_textures; i++)
 		if (used_tex[i]) {
 			fprintf(out, "texture %d", i);
@@ -789,6 +799,22 @@ static void dump_fog(FILE *out, const scene_fog *f)
 		fnum(out, "turb_depth", f->turb_depth);
 	}
 	fputc('\n', out);
+}
+
+/* Angles as POV-Ray keeps them: radians, arc and falloff halved. */
+static void dump_rainbow(FILE *out, const scene_rainbow *r)
+{
+	fputs("rainbow", out);
+	vec(out, "direction", r->direction);
+	vec(out, "up", r->up);
+	vec(out, "right", r->right);
+	fnum(out, "angle", r->angle);
+	fnum(out, "width", r->width);
+	fnum(out, "distance", r->distance);
+	fnum(out, "jitter", r->jitter);
+	fnum(out, "arc_angle", r->arc_angle);
+	fnum(out, "falloff_angle", r->falloff_angle);
+	fprintf(out, " pigment %d\n", r->pigment);
 }
 
 void scene_dump(const scene *s, FILE *out)
@@ -836,6 +862,8 @@ void scene_dump(const scene *s, FILE *out)
 	fputc('\n', out);
 	for (int i = 0; i < s->n_fogs; i++)
 		dump_fog(out, &s->fogs[i]);
+	for (int i = 0; i < s->n_rainbows; i++)
+		dump_rainbow(out, &s->rainbows[i]);
 	for (int i = 0; i < s->n_lights; i++)
 		dump_light(out, &s->lights[i]);
 	for (int i = 0; i < s->n_objects; i++)

@@ -389,6 +389,23 @@ typedef struct {
 	src_loc loc;
 } scene_fog;
 
+/* POV-Ray's rainbow { } as its Parse_Rainbow leaves it (src/eval_rainbow.c):
+ * direction (the antisolar vector), up and right of unit length and at
+ * right angles; angle is the inner edge (angle - width / 2) and width the
+ * band's, in radians; arc_angle and falloff_angle are half the angles
+ * written, in radians, or POV-Ray's default 180 (radians, so every ray is
+ * within the arc). pigment: a gradient x pigment of the pool with the
+ * colour_map, or -1 (no colour_map: POV-Ray skips the rainbow). */
+typedef struct {
+	double direction[3], up[3], right[3];
+	double angle, width;     /* 0, 0 */
+	double distance;         /* POV-Ray's MAX_DISTANCE, 1e7 */
+	double jitter;           /* 0 */
+	double arc_angle, falloff_angle;  /* 180, 180 */
+	int pigment;
+	src_loc loc;
+} scene_rainbow;
+
 /* A media { } (eval_media.c), POV-Ray 3.7's Parse_Media defaults
  * (scene_default_media). An interior's media are a chain through prev, the
  * last written first, never changed once made: materials copied by value
@@ -518,6 +535,8 @@ typedef struct {
 	                       * blend as POV-Ray 3.6 blends them */
 	scene_fog *fogs;      /* in the order written; they combine as POV-Ray combines them */
 	int n_fogs, cap_fogs;
+	scene_rainbow *rainbows;   /* in the order written; they blend as POV-Ray blends them */
+	int n_rainbows, cap_rainbows;
 	scene_media *media;   /* every interior's media (scene_material.media) and the atmosphere's */
 	int n_media, cap_media;
 	int atmosphere;       /* the scene-level media's chain head plus one; 0: none */
@@ -544,6 +563,7 @@ void scene_add_light(scene *s, const scene_light *l);
 void scene_add_fog(scene *s, const scene_fog *f);
 /* POV-Ray's default fog (Create_Fog): no distance, so no fog until one is given. */
 scene_fog scene_default_fog(void);
+void scene_add_rainbow(scene *s, const scene_rainbow *r);
 /* Appends a media to the pool; returns its index. */
 int scene_add_media(scene *s, const scene_media *m);
 /* POV-Ray 3.7's media defaults (method 3, one interval, 10 samples). */
