@@ -23,6 +23,7 @@
 #include "loader.h"
 #include "prism.h"
 #include "revolve.h"
+#include "vec3.h"
 
 #define POV_EPSILON 1e-10          /* POV-Ray's EPSILON: points this close are one */
 #define FLAT_TOLERANCE 1e-3        /* of the shape's size (a prism) or the em (text) */
@@ -156,24 +157,6 @@ static bool same2(const double *a, const double *b)
 
 /* ---- polygon ---- */
 
-static double dot3(const double a[3], const double b[3])
-{
-	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-	double r[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-	memcpy(out, r, sizeof r);
-}
-
-static void unit3(double v[3])
-{
-	double l = sqrt(dot3(v, v));
-	for (int k = 0; k < 3; k++)
-		v[k] /= l;
-}
-
 /* POV-Ray's plane of a polygon: the first point, the first edge of a length
  * and the first point off its line; false when the points are on one line. */
 static bool polygon_frame(double (*pt)[3], int n, scene_object *o)
@@ -183,23 +166,23 @@ static bool polygon_frame(double (*pt)[3], int n, scene_object *o)
 	for (i = 1; i < n; i++) {
 		for (int k = 0; k < 3; k++)
 			u[k] = pt[i][k] - pt[0][k];
-		if (dot3(u, u) > POV_EPSILON)
+		if (vec3_dot(u, u) > POV_EPSILON)
 			break;
 	}
 	for (i++; i < n; i++) {
 		for (int k = 0; k < 3; k++)
 			v[k] = pt[i][k] - pt[0][k];
-		cross3(u, v, w);
-		if (dot3(v, v) > POV_EPSILON && dot3(w, w) > POV_EPSILON)
+		vec3_cross(u, v, w);
+		if (vec3_dot(v, v) > POV_EPSILON && vec3_dot(w, w) > POV_EPSILON)
 			break;
 	}
 	if (i >= n)
 		return false;
-	cross3(v, w, u);
-	cross3(w, u, v);
-	unit3(u);
-	unit3(v);
-	unit3(w);
+	vec3_cross(v, w, u);
+	vec3_cross(w, u, v);
+	vec3_normalize(u);
+	vec3_normalize(v);
+	vec3_normalize(w);
 	/* prism space: x along u, y along the normal w, z along v */
 	memcpy(o->p[0], pt[0], sizeof o->p[0]);
 	memcpy(o->n[0], u, sizeof u);
@@ -272,9 +255,9 @@ static int polygon_args(struct eval *e, struct cursor *c, const ast_node *b, sce
 		bool planar = true;
 		for (int i = 0; i < n; i++) {
 			double d[3] = { pt[i][0] - o->p[0][0], pt[i][1] - o->p[0][1], pt[i][2] - o->p[0][2] };
-			flat[i][0] = dot3(d, o->n[0]);
-			flat[i][1] = dot3(d, o->n[2]);
-			planar = planar && fabs(dot3(d, o->n[1])) <= 1e-6 * (1 + sqrt(dot3(d, d)));
+			flat[i][0] = vec3_dot(d, o->n[0]);
+			flat[i][1] = vec3_dot(d, o->n[2]);
+			planar = planar && fabs(vec3_dot(d, o->n[1])) <= 1e-6 * (1 + sqrt(vec3_dot(d, d)));
 		}
 		if (planar)
 			closed_edges(&bld, flat, n);

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "eval_int.h"
+#include "vec3.h"
 
 #define RAINBOW_EPSILON 1e-10   /* POV-Ray's EPSILON, for its vector tests */
 
@@ -98,24 +99,6 @@ static int rainbow_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	return eval_not_valid(e, item, "a rainbow");
 }
 
-static double dot3(const double a[3], const double b[3])
-{
-	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-	double c[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-	memcpy(out, c, sizeof c);
-}
-
-static void normalize3(double v[3])
-{
-	double l = sqrt(dot3(v, v));
-	for (int k = 0; k < 3 && l > 0; k++)
-		v[k] /= l;
-}
-
 /* What Parse_Rainbow does after the items: the falloff angle, the checks,
  * up made square to the direction (the direction stays as written), the
  * angles into radians with angle moved to the band's inner edge. */
@@ -125,22 +108,22 @@ static int rainbow_finish(struct eval *e, const ast_node *b, struct rainbow_read
 	if (rd->arc && !rd->falloff)
 		r->falloff_angle = r->arc_angle;
 	const char *bad = r->arc_angle < r->falloff_angle ? "its arc_angle is smaller than its falloff_angle"
-	                  : fabs(dot3(r->direction, r->direction)) < RAINBOW_EPSILON ? "its direction is <0, 0, 0>"
-	                  : fabs(dot3(r->up, r->up)) < RAINBOW_EPSILON ? "its up vector is <0, 0, 0>" : NULL;
+	                  : fabs(vec3_dot(r->direction, r->direction)) < RAINBOW_EPSILON ? "its direction is <0, 0, 0>"
+	                  : fabs(vec3_dot(r->up, r->up)) < RAINBOW_EPSILON ? "its up vector is <0, 0, 0>" : NULL;
 	if (!bad) {
-		normalize3(r->direction);
-		normalize3(r->up);
-		if (fabs(1 - fabs(dot3(r->up, r->direction))) < RAINBOW_EPSILON)
+		vec3_normalize(r->direction);
+		vec3_normalize(r->up);
+		if (fabs(1 - fabs(vec3_dot(r->up, r->direction))) < RAINBOW_EPSILON)
 			bad = "its up vector and its direction are parallel";
 	}
 	if (bad) {
 		eval_error(e, b->loc, "a rainbow cannot be made: %s", bad);
 		return -1;
 	}
-	cross3(r->up, r->direction, r->right);
-	cross3(r->direction, r->right, r->up);
-	normalize3(r->up);
-	normalize3(r->right);
+	vec3_cross(r->up, r->direction, r->right);
+	vec3_cross(r->direction, r->right, r->up);
+	vec3_normalize(r->up);
+	vec3_normalize(r->right);
 	r->angle = (r->angle - 0.5 * r->width) * M_PI / 180;
 	r->width *= M_PI / 180;
 	return 0;

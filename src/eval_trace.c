@@ -20,11 +20,7 @@
 #include "eval_int.h"
 #include "shape.h"
 #include "csg.h"
-
-static double dot3(const double a[3], const double b[3])
-{
-	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+#include "vec3.h"
 
 /* The nearest hit of one shape with tmin < t < h->t: h gets t and the world normal. */
 static void trace_shape(const scene *sc, const scene_object *s, const double o[3], const double d[3], double tmin,
@@ -138,7 +134,7 @@ static int trace_object(const scene *sc, const struct objval *obj, const double 
 	}
 	if (h.t == INFINITY)
 		return 0;
-	double len = sqrt(dot3(h.n, h.n));
+	double len = sqrt(vec3_dot(h.n, h.n));
 	for (int k = 0; k < 3; k++) {
 		point[k] = o[k] + h.t * d[k];
 		normal[k] = (len > 0 ? h.n[k] / len : 0) + 0.0;   /* no -0 */

@@ -16,6 +16,7 @@
 
 #include "diag.h"
 #include "lower.h"
+#include "vec3.h"
 
 #define LENS_HEADER 3
 #define LENS_MOST 16384   /* samples a pixel: past this, the thresholds take long to find */
@@ -142,20 +143,6 @@ static int more_points(int n, int standard, float4 *out)
 	return 0;
 }
 
-static void normalize3(double v[3])
-{
-	double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-	for (int i = 0; i < 3 && l > 0; i++)
-		v[i] /= l;
-}
-
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-	out[0] = a[1] * b[2] - a[2] * b[1];
-	out[1] = a[2] * b[0] - a[0] * b[2];
-	out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 /* The lens samples' points, the batches' ends and the largest jitter. */
 static int lens_points(int n, float4 *s, float *max_jitter)
 {
@@ -202,10 +189,10 @@ int lower_camera_lens(const scene *s, lower_result *out)
 		return -1;
 	}
 	double x[3], y[3];
-	cross3(c->up, c->direction, x);
-	normalize3(x);
-	cross3(c->direction, x, y);
-	normalize3(y);
+	vec3_cross(c->up, c->direction, x);
+	vec3_normalize(x);
+	vec3_cross(c->direction, x, y);
+	vec3_normalize(y);
 	double dl = sqrt(c->direction[0] * c->direction[0] + c->direction[1] * c->direction[1] +
 	                 c->direction[2] * c->direction[2]);
 	double focal = c->focal_distance > 0 ? c->focal_distance : 1;

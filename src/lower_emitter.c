@@ -17,18 +17,7 @@
 #include <stdlib.h>
 
 #include "lower.h"
-
-static double dot3(const double a[3], const double b[3])
-{
-	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-	out[0] = a[1] * b[2] - a[2] * b[1];
-	out[1] = a[2] * b[0] - a[0] * b[2];
-	out[2] = a[0] * b[1] - a[1] * b[0];
-}
+#include "vec3.h"
 
 /* The rows of a shape's map from world space (kernels/intersect.cl), and
  * |det| of their 3 x 3 part. */
@@ -41,8 +30,8 @@ static double rows_of(const dev_prim *p, double m[3][3])
 		m[i][2] = r[i]->z;
 	}
 	double bc[3];
-	cross3(m[1], m[2], bc);
-	return fabs(dot3(m[0], bc));
+	vec3_cross(m[1], m[2], bc);
+	return fabs(vec3_dot(m[0], bc));
 }
 
 /* The world area element over the shape's own, on a surface of unit normal n
@@ -52,15 +41,15 @@ static double area_scale(double m[3][3], double det, const double n[3])
 	double v[3];
 	for (int k = 0; k < 3; k++)
 		v[k] = n[0] * m[0][k] + n[1] * m[1][k] + n[2] * m[2][k];
-	return sqrt(dot3(v, v)) / det;
+	return sqrt(vec3_dot(v, v)) / det;
 }
 
 static double triangle_area(const dev_prim *p)
 {
 	double e1[3] = { p->b.x - p->a.x, p->b.y - p->a.y, p->b.z - p->a.z };
 	double e2[3] = { p->c.x - p->a.x, p->c.y - p->a.y, p->c.z - p->a.z }, c[3];
-	cross3(e1, e2, c);
-	return 0.5 * sqrt(dot3(c, c));
+	vec3_cross(e1, e2, c);
+	return 0.5 * sqrt(vec3_dot(c, c));
 }
 
 /* A disc's ring, pi (1 - hole^2) in its own space (kernels/shape_disc.cl). */

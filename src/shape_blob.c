@@ -19,16 +19,12 @@
 #include "lower.h"
 #include "roots.h"
 #include "shape.h"
+#include "vec3.h"
 
 /* A piece along the ray: its stretch (t0, t1), where d^2 = A t^2 + B t + C. */
 struct piece {
 	double t0, t1, A, B, C, r2, s;
 };
-
-static double dot3(const double a[3], const double b[3])
-{
-	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 
 /* Piece k (0: the sphere or the cap at a; 1: the body; 2: the cap at b) of
  * component p along the ray; false when the ray is nowhere within reach. */
@@ -42,7 +38,7 @@ static bool piece_of(const scene_blob_part *p, int k, const double ro[3], const 
 		for (int i = 0; i < 3; i++)
 			o[i] = ro[i], d[i] = rd[i];
 	}
-	double ax[3] = { p->b[0] - p->a[0], p->b[1] - p->a[1], p->b[2] - p->a[2] }, len = sqrt(dot3(ax, ax));
+	double ax[3] = { p->b[0] - p->a[0], p->b[1] - p->a[1], p->b[2] - p->a[2] }, len = sqrt(vec3_dot(ax, ax));
 	bool sphere = !(len > 0);
 	if (sphere && k > 0)
 		return false;
@@ -53,17 +49,17 @@ static bool piece_of(const scene_blob_part *p, int k, const double ro[3], const 
 		for (int i = 0; i < 3; i++)
 			ax[i] /= len;
 		double wa[3] = { o[0] - p->a[0], o[1] - p->a[1], o[2] - p->a[2] };
-		s0 = dot3(wa, ax);
-		ds = dot3(d, ax);
+		s0 = vec3_dot(wa, ax);
+		ds = vec3_dot(d, ax);
 		if (k == 1) {   /* the body: the distance to the axis */
-			double ws = dot3(w, ax);
+			double ws = vec3_dot(w, ax);
 			for (int i = 0; i < 3; i++) {
 				w[i] -= ws * ax[i];
 				dd[i] -= ds * ax[i];
 			}
 		}
 	}
-	double A = dot3(dd, dd), B = 2 * dot3(dd, w), C = dot3(w, w), r2 = p->r * p->r;
+	double A = vec3_dot(dd, dd), B = 2 * vec3_dot(dd, w), C = vec3_dot(w, w), r2 = p->r * p->r;
 	double t0 = -INFINITY, t1 = INFINITY;
 	if (A > 0) {
 		double disc = B * B - 4 * A * (C - r2);
@@ -136,15 +132,15 @@ static double part_field(const scene_blob_part *p, const double bx[3], double g[
 	double x[3] = { bx[0], bx[1], bx[2] };
 	if (p->xformed)
 		scene_xform_point(&p->inv, bx, x);
-	double ax[3] = { p->b[0] - p->a[0], p->b[1] - p->a[1], p->b[2] - p->a[2] }, len = sqrt(dot3(ax, ax));
+	double ax[3] = { p->b[0] - p->a[0], p->b[1] - p->a[1], p->b[2] - p->a[2] }, len = sqrt(vec3_dot(ax, ax));
 	double v[3] = { x[0] - p->a[0], x[1] - p->a[1], x[2] - p->a[2] };
 	if (len > 0) {   /* from the nearest point of the axis */
-		double s = dot3(v, ax) / (len * len);
+		double s = vec3_dot(v, ax) / (len * len);
 		s = s < 0 ? 0 : s > 1 ? 1 : s;
 		for (int i = 0; i < 3; i++)
 			v[i] -= s * ax[i];
 	}
-	double r2 = p->r * p->r, d2 = dot3(v, v);
+	double r2 = p->r * p->r, d2 = vec3_dot(v, v);
 	if (d2 >= r2)
 		return 0;
 	double u = 1 - d2 / r2, gl[3];

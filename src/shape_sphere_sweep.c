@@ -32,11 +32,7 @@
 #include "roots.h"
 #include "shape.h"
 #include "sweep.h"
-
-static double dot3(const double a[3], const double b[3])
-{
-	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+#include "vec3.h"
 
 /* POV-Ray's basis matrices: row k gives the weights of the four spheres in u^k. */
 static const double catmull_rom[4][4] = {
@@ -107,7 +103,7 @@ static double least_power(const sweep_seg *g, const double x[3], double *best_u)
 			w[k][q] = (k == 0 ? x[q] : 0) - g->c[k][q];
 	for (int i = 0; i < 4; i++)
 		for (int j = 0; j < 4; j++)
-			f[i + j] += dot3(w[i], w[j]) - g->c[i][3] * g->c[j][3];
+			f[i + j] += vec3_dot(w[i], w[j]) - g->c[i][3] * g->c[j][3];
 	double df[6], u[6], cr[4];
 	for (int k = 0; k < 6; k++)
 		df[k] = (k + 1) * f[k + 1];
@@ -116,7 +112,7 @@ static double least_power(const sweep_seg *g, const double x[3], double *best_u)
 	for (int i = -1; i <= n; i++) {
 		double v = i < 0 ? 0 : i == n ? 1 : u[i];
 		at(g, v, cr);
-		double d[3] = { x[0] - cr[0], x[1] - cr[1], x[2] - cr[2] }, p = dot3(d, d) - cr[3] * cr[3];
+		double d[3] = { x[0] - cr[0], x[1] - cr[1], x[2] - cr[2] }, p = vec3_dot(d, d) - cr[3] * cr[3];
 		if (p < best)
 			best = p, *best_u = v;
 	}
@@ -168,7 +164,7 @@ static bool deep_inside(const sweep_seg *segs, int n, const double x[3], double 
 static int sphere_hits(const double cr[4], const double o[3], const double d[3], double lo, double hi, double t[2])
 {
 	double w[3] = { o[0] - cr[0], o[1] - cr[1], o[2] - cr[2] };
-	double A = dot3(d, d), B = dot3(w, d), C = dot3(w, w) - cr[3] * cr[3], disc = B * B - A * C;
+	double A = vec3_dot(d, d), B = vec3_dot(w, d), C = vec3_dot(w, w) - cr[3] * cr[3], disc = B * B - A * C;
 	if (!(disc > 0) || !(A > 0))
 		return 0;
 	double q = sqrt(disc), r[2] = { (-B - q) / A, (-B + q) / A };
@@ -192,16 +188,16 @@ static int envelope_roots(const sweep_seg *g, const double o[3], const double d[
 		for (int q = 0; q < 3; q++)
 			dc[k][q] = (k + 1) * g->c[k + 1][q];
 		dr[k] = (k + 1) * g->c[k + 1][3];
-		Q[k] = dot3(d, dc[k]);
+		Q[k] = vec3_dot(d, dc[k]);
 	}
 	for (int i = 0; i < 4; i++) {
-		B[i] = dot3(d, w[i]);
+		B[i] = vec3_dot(d, w[i]);
 		for (int j = 0; j < 4; j++)
-			E[i + j] += dot3(w[i], w[j]) - g->c[i][3] * g->c[j][3];
+			E[i + j] += vec3_dot(w[i], w[j]) - g->c[i][3] * g->c[j][3];
 		for (int j = 0; j < 3; j++)
-			P[i + j] += dot3(w[i], dc[j]) + g->c[i][3] * dr[j];
+			P[i + j] += vec3_dot(w[i], dc[j]) + g->c[i][3] * dr[j];
 	}
-	double A = dot3(d, d);
+	double A = vec3_dot(d, d);
 	for (int i = 0; i < 6; i++)
 		for (int j = 0; j < 6; j++) {
 			F[i + j] += A * P[i] * P[j];
@@ -294,7 +290,7 @@ static void trace(const scene *s, const scene_object *o, const double ro[3], con
 {
 	int n;
 	sweep_seg *g = segments(s, o, &n);
-	double len = sqrt(dot3(rd, rd));
+	double len = sqrt(vec3_dot(rd, rd));
 	if (!g || !(len > 0)) {
 		free(g);
 		return;

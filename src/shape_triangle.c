@@ -6,6 +6,7 @@
 
 #include "lower.h"
 #include "shape.h"
+#include "vec3.h"
 
 static void bounds(const scene *s, const scene_object *o, double lo[3], double hi[3])
 {
@@ -15,18 +16,6 @@ static void bounds(const scene *s, const scene_object *o, double lo[3], double h
 		scene_xform_point(&o->xf, o->p[i], w);
 		shape_grow_box(lo, hi, w);
 	}
-}
-
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-	out[0] = a[1] * b[2] - a[2] * b[1];
-	out[1] = a[2] * b[0] - a[0] * b[2];
-	out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot3(const double a[3], const double b[3])
-{
-	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
 /* Moeller-Trumbore; the normal is the flat one, or the corners' normals (nrm,
@@ -42,13 +31,13 @@ void shape_trace_triangle(const double *a, const double *b, const double *c, con
 		e2[i] = c[i] - a[i];
 		s[i] = o[i] - a[i];
 	}
-	cross3(d, e2, p);
-	double det = dot3(e1, p);
+	vec3_cross(d, e2, p);
+	double det = vec3_dot(e1, p);
 	if (fabs(det) < 1e-300)
 		return;
-	double u = dot3(s, p) / det;
-	cross3(s, e1, q);
-	double v = dot3(d, q) / det, t = dot3(e2, q) / det;
+	double u = vec3_dot(s, p) / det;
+	vec3_cross(s, e1, q);
+	double v = vec3_dot(d, q) / det, t = vec3_dot(e2, q) / det;
 	if (u < 0 || v < 0 || u + v > 1 || !(t > tmin && t < h->t))
 		return;
 	double n[3];
@@ -56,8 +45,8 @@ void shape_trace_triangle(const double *a, const double *b, const double *c, con
 		for (int i = 0; i < 3; i++)
 			n[i] = (1 - u - v) * nrm[0][i] + u * nrm[1][i] + v * nrm[2][i];
 	else
-		cross3(e1, e2, n);
-	if (dot3(n, d) > 0)
+		vec3_cross(e1, e2, n);
+	if (vec3_dot(n, d) > 0)
 		for (int i = 0; i < 3; i++)
 			n[i] = -n[i];
 	h->t = t;
