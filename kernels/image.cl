@@ -89,9 +89,19 @@ static bool image_pos(const scene_data *sc, global const dev_pattern *pt, float3
 	return true;
 }
 
+/* POV-Ray's bicubic weights (Catmull-Rom) of the four texels about a point p
+ * of the way from the second to the third. */
+static inline float4 image_cubic(float p)
+{
+	float q = 1.0f - p;
+	return (float4)(-0.5f * p * q * q, 0.5f * q * (q * (3.0f * p + 1.0f) + 1.0f),
+	                0.5f * p * (p * (3.0f * q + 1.0f) + 1.0f), -0.5f * q * p * p);
+}
+
 /* The colour (plane 0) or the filter (plane 1) at texel position (x, y): the
  * texel, or POV-Ray's interpolation of four (2 bilinear, 4 normalized
- * distance), unmultiplied by alpha where the image is premultiplied. */
+ * distance) or sixteen (3 bicubic), unmultiplied by alpha where the image is
+ * premultiplied. */
 static float4 image_at_plane(const scene_data *sc, global const dev_pattern *pt, float x, float y, int plane)
 {
 	global const dev_image *im = &sc->images[(int)pt->params[0].x];
@@ -99,6 +109,16 @@ static float4 image_at_plane(const scene_data *sc, global const dev_pattern *pt,
 	float4 c;
 	if (interp == 0) {
 		c = image_texel(sc, im, plane, x, y, once);
+	} else if (interp == 3) {
+		x += 0.5f;
+		y += 0.5f;
+		float fx = floor(x), fy = floor(y);
+		float4 wx = image_cubic(x - fx), wy = image_cubic(y - fy);
+		float cx[4] = { wx.x, wx.y, wx.z, wx.w }, cy[4] = { wy.x, wy.y, wy.z, wy.w };
+		c = (float4)(0.0f);
+		for (int j = 0; j < 4; j++)
+			for (int i = 0; i < 4; i++)
+				c += cx[i] * cy[j] * image_texel(sc, im, plane, fx + (float)(i - 2), fy + (float)(j - 2), once);
 	} else {
 		x += 0.5f;
 		y += 0.5f;

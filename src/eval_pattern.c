@@ -986,10 +986,7 @@ static int image_map_item(struct eval *e, const ast_node *n, struct image_map_re
 			eval_error(e, n->loc, "interpolate is 2 (bilinear), 3 (bicubic) or 4 (normalized distance)");
 			return -1;
 		}
-		if (k == 3)
-			eval_warn_once(e, n->loc, "interpolate 3", "interpolate 3 (bicubic) is not supported yet; "
-			               "using 2 (bilinear)");
-		r->pg->params[0][2] = k == 3 ? 2 : k;
+		r->pg->params[0][2] = k;
 		break;
 	case IM_GAMMA:
 		if (eval_expect_float(e, n, &r->gamma))
