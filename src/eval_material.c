@@ -457,7 +457,7 @@ static bool list_pattern(int kind)
 {
 	switch (kind) {
 	case PATTERN_CHECKER: case PATTERN_HEXAGON: case PATTERN_BRICK: case PATTERN_SQUARE:
-	case PATTERN_TRIANGULAR: case PATTERN_CUBIC:
+	case PATTERN_TRIANGULAR: case PATTERN_CUBIC: case PATTERN_OBJECT:
 		return true;
 	default:
 		return false;
@@ -546,6 +546,11 @@ static void start_pattern(struct pattern *p, const ast_node *item, const char *n
 	snprintf(p->name, sizeof p->name, "%s", name);
 	eval_pattern_defaults(&p->pg, p->kind > 0 ? p->kind : PATTERN_SOLID, item->loc);
 }
+
+/* What an object pattern's list holds (object_pattern). */
+enum object_list { OBJECT_LIST_PIGMENTS, OBJECT_LIST_TEXTURES, OBJECT_LIST_NORMALS };
+static int object_pattern(struct eval *e, const ast_node *b, struct pattern *p, scene_material *m,
+                          enum object_list what);
 
 /* A pattern keyword with its argument (gradient x), or a pattern that is no
  * eclat keyword (cubic, square...): starts the pattern. 1 when item is none. */
@@ -818,10 +823,11 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 			p->map[k] = p->pg.map[0].colour[k];
 		return 0;
 	}
+	if (item->kind == AST_BLOCK && item->kw == KW_OBJECT)
+		return object_pattern(e, item, p, m, OBJECT_LIST_PIGMENTS);
 	if ((item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) ||
-	    item->kind == AST_FUNCTION || (item->kind == AST_BLOCK && item->kw == KW_OBJECT)) {
-		const char *name = item->kind == AST_FUNCTION ? "function" : item->kw == KW_OBJECT ? "object" : item->str;
-		start_pattern(p, item, name);   /* image_map, object... */
+	    item->kind == AST_FUNCTION) {
+		start_pattern(p, item, item->kind == AST_FUNCTION ? "function" : item->str);   /* image_map... */
 		return 0;
 	}
 	if (item->kind == AST_FLAG && item->kw == KW_ONCE)
@@ -1208,9 +1214,11 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	if ((skip = image_pattern_block(e, item, p)) <= 0 || (skip = material_map_block(e, item, p)) <= 0 ||
 	    (skip = misplaced_image(e, item, "a texture")) <= 0)
 		return skip;
-	if ((item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str) &&
-	     strcmp(eval_pov_word(item->str), "other") != 0) || (item->kind == AST_BLOCK && item->kw == KW_OBJECT)) {
-		start_pattern(p, item, item->kw == KW_OBJECT ? "object" : item->str);   /* slope { }, object { } */
+	if (item->kind == AST_BLOCK && item->kw == KW_OBJECT)
+		return object_pattern(e, item, p, m, OBJECT_LIST_TEXTURES);
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str) &&
+	    strcmp(eval_pov_word(item->str), "other") != 0) {
+		start_pattern(p, item, item->str);   /* slope { } */
 		return 0;
 	}
 	if (item->kind == AST_BLOCK && item->kw == KW_TEXTURE_MAP && p->at)
@@ -1477,6 +1485,41 @@ static bool ignored_item(struct eval *e, const ast_node *item)
 	       item->kind == AST_FLAG || eval_transform_item(e, NULL, item, &t) > 0;
 }
 
+/* object { OBJECT | OBJECT_IDENTIFIER [ITEM_A, ITEM_B] }: POV-Ray's object
+ * pattern, 1 inside the object and 0 outside (eval_pattern_object makes the
+ * object), so that the list's first item is outside and its second inside;
+ * a map after the block replaces the list. */
+static int object_pattern(struct eval *e, const ast_node *b, struct pattern *p, scene_material *m,
+                          enum object_list what)
+{
+	static const int kws[] = { KW_PIGMENT, KW_TEXTURE, KW_NORMAL };
+	struct cursor c;
+	int err = 0, rc = 0, csg = -1;
+	start_pattern(p, b, scene_pattern_name(PATTERN_OBJECT));
+	eval_cursor_init(&c, e, b);
+	const ast_node *item = eval_next(&c, &err);
+	if (!item && !err) {
+		eval_error(e, b->loc, "an object pattern needs an object first");
+		rc = -1;
+	}
+	if (item && (rc = eval_pattern_object(e, item, &csg)) == 0)
+		p->pg.params[0][0] = csg;
+	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+		bool listed = (item->kind == AST_BLOCK && item->kw == kws[what]) ||
+		              (what == OBJECT_LIST_PIGMENTS && AST_IS_EXPRESSION(item->kind));
+		if (!listed)
+			rc = eval_not_valid(e, item, "an object pattern's list");
+		else if (what == OBJECT_LIST_PIGMENTS)
+			rc = pigment_item(e, &c, item, p, m);
+		else if (what == OBJECT_LIST_TEXTURES)
+			rc = texture_item(e, &c, item, p, m, false);
+		else
+			rc = normal_entries(e, item, &p->pg);
+	}
+	eval_cursor_free(&c);
+	return rc || err ? -1 : 0;
+}
+
 /* p as a copy of the normal pattern base (its slope_map too), started at at. */
 static void copy_normal(struct eval *e, struct pattern *p, int base_index, const ast_node *at)
 {
@@ -1544,6 +1587,13 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		value v;
 		if (is_uv_mapping(e, item)) {   /* a declared normal may follow it */
 			p.uv = true;
+			continue;
+		}
+		if (item->kind == AST_BLOCK && item->kw == KW_OBJECT) {
+			rc = object_pattern(e, item, &p, m, OBJECT_LIST_NORMALS);
+			normal_restart(&p.pg, &nb);
+			amount = false;
+			first = false;
 			continue;
 		}
 		if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_BUMP_MAP) == 0) {
