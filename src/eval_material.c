@@ -547,6 +547,16 @@ static void start_pattern(struct pattern *p, const ast_node *item, const char *n
 	eval_pattern_defaults(&p->pg, p->kind > 0 ? p->kind : PATTERN_SOLID, item->loc);
 }
 
+/* A map after an object pattern: POV-Ray's "Cannot use color_map with this
+ * pattern type" (and its pigment_map, density_map, texture_map and normal_map
+ * errors); the list in its block is all it takes. */
+static int object_map(struct eval *e, const ast_node *item)
+{
+	eval_error(e, item->loc, "an object pattern takes no %s: write its two items (outside, inside) in its "
+	           "block, after the object", ast_keyword_name(item->kw));
+	return -1;
+}
+
 /* What an object pattern's list holds (object_pattern). */
 enum object_list { OBJECT_LIST_PIGMENTS, OBJECT_LIST_TEXTURES, OBJECT_LIST_NORMALS };
 static int object_pattern(struct eval *e, const ast_node *b, struct pattern *p, scene_material *m,
@@ -600,6 +610,8 @@ static int pattern_start(struct eval *e, struct cursor *c, const ast_node *item,
 static int map_into(struct eval *e, const ast_node *item, struct pattern *p)
 {
 	value v;
+	if (p->kind == PATTERN_OBJECT)
+		return object_map(e, item);
 	if (map_block(e, item, &v))
 		return -1;
 	p->has_map = true;
@@ -1504,12 +1516,19 @@ static int object_pattern(struct eval *e, const ast_node *b, struct pattern *p, 
 	}
 	if (item && (rc = eval_pattern_object(e, item, &csg)) == 0)
 		p->pg.params[0][0] = csg;
-	while (rc == 0 && (item = eval_next(&c, &err)) != NULL) {
+	for (int n = 0; rc == 0 && (item = eval_next(&c, &err)) != NULL; n++) {
 		bool listed = (item->kind == AST_BLOCK && item->kw == kws[what]) ||
 		              (what == OBJECT_LIST_PIGMENTS && AST_IS_EXPRESSION(item->kind));
-		if (!listed)
+		if (!listed) {
 			rc = eval_not_valid(e, item, "an object pattern's list");
-		else if (what == OBJECT_LIST_PIGMENTS)
+		} else if (n == 2) {   /* POV-Ray's Parse_Blend_List (2) stops there and wants the '}' */
+			eval_error(e, item->loc, "an object pattern's list holds two items, outside and inside; "
+			           "found a third");
+			rc = -1;
+		}
+		if (rc)
+			break;
+		if (what == OBJECT_LIST_PIGMENTS)
 			rc = pigment_item(e, &c, item, p, m);
 		else if (what == OBJECT_LIST_TEXTURES)
 			rc = texture_item(e, &c, item, p, m, false);
@@ -1636,6 +1655,8 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		} else if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
 			eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
 			rc = 0;
+		} else if (p.at && p.kind == PATTERN_OBJECT && item->kind == AST_BLOCK && item->kw == KW_NORMAL_MAP) {
+			rc = object_map(e, item);
 		} else if (p.at && p.kind > 0 && p.kind != PATTERN_FACETS && item->kind == AST_BLOCK &&
 		           (item->kw == KW_NORMAL_MAP || item->kw == KW_NORMAL)) {
 			rc = normal_entries(e, item, &p.pg);
