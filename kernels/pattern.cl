@@ -893,14 +893,19 @@ static float pattern_plain(global const dev_pattern *pt, global const dev_warp *
  * wave (its frequency is 0). The object is a CSG record that no BVH holds
  * (lowering's place_object_patterns), asked as a CSG asks a point that is on
  * none of its leaves; none (-1) is inside nowhere, as POV-Ray's open shapes
- * are. Only here, not in pattern_plain: a leaf's inside test may run the
- * scene's functions, which call pattern_plain, and OpenCL C has no recursion. */
+ * are. Built only for a scene that has one (OBJECT_PATTERNS, lowering's
+ * option): the CSG code it reaches costs every cold build a quarter more,
+ * and the pattern tests build this file without it. Only here, not in
+ * pattern_plain: a leaf's inside test may run the scene's functions, which
+ * call pattern_plain, and OpenCL C has no recursion. */
 static float pattern_object(const scene_data *sc, global const dev_pattern *pt, float3 p)
 {
-	int rec = as_int(pt->params[0].x);
 	bool outside = true;
-	if (rec >= 0)
+#ifdef OBJECT_PATTERNS
+	int rec = as_int(pt->params[0].x);
+	if (rec >= 0)   /* classified as a point on none of its leaves (k -1) */
 		csg_classify(sc, sc->nodes, sc->prims, &sc->prims[rec], -1, p, &outside, sc->counts, RAY_SHADOW);
+#endif
 	return pattern_wave(pt, outside ? 0.0f : 1.0f);
 }
 

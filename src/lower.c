@@ -1038,13 +1038,14 @@ static int widen_trees(lower_result *out)
 
 const char *lower_kernel_options(const lower_result *lr)
 {
-	static _Thread_local char buf[192];
+	static _Thread_local char buf[256];
 	int k = lr->kernels;
 	char levels[32] = "";
 	if (lr->functions && lr->function_levels > 1)
 		snprintf(levels, sizeof levels, " -DFUNCTION_LEVELS=%d", lr->function_levels);
-	snprintf(buf, sizeof buf, "-cl-std=CL1.2%s%s%s%s%s%s%s%s", lr->layout == LOWER_LAYOUT_WIDE ? " -DBVH_WIDE=1" : "",
-	         lr->functions ? " -DSCENE_FUNCTIONS=1" : "", levels, k ? " -DKERNELS_SOME=1" : "",
+	snprintf(buf, sizeof buf, "-cl-std=CL1.2%s%s%s%s%s%s%s%s%s", lr->layout == LOWER_LAYOUT_WIDE ? " -DBVH_WIDE=1" : "",
+	         lr->functions ? " -DSCENE_FUNCTIONS=1" : "", levels, lr->object_patterns ? " -DOBJECT_PATTERNS=1" : "",
+	         k ? " -DKERNELS_SOME=1" : "",
 	         k & LOWER_KERNELS_PATH ? " -DKERNELS_PATH=1" : "", k & LOWER_KERNELS_WHITTED ? " -DKERNELS_WHITTED=1" : "",
 	         k & LOWER_KERNELS_WHITTED_AA1 ? " -DKERNELS_WHITTED_AA1=1" : "",
 	         k & LOWER_KERNELS_WHITTED_AA2 ? " -DKERNELS_WHITTED_AA2=1" : "");
@@ -1053,7 +1054,9 @@ const char *lower_kernel_options(const lower_result *lr)
 
 /* Each object pattern's params[0].x, its object's index in scene.csgs until
  * now, becomes the int bits of that object's PRIM_CSG record, which join put
- * after every BVH's primitives, or -1 for none. */
+ * after every BVH's primitives, or -1 for none. The kernels classify points
+ * for them only when the scene has one (OBJECT_PATTERNS): the CSG code
+ * under pattern_at costs every other scene's cold build a quarter more. */
 static void place_object_patterns(const struct lowering *lw, const scene *s, lower_result *out)
 {
 	int data_base = out->n_all_prims - lw->data.n;
@@ -1061,6 +1064,7 @@ static void place_object_patterns(const struct lowering *lw, const scene *s, low
 		dev_pattern *pt = &out->textures.patterns[i];
 		if (pt->kind != PATTERN_OBJECT)
 			continue;
+		out->object_patterns = 1;
 		int g = (int)pt->params[0].x;
 		int rec = g >= 0 && g < s->n_csgs && lw->pattern_csg[g] >= 0 ? data_base + lw->pattern_csg[g] : -1;
 		memcpy(&pt->params[0].x, &rec, sizeof rec);
