@@ -1499,8 +1499,9 @@ static bool ignored_item(struct eval *e, const ast_node *item)
 
 /* object { OBJECT | OBJECT_IDENTIFIER [ITEM_A, ITEM_B] }: POV-Ray's object
  * pattern, 1 inside the object and 0 outside (eval_pattern_object makes the
- * object), so that the list's first item is outside and its second inside;
- * a map after the block replaces the list. */
+ * object), so that the list's first item is outside and its second inside
+ * (pigments or colours, textures, normals: what) and, as in POV-Ray, no map
+ * may follow the block (object_map). */
 static int object_pattern(struct eval *e, const ast_node *b, struct pattern *p, scene_material *m,
                           enum object_list what)
 {
