@@ -888,6 +888,27 @@ static float pattern_plain(global const dev_pattern *pt, global const dev_warp *
 	return pattern_wave(pt, v);
 }
 
+/* object (POV-Ray's object_pattern): 1 where p is inside the object, whose
+ * own transformations placed it in the pattern's space, else 0, through the
+ * wave (its frequency is 0). The object is a CSG record that no BVH holds
+ * (lowering's place_object_patterns), asked as a CSG asks a point that is on
+ * none of its leaves; none (-1) is inside nowhere, as POV-Ray's open shapes
+ * are. Built only for a scene that has one (OBJECT_PATTERNS, lowering's
+ * option): the CSG code it reaches costs every cold build a quarter more,
+ * and the pattern tests build this file without it. Only here, not in
+ * pattern_plain: a leaf's inside test may run the scene's functions, which
+ * call pattern_plain, and OpenCL C has no recursion. */
+static float pattern_object(const scene_data *sc, global const dev_pattern *pt, float3 p)
+{
+	bool outside = true;
+#ifdef OBJECT_PATTERNS
+	int rec = as_int(pt->params[0].x);
+	if (rec >= 0)   /* classified as a point on none of its leaves (k -1) */
+		csg_classify(sc, sc->nodes, sc->prims, &sc->prims[rec], -1, p, &outside, sc->counts, RAY_SHADOW);
+#endif
+	return pattern_wave(pt, outside ? 0.0f : 1.0f);
+}
+
 /* The value of the pattern pt at p, a point in the pattern's space (pt->rows
  * already applied); n, the unit shading normal, and d, the ray's direction,
  * both in world space, serve only aoi and slope. Continuous patterns give [0, 1] (some,
@@ -898,6 +919,8 @@ static float pattern_plain(global const dev_pattern *pt, global const dev_warp *
  * points around the warped one. n and d as for pattern_value. */
 static float pattern_at(const scene_data *sc, global const dev_pattern *pt, float3 p, float3 n, float3 d)
 {
+	if (pt->kind == PATTERN_OBJECT)
+		return pattern_object(sc, pt, p);
 	if (pt->kind != PATTERN_FUNCTION)
 		return pattern_plain(pt, sc->warps, p, n, d);
 	/* POV-Ray wraps values above 1, not those below 0 */

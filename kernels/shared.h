@@ -275,6 +275,7 @@ enum {                       /* ORDER: the names in src/eval_pattern.c */
 	PATTERN_DENSITY_FILE,   /* a df3 file's voxels in the unit cube: image.cl */
 	PATTERN_TILING,      /* POV-Ray's 27 tilings of the x-z plane: kernels/pattern_tiling.cl */
 	PATTERN_PAVEMENT,    /* POV-Ray's pavings by polyforms: kernels/pattern_pavement.cl */
+	PATTERN_OBJECT,      /* 1 inside an object, 0 outside: its CSG record (csg.cl) */
 	PATTERN_COUNT
 };
 /* POV-Ray's wave types, applied to a continuous pattern's value. */
@@ -368,6 +369,8 @@ typedef struct {
  *              (2-33; magnet: its type, 1 or 2, plus 2 in the julia form),
  *              zw the julia constant; params[1].x the interior type (0),
  *              y its factor (1), z the exterior type (1), w its factor (1)
+ *   object:    params[0].x the int bits of the PRIM_CSG record (prims) of its
+ *              object, which no BVH holds, or -1: inside nowhere
  *   granite, leopard, ...: none */
 typedef struct {
 	float4 rows[3];

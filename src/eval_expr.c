@@ -973,6 +973,11 @@ int eval_pattern_points(struct eval *e, src_loc loc, int pigment, bool colour, i
 {
 	/* the globals the render will have, as far as the scene has read */
 	scene *s = e->s;
+	if (eval_pigment_has_object(s, pigment)) {   /* its object is lowered with the scene, after reading */
+		eval_error(e, loc, "this pattern function holds an object pattern, which eclat runs on surfaces only, "
+		           "not while it reads the scene");
+		return -1;
+	}
 	int generator = s->noise_generator;
 	float gamma = s->film_gamma;
 	if (!e->noise_given)

@@ -137,6 +137,23 @@ static bool too_deep(const scene *s, int pigment)
 	return scene_pigment_levels(s, pigment) >= SCENE_FUNCTION_LEVELS_MAX;
 }
 
+/* Whether pigment's tree holds an object pattern, which only a surface's
+ * patterns run (kernels/pattern.cl's pattern_at): a function's patterns are
+ * read by pattern_plain, below the functions an object's isosurface may call,
+ * and OpenCL C has no recursion. Pigments name earlier ones only. */
+bool eval_pigment_has_object(const scene *s, int pigment)
+{
+	if (pigment < 0 || pigment >= s->n_pigments)
+		return false;
+	const scene_pigment *p = &s->pigments[pigment];
+	if (p->kind == PATTERN_OBJECT)
+		return true;
+	for (int i = 0; i < p->n_map; i++)
+		if (p->map[i].pigment < pigment && eval_pigment_has_object(s, p->map[i].pigment))
+			return true;
+	return false;
+}
+
 int eval_function_pigment(struct eval *e, const ast_node *def, scene_material *out)
 {
 	ast_node block = *eval_function_pattern_body(def);
@@ -157,6 +174,13 @@ int eval_function_pigment_pattern(struct eval *e, const ast_node *b, const char 
 	if (eval_material_value(e, &block, &v))
 		return -1;
 	eval_value_free(&v);
+	if (eval_pigment_has_object(e->s, v.mat.pattern)) {
+		bool skipped = false;
+		fallback = instead;
+		unsupported(e, &skipped, b->loc, "this pigment_pattern's pigment holds an object pattern, which eclat "
+		            "runs on surfaces only, not in functions");
+		return skipped ? 1 : -1;
+	}
 	if (too_deep(e->s, v.mat.pattern)) {
 		bool skipped = false;
 		fallback = instead;
@@ -189,6 +213,9 @@ static int function_pigment(struct fcomp *c, const value *fn, const char *name, 
 		return unsupported(c->e, c->skipped, use, "'%s' is a pattern or pigment function, which a "
 		                   "parametric's function cannot call yet (a pigment's function pattern, an isosurface's "
 		                   "and a height_field's can)", name);
+	if (eval_pigment_has_object(c->e->s, fn->mat.pattern))
+		return unsupported(c->e, c->skipped, use, "'%s' holds an object pattern, which eclat runs on surfaces "
+		                   "only, not in functions", name);
 	if (too_deep(c->e->s, fn->mat.pattern))
 		return unsupported(c->e, c->skipped, use, "'%s' runs function patterns nested %d deep, more than "
 		                   "eclat's kernels run (%d)", name, scene_pigment_levels(c->e->s, fn->mat.pattern),

@@ -445,6 +445,10 @@ int eval_light(struct eval *e, const ast_node *b, value *out);
 int eval_scene_statement(struct eval *e, const ast_node *b);
 int eval_default(struct eval *e, const ast_node *d);
 void eval_place(struct eval *e, value *obj);
+/* An object pattern's object, item, into the scene as a CSG no ray meets; its index. */
+int eval_pattern_object(struct eval *e, const ast_node *item, int *csg);
+/* Whether pigment's tree holds an object pattern, which no function runs (eval_function.c). */
+bool eval_pigment_has_object(const scene *s, int pigment);
 /* Complains about an item a block does not accept. */
 int eval_not_valid(struct eval *e, const ast_node *item, const char *where);
 int eval_skip_pov_word(struct eval *e, struct cursor *c, const ast_node *item);

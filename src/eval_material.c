@@ -457,7 +457,7 @@ static bool list_pattern(int kind)
 {
 	switch (kind) {
 	case PATTERN_CHECKER: case PATTERN_HEXAGON: case PATTERN_BRICK: case PATTERN_SQUARE:
-	case PATTERN_TRIANGULAR: case PATTERN_CUBIC:
+	case PATTERN_TRIANGULAR: case PATTERN_CUBIC: case PATTERN_OBJECT:
 		return true;
 	default:
 		return false;
@@ -547,6 +547,21 @@ static void start_pattern(struct pattern *p, const ast_node *item, const char *n
 	eval_pattern_defaults(&p->pg, p->kind > 0 ? p->kind : PATTERN_SOLID, item->loc);
 }
 
+/* A map after an object pattern: POV-Ray's "Cannot use color_map with this
+ * pattern type" (and its pigment_map, density_map, texture_map and normal_map
+ * errors); the list in its block is all it takes. */
+static int object_map(struct eval *e, const ast_node *item)
+{
+	eval_error(e, item->loc, "an object pattern takes no %s: write its two items (outside, inside) in its "
+	           "block, after the object", ast_keyword_name(item->kw));
+	return -1;
+}
+
+/* What an object pattern's list holds (object_pattern). */
+enum object_list { OBJECT_LIST_PIGMENTS, OBJECT_LIST_TEXTURES, OBJECT_LIST_NORMALS };
+static int object_pattern(struct eval *e, const ast_node *b, struct pattern *p, scene_material *m,
+                          enum object_list what);
+
 /* A pattern keyword with its argument (gradient x), or a pattern that is no
  * eclat keyword (cubic, square...): starts the pattern. 1 when item is none. */
 static int pattern_start(struct eval *e, struct cursor *c, const ast_node *item, struct pattern *p)
@@ -595,6 +610,8 @@ static int pattern_start(struct eval *e, struct cursor *c, const ast_node *item,
 static int map_into(struct eval *e, const ast_node *item, struct pattern *p)
 {
 	value v;
+	if (p->kind == PATTERN_OBJECT)
+		return object_map(e, item);
 	if (map_block(e, item, &v))
 		return -1;
 	p->has_map = true;
@@ -818,10 +835,11 @@ static int pigment_item(struct eval *e, struct cursor *c, const ast_node *item, 
 			p->map[k] = p->pg.map[0].colour[k];
 		return 0;
 	}
+	if (item->kind == AST_BLOCK && item->kw == KW_OBJECT)
+		return object_pattern(e, item, p, m, OBJECT_LIST_PIGMENTS);
 	if ((item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) ||
-	    item->kind == AST_FUNCTION || (item->kind == AST_BLOCK && item->kw == KW_OBJECT)) {
-		const char *name = item->kind == AST_FUNCTION ? "function" : item->kw == KW_OBJECT ? "object" : item->str;
-		start_pattern(p, item, name);   /* image_map, object... */
+	    item->kind == AST_FUNCTION) {
+		start_pattern(p, item, item->kind == AST_FUNCTION ? "function" : item->str);   /* image_map... */
 		return 0;
 	}
 	if (item->kind == AST_FLAG && item->kw == KW_ONCE)
@@ -1208,9 +1226,11 @@ static int texture_item(struct eval *e, struct cursor *c, const ast_node *item, 
 	if ((skip = image_pattern_block(e, item, p)) <= 0 || (skip = material_map_block(e, item, p)) <= 0 ||
 	    (skip = misplaced_image(e, item, "a texture")) <= 0)
 		return skip;
-	if ((item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str) &&
-	     strcmp(eval_pov_word(item->str), "other") != 0) || (item->kind == AST_BLOCK && item->kw == KW_OBJECT)) {
-		start_pattern(p, item, item->kw == KW_OBJECT ? "object" : item->str);   /* slope { }, object { } */
+	if (item->kind == AST_BLOCK && item->kw == KW_OBJECT)
+		return object_pattern(e, item, p, m, OBJECT_LIST_TEXTURES);
+	if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str) &&
+	    strcmp(eval_pov_word(item->str), "other") != 0) {
+		start_pattern(p, item, item->str);   /* slope { } */
 		return 0;
 	}
 	if (item->kind == AST_BLOCK && item->kw == KW_TEXTURE_MAP && p->at)
@@ -1477,6 +1497,49 @@ static bool ignored_item(struct eval *e, const ast_node *item)
 	       item->kind == AST_FLAG || eval_transform_item(e, NULL, item, &t) > 0;
 }
 
+/* object { OBJECT | OBJECT_IDENTIFIER [ITEM_A, ITEM_B] }: POV-Ray's object
+ * pattern, 1 inside the object and 0 outside (eval_pattern_object makes the
+ * object), so that the list's first item is outside and its second inside
+ * (pigments or colours, textures, normals: what) and, as in POV-Ray, no map
+ * may follow the block (object_map). */
+static int object_pattern(struct eval *e, const ast_node *b, struct pattern *p, scene_material *m,
+                          enum object_list what)
+{
+	static const int kws[] = { KW_PIGMENT, KW_TEXTURE, KW_NORMAL };
+	struct cursor c;
+	int err = 0, rc = 0, csg = -1;
+	start_pattern(p, b, scene_pattern_name(PATTERN_OBJECT));
+	eval_cursor_init(&c, e, b);
+	const ast_node *item = eval_next(&c, &err);
+	if (!item && !err) {
+		eval_error(e, b->loc, "an object pattern needs an object first");
+		rc = -1;
+	}
+	if (item && (rc = eval_pattern_object(e, item, &csg)) == 0)
+		p->pg.params[0][0] = csg;
+	for (int n = 0; rc == 0 && (item = eval_next(&c, &err)) != NULL; n++) {
+		bool listed = (item->kind == AST_BLOCK && item->kw == kws[what]) ||
+		              (what == OBJECT_LIST_PIGMENTS && AST_IS_EXPRESSION(item->kind));
+		if (!listed) {
+			rc = eval_not_valid(e, item, "an object pattern's list");
+		} else if (n == 2) {   /* POV-Ray's Parse_Blend_List (2) stops there and wants the '}' */
+			eval_error(e, item->loc, "an object pattern's list holds two items, outside and inside; "
+			           "found a third");
+			rc = -1;
+		}
+		if (rc)
+			break;
+		if (what == OBJECT_LIST_PIGMENTS)
+			rc = pigment_item(e, &c, item, p, m);
+		else if (what == OBJECT_LIST_TEXTURES)
+			rc = texture_item(e, &c, item, p, m, false);
+		else
+			rc = normal_entries(e, item, &p->pg);
+	}
+	eval_cursor_free(&c);
+	return rc || err ? -1 : 0;
+}
+
 /* p as a copy of the normal pattern base (its slope_map too), started at at. */
 static void copy_normal(struct eval *e, struct pattern *p, int base_index, const ast_node *at)
 {
@@ -1546,6 +1609,13 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 			p.uv = true;
 			continue;
 		}
+		if (item->kind == AST_BLOCK && item->kw == KW_OBJECT) {
+			rc = object_pattern(e, item, &p, m, OBJECT_LIST_NORMALS);
+			normal_restart(&p.pg, &nb);
+			amount = false;
+			first = false;
+			continue;
+		}
 		if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && strcmp(item->str, AST_WORD_BUMP_MAP) == 0) {
 			start_pattern(&p, item, AST_WORD_BUMP_MAP);
 			normal_restart(&p.pg, &nb);   /* its bump_size, or the amount after it, may change it */
@@ -1586,6 +1656,8 @@ static int normal_block(struct eval *e, const ast_node *b, scene_material *m)
 		} else if (item->kind == AST_BLOCK && item->kw == KW_UNKNOWN && eval_pov_word(item->str)) {
 			eval_warn_once(e, item->loc, item->str, "'%s' is not supported yet; ignored", item->str);
 			rc = 0;
+		} else if (p.at && p.kind == PATTERN_OBJECT && item->kind == AST_BLOCK && item->kw == KW_NORMAL_MAP) {
+			rc = object_map(e, item);
 		} else if (p.at && p.kind > 0 && p.kind != PATTERN_FACETS && item->kind == AST_BLOCK &&
 		           (item->kw == KW_NORMAL_MAP || item->kw == KW_NORMAL)) {
 			rc = normal_entries(e, item, &p.pg);

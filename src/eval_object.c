@@ -1612,6 +1612,57 @@ void eval_place(struct eval *e, value *v)
 	}
 }
 
+/* The object of an object pattern, item (an object or an object identifier:
+ * POV-Ray's Parse_Bound_Clip there, which takes one): put into the scene as a
+ * CSG object flagged pattern, the union of its parts, whose leaves no ray
+ * meets; only the pattern asks its inside (POV-Ray's Inside_Object). Its
+ * index in scene.csgs in *csg, or -1 after an error. */
+int eval_pattern_object(struct eval *e, const ast_node *item, int *csg)
+{
+	value v = { .kind = V_NONE };
+	int rc = -1;
+	*csg = -1;
+	if (AST_IS_EXPRESSION(item->kind)) {
+		rc = eval_expr(e, item, &v);
+		if (rc == 0 && v.kind != V_OBJECT) {
+			eval_error(e, item->loc, "an object pattern needs an object, found %s", eval_kind_name(v.kind));
+			rc = -1;
+		}
+	} else if (eval_is_object_block(item)) {
+		rc = eval_object(e, item, &v);
+	} else {
+		rc = eval_not_valid(e, item, "an object pattern (expected an object or an object identifier first)");
+	}
+	if (rc == 0 && v.obj->unsupported && !e->opt->skip_unsupported) {
+		eval_error(e, v.obj->unsupported_loc, "'%s' is not supported yet", v.obj->unsupported);
+		rc = -1;
+	} else if (rc == 0 && v.obj->unsupported) {
+		eval_warning(e, v.obj->unsupported_loc, "'%s' is not supported yet; the object pattern leaves it out",
+		             v.obj->unsupported);
+	}
+	if (rc) {
+		eval_value_free(&v);
+		return -1;
+	}
+	struct objval *o = v.obj;
+	csg_prog p = { 0 };
+	csg_formula(o, &p, 0);
+	int first = e->s->n_objects;
+	scene_material plain = scene_default_material();   /* never shaded */
+	for (int i = 0; i < o->n_objs; i++) {
+		o->objs[i].csg = 0;
+		o->objs[i].pattern = true;
+		o->objs[i].material = plain;
+		scene_add_object(e->s, &o->objs[i]);
+	}
+	*csg = scene_add_csg(e->s, &(scene_csg){ .first = first, .n_leaves = o->n_objs, .ops = p.ops, .n_ops = p.n,
+	                                         .pattern = true, .loc = item->loc });
+	for (int k = 0; k < o->n_objs; k++)
+		e->s->objects[first + k].csg = *csg + 1;
+	eval_value_free(&v);
+	return 0;
+}
+
 /* The objects of a looks_like { OBJECT }: moved to the light, as POV-Ray does. */
 int eval_looks_like(struct eval *e, const ast_node *b, const double at[3], struct lightval *l)
 {

@@ -27,7 +27,7 @@ int eval_pattern_kind(const char *name)
 int eval_pattern_list_size(int kind)
 {
 	switch (kind) {
-	case PATTERN_CHECKER: case PATTERN_BRICK: return 2;
+	case PATTERN_CHECKER: case PATTERN_BRICK: case PATTERN_OBJECT: return 2;
 	case PATTERN_HEXAGON: return 3;
 	case PATTERN_SQUARE: return 4;
 	case PATTERN_CUBIC: case PATTERN_TRIANGULAR: return 6;
@@ -49,6 +49,7 @@ void eval_pattern_defaults(scene_pigment *pg, int kind, src_loc loc)
 		break;
 	case PATTERN_MARBLE: case PATTERN_WOOD: pg->wave = WAVE_TRIANGLE; break;
 	case PATTERN_QUILTED: pg->frequency = 0; p[0] = 1; p[1] = 1; break;
+	case PATTERN_OBJECT: pg->frequency = 0; p[0] = -1; break;   /* its object: eval_pattern_object */
 	case PATTERN_BRICK: p[0] = 8; p[1] = 3; p[2] = 4.5; p[3] = 0.5; break;
 	case PATTERN_CRACKLE: p[0] = -1; p[1] = 1; p[2] = 0; p[3] = 2; break;
 	case PATTERN_GRADIENT: p[0] = 1; break;
@@ -105,7 +106,7 @@ void eval_pattern_default_map(scene_pigment *pg)
 	case PATTERN_AGATE: MAP(map_agate); break;
 	case PATTERN_BOZO: MAP(map_bozo); break;
 	case PATTERN_BRICK: MAP(map_brick); break;
-	case PATTERN_CHECKER: MAP(map_checker); break;
+	case PATTERN_CHECKER: case PATTERN_OBJECT: MAP(map_checker); break;   /* object: POV-Ray's Check_Default_Map */
 	case PATTERN_CUBIC: case PATTERN_TRIANGULAR: MAP(map_six); break;
 	case PATTERN_SQUARE: m = map_six, n = 4; break;   /* POV-Ray's square uses its first four */
 	case PATTERN_HEXAGON: MAP(map_hexagon); break;

@@ -74,6 +74,7 @@ struct lowering {
 	int n_normals, cap_normals;
 	struct lowered_mesh *meshes;
 	int n_degenerate;
+	int *pattern_csg;           /* an object pattern's CSG (scene.csgs): its PRIM_CSG record in data, or -1 */
 };
 
 /* Lowering cannot go on without its arrays: running out of memory ends eclat. */
@@ -608,7 +609,8 @@ static dev_prim csg_leaf_box(const scene_object *o, const double lo[3], const do
 /* A CSG object: its leaves and program in the data list (kernels/csg.cl),
  * one PRIM_CSG in the top level with the box of its program, or among the
  * unbounded primitives that every ray tests when that box is not bounded (an
- * inverse, a plane). A leaf that lowers to several primitives (a flat box's
+ * inverse, a plane); an object pattern's in the data list, where no ray
+ * meets it (lw->pattern_csg says where). A leaf that lowers to several primitives (a flat box's
  * triangles) is their union; one that lowers to none is inside nowhere. The
  * leaves rays may meet come first, clipped_by's after them (link: how many
  * come first). */
@@ -722,7 +724,10 @@ static int lower_csg(struct lowering *lw, const scene *s, int index)
 		int bounded = 1;
 		for (int k = 0; k < 3; k++)
 			bounded &= blo[k] > -1e9 && bhi[k] < 1e9;
-		if (bounded) {
+		if (g->pattern) {   /* no ray meets it: only object patterns ask its inside */
+			lw->pattern_csg[index] = lw->data.n;
+			push_prim(&lw->data, c);
+		} else if (bounded) {
 			bvh_box b = float_box(blo, bhi);
 			push_prim_box(&lw->top, c, &b);
 		} else {
@@ -1035,17 +1040,37 @@ static int widen_trees(lower_result *out)
 
 const char *lower_kernel_options(const lower_result *lr)
 {
-	static _Thread_local char buf[192];
+	static _Thread_local char buf[256];
 	int k = lr->kernels;
 	char levels[32] = "";
 	if (lr->functions && lr->function_levels > 1)
 		snprintf(levels, sizeof levels, " -DFUNCTION_LEVELS=%d", lr->function_levels);
-	snprintf(buf, sizeof buf, "-cl-std=CL1.2%s%s%s%s%s%s%s%s", lr->layout == LOWER_LAYOUT_WIDE ? " -DBVH_WIDE=1" : "",
-	         lr->functions ? " -DSCENE_FUNCTIONS=1" : "", levels, k ? " -DKERNELS_SOME=1" : "",
+	snprintf(buf, sizeof buf, "-cl-std=CL1.2%s%s%s%s%s%s%s%s%s", lr->layout == LOWER_LAYOUT_WIDE ? " -DBVH_WIDE=1" : "",
+	         lr->functions ? " -DSCENE_FUNCTIONS=1" : "", levels, lr->object_patterns ? " -DOBJECT_PATTERNS=1" : "",
+	         k ? " -DKERNELS_SOME=1" : "",
 	         k & LOWER_KERNELS_PATH ? " -DKERNELS_PATH=1" : "", k & LOWER_KERNELS_WHITTED ? " -DKERNELS_WHITTED=1" : "",
 	         k & LOWER_KERNELS_WHITTED_AA1 ? " -DKERNELS_WHITTED_AA1=1" : "",
 	         k & LOWER_KERNELS_WHITTED_AA2 ? " -DKERNELS_WHITTED_AA2=1" : "");
 	return buf;
+}
+
+/* Each object pattern's params[0].x, its object's index in scene.csgs until
+ * now, becomes the int bits of that object's PRIM_CSG record, which join put
+ * after every BVH's primitives, or -1 for none. The kernels classify points
+ * for them only when the scene has one (OBJECT_PATTERNS): the CSG code
+ * under pattern_at costs every other scene's cold build a quarter more. */
+static void place_object_patterns(const struct lowering *lw, const scene *s, lower_result *out)
+{
+	int data_base = out->n_all_prims - lw->data.n;
+	for (int i = 0; i < out->textures.n_patterns; i++) {
+		dev_pattern *pt = &out->textures.patterns[i];
+		if (pt->kind != PATTERN_OBJECT)
+			continue;
+		out->object_patterns = 1;
+		int g = (int)pt->params[0].x;
+		int rec = g >= 0 && g < s->n_csgs && lw->pattern_csg[g] >= 0 ? data_base + lw->pattern_csg[g] : -1;
+		memcpy(&pt->params[0].x, &rec, sizeof rec);
+	}
 }
 
 int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
@@ -1055,8 +1080,13 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	struct lowering lw = { .opt = opt ? opt : &defaults, .s = s };
 	lw.target = &lw.top;
 	lw.meshes = calloc(s->n_meshes + 1, sizeof *lw.meshes);
-	if (!lw.meshes)
+	lw.pattern_csg = xmalloc((s->n_csgs + 1) * sizeof *lw.pattern_csg);
+	for (int g = 0; g < s->n_csgs; g++)
+		lw.pattern_csg[g] = -1;   /* an empty object, or one left out: inside nowhere */
+	if (!lw.meshes) {
+		free(lw.pattern_csg);
 		return -1;
+	}
 	int rc = 0;
 	for (int i = 0; i < s->n_objects; i++) {
 		int g = s->objects[i].csg - 1;
@@ -1130,6 +1160,9 @@ int lower_scene(const scene *s, const lower_options *opt, lower_result *out)
 	free(roots);
 	if (s->n_functions > 0 && !out->functions)
 		rc = -1;   /* said why, or out of memory: no kernel without its functions */
+	if (rc == 0)
+		place_object_patterns(&lw, s, out);
+	free(lw.pattern_csg);
 	for (int m = 0; m < s->n_meshes; m++) {
 		free(lw.meshes[m].prims.p);
 		bvh_free(&lw.meshes[m].bvh);

@@ -121,6 +121,7 @@ typedef struct {
 	int n_stats;
 	dev_params params;        /* camera and background; the renderer fills the rest */
 	int function_levels;      /* lower_function_levels: FUNCTION_LEVELS when above 1 */
+	int object_patterns;      /* some pattern is an object pattern: OBJECT_PATTERNS */
 	char *functions;          /* the scene's functions as OpenCL C (lower_function.c), built
 	                           * after the kernels' files; NULL when it has none */
 } lower_result;

@@ -88,6 +88,10 @@ int lower_camera_solids(const scene *s)
 	for (int i = 0; i < s->n_objects;) {
 		const scene_object *o = &s->objects[i];
 		int g = o->csg - 1;
+		if (o->pattern) {   /* an object pattern's: no surface a ray passes through */
+			i++;
+			continue;
+		}
 		if (g >= 0 && g < s->n_csgs && s->csgs[g].first == i) {
 			const scene_csg *c = &s->csgs[g];
 			struct leaves l = { s, o, x };

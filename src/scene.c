@@ -555,8 +555,8 @@ static void dump_object(FILE *out, const scene_object *o)
 static void dump_csg(FILE *out, int index, const scene_csg *g)
 {
 	static const char *const ops[] = { "", "leaf", "not", "and", "or", "union" };
-	fprintf(out, "%s:%d:%d: csg %d: objects %d to %d:", diag_source_name(g->loc.file), g->loc.line, g->loc.col,
-	        index, g->first, g->first + g->n_leaves - 1);
+	fprintf(out, "%s:%d:%d: csg %d: objects %d to %d%s:", diag_source_name(g->loc.file), g->loc.line, g->loc.col,
+	        index, g->first, g->first + g->n_leaves - 1, g->pattern ? " (an object pattern's)" : "");
 	for (int i = 0; i < g->n_ops; i++) {
 		int op = g->ops[i] >> CSG_OP_SHIFT, arg = g->ops[i] & ((1 << CSG_OP_SHIFT) - 1);
 		fprintf(out, " %s", op >= 1 && op <= 5 ? ops[op] : "?");
@@ -644,7 +644,7 @@ static const char *const pattern_names[] = {
 	"triangular", "waves", "wood", "wrinkles", "image_map", "function",
 	"average", "slope",
 	"mandel", "julia", "magnet", "image_pattern", "bump_map",
-	"material_map", "density_file", "tiling", "pavement",
+	"material_map", "density_file", "tiling", "pavement", "object",
 };
 _Static_assert(sizeof pattern_names / sizeof *pattern_names == PATTERN_COUNT, "a name for each pattern");
 

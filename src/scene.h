@@ -230,6 +230,7 @@ typedef struct {
 	int shape_flags;     /* SHAPE_ */
 	int csg;             /* 1 + the CSG object it is a leaf of (scene.csgs), or 0: it stands alone */
 	bool clip;           /* a clipped_by shape: it only says what is inside, and is never seen */
+	bool pattern;        /* a part of an object pattern's object (scene_csg.pattern): never seen */
 	int mesh;
 	int outline;         /* polygon, prism, text: an index into scene.outlines */
 	int function;        /* isosurface: its function (scene.functions), -1 for none */
@@ -440,6 +441,8 @@ typedef struct {
 	int first, n_leaves;
 	int *ops;
 	int n_ops;
+	bool pattern;        /* an object pattern's object (params[0][0] of its pigment): only
+	                      * its inside is asked, and it is never seen (no ray meets it) */
 	src_loc loc;
 } scene_csg;
 
