@@ -388,8 +388,12 @@ typedef struct {
  * normal { } normal { }, average): an entry's pigment is its normal's
  * dev_pattern, or -1 for none (texture_normal).
  * PATTERN_UV: uv_mapping: the point the rows map is the hit's <u, v, 0>
- * (shape_uv), not its place in space. */
-enum { PATTERN_NO_BUMP_SCALE = 1, PATTERN_NORMAL_MAP = 2, PATTERN_UV = 4 };
+ * (shape_uv), not its place in space.
+ * PATTERN_IN_PARENT: a pigment map's entry whose parent has warps that no
+ * matrix holds (turbulence, repeat, black_hole...): the point its rows map is
+ * the parent's point after all the parent's warps, as POV-Ray's
+ * Compute_Pigment hands an entry its TPoint, not the point in space. */
+enum { PATTERN_NO_BUMP_SCALE = 1, PATTERN_NORMAL_MAP = 2, PATTERN_UV = 4, PATTERN_IN_PARENT = 8 };
 
 /* An entry of a pattern's map, 32 bytes: a colour, or a nested pigment (a
  * pigment_map, or checker pigment { } pigment { }) when pigment >= 0; in a

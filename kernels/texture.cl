@@ -180,6 +180,37 @@ static inline float texture_map_weights(global const dev_map_entry *e, int n)
 	return total != 0.0f ? total : INFINITY;
 }
 
+/* The point a nested map entry's rows map, its parent pt being at p (the
+ * parent's own point, before its rows): p itself, or for a PATTERN_IN_PARENT
+ * child the parent's point after its rows and warps. */
+static inline float3 texture_child_point(const scene_data *sc, global const dev_pattern *pt, int child, float3 p,
+                                         float2 uv)
+{
+	if (!(sc->patterns[child].flags & PATTERN_IN_PARENT))
+		return p;
+	return pattern_warp_point(pt, sc->warps, texture_pattern_point(pt, texture_at(pt, p, uv)));
+}
+
+/* The pigment whose pattern is root at p (world space: each pattern's rows
+ * take it into its own), its map at the pattern's value there, nested
+ * pigments evaluated and blended in turn; VALUE(sc, pt, q, n, d) is a
+ * pattern's value at q, its point. Made twice, since OpenCL C has no
+ * recursion: texture_pigment_tree for surfaces, and function_pigment_tree,
+ * which runs no function pattern, for the scene's functions that call a
+ * pigment function (function_pattern.cl). */
+/* A normal map's entry child of pt perturbing n at x: placed by every
+ * transformation around it, or (PATTERN_IN_PARENT) at pt's warped point with
+ * n taken into pt's space and back, as POV-Ray's Perturb_Normal does. */
+static float3 texture_normal_entry(const scene_data *sc, global const dev_pattern *pt, int child, float3 x, float2 uv,
+                                   float3 n)
+{
+	global const dev_pattern *c = &sc->patterns[child];
+	if (!(c->flags & PATTERN_IN_PARENT))
+		return texture_perturb(sc, c, texture_at(c, x, uv), n);
+	float3 t = texture_child_point(sc, pt, child, x, uv);
+	return normal_warp_out(pt, sc->warps, texture_perturb(sc, c, texture_at(c, t, uv), normal_warp_in(pt, sc->warps, n)));
+}
+
 /* The unit normal n (facing the ray) perturbed at x by the normal pattern
  * normal. A normal of normals (PATTERN_NORMAL_MAP) perturbs n by the one or
  * two entries its pattern's value picks and blends the results by weight, or
@@ -196,8 +227,7 @@ static float3 texture_normal(const scene_data *sc, int normal, float3 x, float2 
 	if (pt->kind == PATTERN_AVERAGE) {
 		float total = texture_map_weights(e, pt->map_count);
 		for (int i = 0; i < pt->map_count; i++) {
-			global const dev_pattern *c = &sc->patterns[max(e[i].pigment, 0)];
-			float3 ni = e[i].pigment >= 0 ? texture_perturb(sc, c, texture_at(c, x, uv), n) : n;
+			float3 ni = e[i].pigment >= 0 ? texture_normal_entry(sc, pt, e[i].pigment, x, uv, n) : n;
 			sum += e[i].value / total * ni;
 		}
 		return length(sum) > 0.0f ? normalize(sum) : n;
@@ -212,8 +242,7 @@ static float3 texture_normal(const scene_data *sc, int normal, float3 x, float2 
 		if (wt[k] <= 0.0f)
 			continue;
 		int child = e[idx[k]].pigment;
-		global const dev_pattern *c = &sc->patterns[max(child, 0)];
-		sum += wt[k] * (child >= 0 ? texture_perturb(sc, c, texture_at(c, x, uv), n) : n);
+		sum += wt[k] * (child >= 0 ? texture_normal_entry(sc, pt, child, x, uv, n) : n);
 	}
 	return length(sum) > 0.0f ? normalize(sum) : n;
 }
@@ -231,20 +260,15 @@ static inline float3 camera_perturb(const scene_data *sc, float2 xy, float3 d)
 
 #define TEXTURE_STACK 8   /* nested pigments waiting; lower.c keeps maps shallower */
 
-/* The pigment whose pattern is root at p (world space: each pattern's rows
- * take it into its own), its map at the pattern's value there, nested
- * pigments evaluated and blended in turn; VALUE(sc, pt, q, n, d) is a
- * pattern's value at q, its point. Made twice, since OpenCL C has no
- * recursion: texture_pigment_tree for surfaces, and function_pigment_tree,
- * which runs no function pattern, for the scene's functions that call a
- * pigment function (function_pattern.cl). */
 #define TEXTURE_PIGMENT_TREE(NAME, VALUE) \
 static pigment_colour NAME(const scene_data *sc, int root, float3 p, float2 uv, float3 n, float3 d) \
 { \
 	int stack[TEXTURE_STACK]; \
 	float weight[TEXTURE_STACK]; \
+	float3 at[TEXTURE_STACK];   /* the point each waiting pigment starts from */ \
 	int top = 0; \
 	stack[top] = root; \
+	at[top] = p; \
 	weight[top++] = 1.0f; \
 	float4 sum = (float4)(0.0f); \
 	float transmit = 0.0f; \
@@ -252,6 +276,7 @@ static pigment_colour NAME(const scene_data *sc, int root, float3 p, float2 uv, 
 		top--; \
 		global const dev_pattern *pt = &sc->patterns[stack[top]]; \
 		float w = weight[top], v = 0.0f; \
+		float3 pp = at[top]; \
 		if (pt->kind == PATTERN_AVERAGE) {   /* every entry, by its weight (POV-Ray's ComputeAverage) */ \
 			global const dev_map_entry *e = sc->maps + pt->map_first; \
 			float total = texture_map_weights(e, pt->map_count); \
@@ -259,6 +284,7 @@ static pigment_colour NAME(const scene_data *sc, int root, float3 p, float2 uv, 
 				float wi = w * e[i].value / total; \
 				if (e[i].pigment >= 0 && top < TEXTURE_STACK) { \
 					stack[top] = e[i].pigment; \
+					at[top] = texture_child_point(sc, pt, e[i].pigment, pp, uv); \
 					weight[top++] = wi; \
 				} else { \
 					sum += wi * e[i].colour; \
@@ -268,7 +294,7 @@ static pigment_colour NAME(const scene_data *sc, int root, float3 p, float2 uv, 
 			continue; \
 		} \
 		if (pt->kind != PATTERN_SOLID) { \
-			float3 q = texture_pattern_point(pt, texture_at(pt, p, uv)); \
+			float3 q = texture_pattern_point(pt, texture_at(pt, pp, uv)); \
 			if (pt->kind == PATTERN_IMAGE_MAP) {   /* a colour of its own, no map */ \
 				pigment_colour c = texture_image(sc, pt, pattern_warp_point(pt, sc->warps, q)); \
 				sum += w * (float4)(c.rgb, c.filter); \
@@ -289,6 +315,7 @@ static pigment_colour NAME(const scene_data *sc, int root, float3 p, float2 uv, 
 			global const dev_map_entry *x = &e[idx[k]]; \
 			if (x->pigment >= 0 && top < TEXTURE_STACK) { \
 				stack[top] = x->pigment; \
+				at[top] = texture_child_point(sc, pt, x->pigment, pp, uv); \
 				weight[top++] = w * wt[k]; \
 			} else { \
 				sum += w * wt[k] * x->colour; \

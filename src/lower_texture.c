@@ -163,6 +163,11 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 	for (int i = pg->n_warps - 1; i >= 0; i--)   /* written last, applied first */
 		if (pg->warps[i].kind == WARP_TRANSFORM)
 			inner = scene_xform_then(&pg->warps[i].xf, &inner);
+	/* A nested pigment sees this one's point after all its warps; where a warp
+	 * is no matrix, that point is handed over on the device (PATTERN_IN_PARENT). */
+	bool hand_over = false;
+	for (int i = 0; i < n_warps; i++)
+		hand_over |= w[i].kind != WARP_TRANSFORM;
 	xform inv = inverse_or_identity(&front, pg->loc);
 	int at = lt->n_patterns++;
 	lt->patterns = grow_to(lt->patterns, &lt->cap_patterns, lt->n_patterns, sizeof *lt->patterns);
@@ -203,7 +208,10 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 		dev_map_entry de = entry_colour(e->colour, e->value);
 		if (sf)
 			de.material = lower_layers(lt, s, &sub, e->texture, &inner, -1, depth + 1);
-		else if (e->pigment >= 0 && depth + 1 < NEST_MAX)
+		else if (e->pigment >= 0 && depth + 1 < NEST_MAX && hand_over) {
+			de.pigment = flatten(lt, s, e->pigment, &identity, depth + 1, NULL, false);
+			lt->patterns[de.pigment].flags |= PATTERN_IN_PARENT;
+		} else if (e->pigment >= 0 && depth + 1 < NEST_MAX)
 			de.pigment = flatten(lt, s, e->pigment, &inner, depth + 1, NULL, uv);
 		else if (e->pigment >= 0)
 			diag_warning(pg->loc, "pigments nested more than %d deep in maps: the deeper ones are "
