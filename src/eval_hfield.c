@@ -32,8 +32,11 @@ static const char *const types[] = { "gif", "tga", "pot", "png", "pgm", "ppm", "
                                      "iff", "bmp" };
 
 /* What a grid point takes, from its height to its two triangles in the mesh
- * and their share of the device's triangles and BVH: about 128 bytes. */
+ * and their share of the device's triangles and BVH: about 128 bytes; a
+ * smooth one's normal and its triangles' normal indices 48 more, claimed once
+ * smooth is read (after the grid). */
 #define BYTES_PER_POINT 128.0
+#define SMOOTH_BYTES_PER_POINT 48.0
 
 static int claim_grid(struct eval *e, src_loc loc, int w, int h)
 {
@@ -268,6 +271,8 @@ static void make_mesh(const double *h, int w, int hh, bool smooth, double water,
 	}
 	size_t cap = 2 * (size_t)(w - 1) * (hh - 1);
 	m->face = eval_xrealloc(NULL, cap * sizeof *m->face);
+	if (smooth)   /* a corner's normal is its vertex's: lowering blends them only with face_nrm */
+		m->face_nrm = eval_xrealloc(NULL, cap * sizeof *m->face_nrm);
 	m->n_faces = 0;
 	double below = water * 65536.0;
 	for (int z = 0; z + 1 < hh; z++)
@@ -277,6 +282,8 @@ static void make_mesh(const double *h, int w, int hh, bool smooth, double water,
 			for (int t = 0; t < 2; t++) {
 				if (water > 0 && h[tri[t][0]] < below && h[tri[t][1]] < below && h[tri[t][2]] < below)
 					continue;
+				if (smooth)
+					memcpy(m->face_nrm[m->n_faces], tri[t], sizeof tri[t]);
 				memcpy(m->face[m->n_faces++], tri[t], sizeof tri[t]);
 			}
 		}
@@ -335,6 +342,9 @@ int eval_height_field_arguments(struct eval *e, struct cursor *c, const ast_node
 	}
 	if (rc == 0 && !err && skipped) {
 		o->mesh = -1;
+	} else if (rc == 0 && !err && h && w >= 2 && hh >= 2 && smooth &&
+	           eval_memory_claim(e, b->loc, (double)w * hh * SMOOTH_BYTES_PER_POINT, "a smooth height field's normals")) {
+		rc = -1;
 	} else if (rc == 0 && !err && h && w >= 2 && hh >= 2) {
 		scene_mesh m = { .loc = b->loc };
 		make_mesh(h, w, hh, smooth, water, &m);
