@@ -101,10 +101,7 @@ static inline float2 shape_uv(global const dev_prim *prims, global const float4 
 	case PRIM_ELLIPSOID: return ellipsoid_uv(prims, p, lx);
 	case PRIM_BOX: return box_uv(prims, p, lx);
 	case PRIM_TORUS: return torus_uv(prims, p, lx);
-	case PRIM_SOR:
-		if (!as_int(sor_rec(prims, p, 1).x))   /* a lathe keeps the default */
-			return sor_uv(prims, p, lx);
-		return x.xy;
+	case PRIM_SOR: return sor_uv(prims, p, lx);
 	default: return x.xy;
 	}
 }
