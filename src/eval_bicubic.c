@@ -73,12 +73,14 @@ static void make_mesh(const double P[4][4][3], const double st[4][2], int su, in
 			patch_uv(st, (double)i / nu, (double)j / nv, m->uv[i * (nv + 1) + j]);
 		}
 	m->face = eval_xrealloc(NULL, 2 * (size_t)nu * nv * sizeof *m->face);
+	m->face_nrm = eval_xrealloc(NULL, 2 * (size_t)nu * nv * sizeof *m->face_nrm);
 	m->face_uv = eval_xrealloc(NULL, 2 * (size_t)nu * nv * sizeof *m->face_uv);
 	for (int i = 0; i < nu; i++)
 		for (int j = 0; j < nv; j++) {
 			int a = i * (nv + 1) + j, b = a + 1, c = a + nv + 1, d = c + 1;   /* (u0,v0) (u0,v1) (u1,v0) (u1,v1) */
 			int t[2][3] = { { a, b, d }, { a, d, c } };
-			for (int k = 0; k < 2; k++) {
+			for (int k = 0; k < 2; k++) {   /* a corner's normal and uv are its vertex's */
+				memcpy(m->face_nrm[m->n_faces], t[k], sizeof t[k]);
 				memcpy(m->face_uv[m->n_faces], t[k], sizeof t[k]);
 				memcpy(m->face[m->n_faces++], t[k], sizeof t[k]);
 			}

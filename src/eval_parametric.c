@@ -24,7 +24,7 @@
 #define CHORD 5e-5        /* the most a triangle strays from the surface, of the container's diagonal */
 #define TURN 0.03         /* the most the normal turns from a corner to the next, in radians */
 #define MAX_CELLS (640 * 640)
-#define BYTES_PER_CELL 240   /* two faces with their uv, a vertex, a normal, a uv, and what clipping adds */
+#define BYTES_PER_CELL 264   /* two faces with their normals and uv, a vertex, a normal, a uv, and what clipping adds */
 
 struct surface {
 	const scene *s;
@@ -286,7 +286,9 @@ static int tessellate(struct eval *e, const struct surface *sf, const double uv[
 		*mesh = -1;
 		return 0;
 	}
-	/* each corner's uv is its vertex's */
+	/* each corner's normal and uv are its vertex's */
+	b.m.face_nrm = eval_xrealloc(NULL, (size_t)b.m.n_faces * sizeof *b.m.face_nrm);
+	memcpy(b.m.face_nrm, b.m.face, (size_t)b.m.n_faces * sizeof *b.m.face_nrm);
 	b.m.face_uv = eval_xrealloc(NULL, (size_t)b.m.n_faces * sizeof *b.m.face_uv);
 	memcpy(b.m.face_uv, b.m.face, (size_t)b.m.n_faces * sizeof *b.m.face_uv);
 	*mesh = scene_add_mesh(e->s, &b.m);
