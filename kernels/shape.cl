@@ -88,8 +88,9 @@ static inline int shape_emitter(global const dev_prim *prims, global const dev_p
 
 /* POV-Ray's uv at a hit x (lx: in the primitive's space, a mesh's for its
  * triangles), for uv_mapping: the shapes that define one (a mesh's triangles,
- * not a lone triangle); every other shape gives x's own x and y, as POV-Ray's
- * default UVCoord does. */
+ * not a lone triangle, and so a bicubic_patch's and a parametric's, whose
+ * corners carry their uv); every other shape gives x's own x and y, as
+ * POV-Ray's default UVCoord does. */
 static inline float2 shape_uv(global const dev_prim *prims, global const float4 *normals, int prim, int inst, float3 lx,
                        float3 x)
 {
@@ -101,10 +102,7 @@ static inline float2 shape_uv(global const dev_prim *prims, global const float4 
 	case PRIM_ELLIPSOID: return ellipsoid_uv(prims, p, lx);
 	case PRIM_BOX: return box_uv(prims, p, lx);
 	case PRIM_TORUS: return torus_uv(prims, p, lx);
-	case PRIM_SOR:
-		if (!as_int(sor_rec(prims, p, 1).x))   /* a lathe keeps the default */
-			return sor_uv(prims, p, lx);
-		return x.xy;
+	case PRIM_SOR: return sor_uv(prims, p, lx);
 	default: return x.xy;
 	}
 }

@@ -2,7 +2,9 @@
  * about y in the shape's own space. Records: (rmax, hmin, hmax, pieces as an
  * int), (1 for a lathe as an int, 0, 0, 0), then two a piece:
  * (c0, c1, c2, c3), (h1, h2, hc, kind as an int: bit 0 a disc, bit 1 the side
- * -1). A curve's squared radius is ((c0 u + c1) u + c2) u + c3, u = h - hc,
+ * -1), and for a lathe, one more a piece after those: (v at h1, v at h2, 0,
+ * 0), POV-Ray's v at the piece's ends (a disc's: at its smaller and larger
+ * radius). A curve's squared radius is ((c0 u + c1) u + c2) u + c3, u = h - hc,
  * for h1 <= h <= h2; a disc lies at height h1 with a squared radius from c0
  * to c1, and z is its side. The roots are found in double where
  * the device has it, as on the host: a quadratic in closed form, a cubic by
@@ -175,30 +177,38 @@ static inline float3 sor_normal(global const dev_prim *prims, global const dev_p
 	return intersect_normal_to_world(p, nb);
 }
 
-/* A sor's uv, POV-Ray's: u the turn around y from +x toward +z; v on the
- * curve of the piece nearest the point (as sor_normal finds it), its share of
- * the pieces below it and of its own height; on the base disc its radius's
- * share minus 1, on the cap 2 minus it. A lathe's (from its spline's
- * parameter) is not kept: its point's x and y, shape.cl's default. */
+/* A sor's or lathe's uv, POV-Ray's: u the turn around y from +x toward +z; v
+ * on the piece nearest the point (as sor_normal finds it). A sor's: on a curve
+ * its share of the pieces below it and of its own height; on the base disc its
+ * radius's share minus 1, on the cap 2 minus it. A lathe's (Lathe::UVCoord:
+ * the spline segment's number plus its parameter, over the number of
+ * segments): between the v its piece keeps at its ends, by the height on a
+ * curve, by the radius on a disc. */
 static inline float2 sor_uv(global const dev_prim *prims, global const dev_prim *p, float3 x)
 {
 	float3 q = intersect_to_local(p, x);
 	int n = as_int(sor_rec(prims, p, 0).w), curves = 0;
+	bool lathe = as_int(sor_rec(prims, p, 1).x) != 0;
 	float r = sqrt(q.x * q.x + q.z * q.z), bestd = INFINITY, v = 0.0f;
 	for (int i = 0; i < n; i++)
 		curves += !(as_int(sor_rec(prims, p, 3 + 2 * i).w) & 1);
 	for (int i = 0; i < n; i++) {
 		float4 cf = sor_rec(prims, p, 2 + 2 * i), hh = sor_rec(prims, p, 3 + 2 * i);
+		float2 ends = lathe ? sor_rec(prims, p, 2 + 2 * n + i).xy : (float2)(0.0f);
 		float d, vi;
 		if (as_int(hh.w) & 1) {
 			float rl = sqrt(fmax(cf.x, 0.0f)), rh = sqrt(fmax(cf.y, 0.0f));
 			d = sqrt((q.y - hh.x) * (q.y - hh.x) + fmax(fmax(rl - r, r - rh), 0.0f) * fmax(fmax(rl - r, r - rh), 0.0f));
-			vi = hh.z < 0.0f ? r / rh - 1.0f : 2.0f - r / rh;
+			if (lathe)
+				vi = mix(ends.x, ends.y, rh > rl ? clamp((r - rl) / (rh - rl), 0.0f, 1.0f) : 0.0f);
+			else
+				vi = hh.z < 0.0f ? r / rh - 1.0f : 2.0f - r / rh;
 		} else {
 			float y = clamp(q.y, hh.x, hh.y), u = y - hh.z;
 			float f = ((cf.x * u + cf.y) * u + cf.z) * u + cf.w;
 			d = fabs(sqrt(fmax(f, 0.0f)) - r) + fabs(q.y - y);
-			vi = ((q.y - hh.x) / (hh.y - hh.x) + (float)i) / (float)curves;
+			float t = (q.y - hh.x) / (hh.y - hh.x);
+			vi = lathe ? mix(ends.x, ends.y, clamp(t, 0.0f, 1.0f)) : (t + (float)i) / (float)curves;
 		}
 		if (d < bestd) {
 			bestd = d;

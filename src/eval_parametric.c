@@ -8,7 +8,10 @@
  * surface by at most CHORD of the container's size, cuts the triangles to the
  * container (a box exactly, a sphere along chords of its surface), and gives
  * every corner POV-Ray's normal there (the cross of the steps of accuracy in u
- * and v). The mesh goes to scene.meshes and is placed as a height field's is
+ * and v) and POV-Ray's uv there, the (u, v) it was made at (what POV-Ray's
+ * search leaves: the corner of its last, smallest square of parameters),
+ * which a cut to the container blends as it blends the normal. The mesh goes
+ * to scene.meshes and is placed as a height field's is
  * (src/shape_tessellated.c). max_gradient and precompute only speed POV-Ray's
  * search up: read and checked, they change nothing here. */
 #include <math.h>
@@ -21,7 +24,7 @@
 #define CHORD 5e-5        /* the most a triangle strays from the surface, of the container's diagonal */
 #define TURN 0.03         /* the most the normal turns from a corner to the next, in radians */
 #define MAX_CELLS (640 * 640)
-#define BYTES_PER_CELL 200   /* two faces, a vertex and a normal, and what clipping adds */
+#define BYTES_PER_CELL 264   /* two faces with their normals and uv, a vertex, a normal, a uv, and what clipping adds */
 
 struct surface {
 	const scene *s;
@@ -61,16 +64,19 @@ struct build {
 	int cap_v, cap_f;
 };
 
-static int add_vertex(struct build *b, const double x[3], const double n[3])
+/* A vertex at x with the normal n and POV-Ray's uv there (the surface's (u, v)). */
+static int add_vertex(struct build *b, const double x[3], const double n[3], const double uv[2])
 {
 	if (b->m.n_v == b->cap_v) {
 		b->cap_v = b->cap_v ? 2 * b->cap_v : 1024;
 		b->m.v = eval_xrealloc(b->m.v, (size_t)b->cap_v * sizeof *b->m.v);
 		b->m.nrm = eval_xrealloc(b->m.nrm, (size_t)b->cap_v * sizeof *b->m.nrm);
+		b->m.uv = eval_xrealloc(b->m.uv, (size_t)b->cap_v * sizeof *b->m.uv);
 	}
 	memcpy(b->m.v[b->m.n_v], x, sizeof b->m.v[0]);
 	memcpy(b->m.nrm[b->m.n_v], n, sizeof b->m.nrm[0]);
-	b->m.n_nrm = b->m.n_v + 1;
+	memcpy(b->m.uv[b->m.n_v], uv, sizeof b->m.uv[0]);
+	b->m.n_nrm = b->m.n_uv = b->m.n_v + 1;
 	return b->m.n_v++;
 }
 
@@ -130,7 +136,7 @@ static double crossing(const struct surface *sf, int k, const double a[3], const
 
 #define MAX_POLY 12
 struct corner {
-	double x[3], n[3];
+	double x[3], n[3], uv[2];
 };
 
 /* Cuts the polygon p (n corners) to side k of the container: the corners left. */
@@ -149,6 +155,8 @@ static int clip_side(const struct surface *sf, int k, const struct corner *p, in
 				c.x[q] = a->x[q] + s * (b->x[q] - a->x[q]);
 				c.n[q] = a->n[q] + s * (b->n[q] - a->n[q]);
 			}
+			for (int q = 0; q < 2; q++)
+				c.uv[q] = a->uv[q] + s * (b->uv[q] - a->uv[q]);
 			out[m++] = c;
 		}
 	}
@@ -176,6 +184,7 @@ static void add_triangle(struct build *b, const struct surface *sf, int i, int j
 	for (int c = 0; c < 3; c++) {
 		memcpy(p[c].x, b->m.v[idx[c]], sizeof p[c].x);
 		memcpy(p[c].n, b->m.nrm[idx[c]], sizeof p[c].n);
+		memcpy(p[c].uv, b->m.uv[idx[c]], sizeof p[c].uv);
 	}
 	for (int s = 0; s < sides && n >= 3; s++) {
 		n = clip_side(sf, s, p, n, q);
@@ -183,9 +192,9 @@ static void add_triangle(struct build *b, const struct surface *sf, int i, int j
 	}
 	if (n < 3)
 		return;
-	int first = add_vertex(b, p[0].x, p[0].n), prev = add_vertex(b, p[1].x, p[1].n);
+	int first = add_vertex(b, p[0].x, p[0].n, p[0].uv), prev = add_vertex(b, p[1].x, p[1].n, p[1].uv);
 	for (int c = 2; c < n; c++) {
-		int next = add_vertex(b, p[c].x, p[c].n);
+		int next = add_vertex(b, p[c].x, p[c].n, p[c].uv);
 		add_face(b, first, prev, next);
 		prev = next;
 	}
@@ -256,10 +265,10 @@ static int tessellate(struct eval *e, const struct surface *sf, const double uv[
 	for (int i = 0; i <= nu; i++)   /* vertex i (nv + 1) + j at u_i, v_j */
 		for (int j = 0; j <= nv; j++) {
 			double u = uv[0][0] + (uv[1][0] - uv[0][0]) * i / nu, v = uv[0][1] + (uv[1][1] - uv[0][1]) * j / nv;
-			double x[3], n[3];
+			double x[3], n[3], at[2] = { u, v };
 			point(sf, u, v, x);
 			normal(sf, u, v, x, n);
-			add_vertex(&b, x, n);
+			add_vertex(&b, x, n, at);
 		}
 	for (int i = 0; i < nu; i++)
 		for (int j = 0; j < nv; j++) {
@@ -272,10 +281,16 @@ static int tessellate(struct eval *e, const struct surface *sf, const double uv[
 		             "draws nothing");
 		free(b.m.v);
 		free(b.m.nrm);
+		free(b.m.uv);
 		free(b.m.face);
 		*mesh = -1;
 		return 0;
 	}
+	/* each corner's normal and uv are its vertex's */
+	b.m.face_nrm = eval_xrealloc(NULL, (size_t)b.m.n_faces * sizeof *b.m.face_nrm);
+	memcpy(b.m.face_nrm, b.m.face, (size_t)b.m.n_faces * sizeof *b.m.face_nrm);
+	b.m.face_uv = eval_xrealloc(NULL, (size_t)b.m.n_faces * sizeof *b.m.face_uv);
+	memcpy(b.m.face_uv, b.m.face, (size_t)b.m.n_faces * sizeof *b.m.face_uv);
 	*mesh = scene_add_mesh(e->s, &b.m);
 	return 0;
 }

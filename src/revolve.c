@@ -174,23 +174,25 @@ static void sor_profile(const double (*P)[2], int n, bool open, revolve_profile 
 	}
 }
 
-/* A straight segment of a lathe's profile as a piece. */
-static void lathe_segment(revolve_profile *pr, int *cap, const double a[2], const double b[2])
+/* A straight segment of a lathe's profile as a piece, from a (where POV-Ray's
+ * v is va) to b (vb). */
+static void lathe_segment(revolve_profile *pr, int *cap, const double a[2], const double b[2], double va, double vb)
 {
 	if (a[0] == b[0] && a[1] == b[1])
 		return;
 	revolve_piece *p = add_piece(pr, cap);
 	if (a[1] == b[1]) {
 		double r1 = a[0] * a[0], r2 = b[0] * b[0];
-		*p = (revolve_piece){ .kind = REVOLVE_DISC, .h1 = a[1], .c = { fmin(r1, r2), fmax(r1, r2) }, .side = 1 };
+		*p = (revolve_piece){ .kind = REVOLVE_DISC, .h1 = a[1], .c = { fmin(r1, r2), fmax(r1, r2) }, .side = 1,
+		                      .v = { r1 <= r2 ? va : vb, r1 <= r2 ? vb : va } };
 		if (a[0] * b[0] < 0)   /* it crosses the axis */
 			p->c[0] = 0;
 		return;
 	}
-	double s = (b[0] - a[0]) / (b[1] - a[1]), k = a[0] - s * a[1];
-	(void)k;
+	double s = (b[0] - a[0]) / (b[1] - a[1]);
 	*p = (revolve_piece){ .kind = REVOLVE_CURVE, .h1 = fmin(a[1], b[1]), .h2 = fmax(a[1], b[1]), .hc = a[1],
-	                      .c = { 0, s * s, 2 * s * a[0], a[0] * a[0] }, .side = 1 };
+	                      .c = { 0, s * s, 2 * s * a[0], a[0] * a[0] }, .side = 1,
+	                      .v = { a[1] < b[1] ? va : vb, a[1] < b[1] ? vb : va } };
 }
 
 static void lathe_profile(int kind, const double (*P)[2], int n, revolve_profile *pr)
@@ -223,13 +225,14 @@ static void lathe_profile(int kind, const double (*P)[2], int n, revolve_profile
 		double second = 6 * hypot(cf[0][0], cf[0][1]) + 2 * hypot(cf[1][0], cf[1][1]);
 		int steps = second > 0 ? (int)ceil(sqrt(second / (8 * tol))) : 1;
 		steps = steps < 1 ? 1 : steps > FLAT_MAX ? FLAT_MAX : steps;
-		double prev[2] = { cf[3][0], cf[3][1] };
+		double prev[2] = { cf[3][0], cf[3][1] }, vprev = (double)s / segs;
 		for (int j = 1; j <= steps; j++) {
-			double t = (double)j / steps, q[2];
+			double t = (double)j / steps, q[2], v = (s + t) / segs;
 			for (int k = 0; k < 2; k++)
 				q[k] = ((cf[0][k] * t + cf[1][k]) * t + cf[2][k]) * t + cf[3][k];
-			lathe_segment(pr, &cap, prev, q);
+			lathe_segment(pr, &cap, prev, q, vprev, v);
 			memcpy(prev, q, sizeof prev);
+			vprev = v;
 		}
 	}
 	pr->lathe = true;
@@ -478,6 +481,8 @@ int revolve_lower(struct lowering *lw, const revolve_profile *pr, const scene_ob
 		lower_add_data(lw, (float4){ (float)q->c[0], (float)q->c[1], (float)q->c[2], (float)q->c[3] });
 		lower_add_data(lw, (float4){ (float)q->h1, (float)q->h2, (float)(q->kind == REVOLVE_DISC ? q->side : q->hc), kind.f });
 	}
+	for (int i = 0; i < pr->n && pr->lathe; i++)   /* a lathe's v at its pieces' ends (sor_uv) */
+		lower_add_data(lw, (float4){ (float)pr->piece[i].v[0], (float)pr->piece[i].v[1], 0, 0 });
 	double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
 	revolve_bounds(pr, &o->xf, lo, hi);
 	lower_add_prim(lw, p, mat, id, lo, hi);

@@ -16,7 +16,11 @@
  * flattened into straight segments, finely enough that no segment strays more
  * than REVOLVE_FLAT of the lathe's size from the curve (POV-Ray solves them
  * exactly). Each piece has a side: +1 when the normal (x, -f'(h) / 2, z) of a
- * curve, or +y of a disc, points out of the solid, else -1. */
+ * curve, or +y of a disc, points out of the solid, else -1. A lathe's piece
+ * keeps POV-Ray's v (Lathe::UVCoord: the spline segment's number plus its
+ * parameter, over the number of segments) at its ends, v[0] at h1 (a disc's
+ * smaller radius) and v[1] at h2 (its larger): on the flattened piece the
+ * parameter runs with the height (a disc's with the radius). */
 #ifndef ECLAT_REVOLVE_H
 #define ECLAT_REVOLVE_H
 
@@ -34,6 +38,7 @@ typedef struct {
 	double c[4];         /* a curve's: r^2 = the cubic of h - hc */
 	double hc;
 	double side;         /* +1 or -1 */
+	double v[2];         /* a lathe's: POV-Ray's v at h1 and h2 (a disc: at its smaller and larger radius) */
 } revolve_piece;
 
 typedef struct {
