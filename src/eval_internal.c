@@ -63,6 +63,32 @@ static const struct {
 	{ 74, "function(x, y, z, P0, P1) { " FIELD("-(P1 * (y - 1) + (x*x + z*z) * y)") " }" },   /* f_witch_of_agnesi */
 };
 
+/* The internal functions that are one op of their own on all their
+ * parameters (scene.h's FOP_), those POV-Ray's function language cannot write:
+ * they loop a number of times a parameter says, or read the noise. f_noise3d,
+ * internal(76), is POV-Ray's Noise at (x, y, z) with the scene's
+ * noise_generator. */
+static const struct {
+	int number, op, n_params;
+} op_internals[] = {
+	{ 76, FOP_NOISE3, 3 },   /* f_noise3d */
+	{ 78, FOP_NOISE4, 4 },   /* f_noise_generator */
+	{ 29, FOP_HETERO_MF, 9 },   /* f_hetero_mf */
+	{ 58, FOP_RIDGE, 9 },   /* f_ridge */
+	{ 59, FOP_RIDGED_MF, 9 },   /* f_ridged_mf */
+	{ 52, FOP_POLYTUBES, 9 },   /* f_polytubes */
+};
+
+int eval_internal_op(int number, int *n_params)
+{
+	for (size_t k = 0; k < sizeof op_internals / sizeof *op_internals; k++)
+		if (op_internals[k].number == number) {
+			*n_params = op_internals[k].n_params;
+			return op_internals[k].op;
+		}
+	return -1;
+}
+
 const ast_node *eval_internal_function(int number)
 {
 	static ast_node *parsed[sizeof internals / sizeof *internals];
