@@ -6,7 +6,11 @@
  * scene.functions (eval_function.c).
  *
  * A new one is a line of the table: its number, and its text, whose
- * parameters are x, y, z and then P0, P1... as functions.inc lists them. */
+ * parameters are x, y, z and then P0, P1... as functions.inc lists them.
+ * Those the language cannot write, which loop as often as a parameter says or
+ * read the noise, are one op each instead (op_internals, at the end). All of
+ * POV-Ray 3.7's are here but internal(77), f_pattern, which functions.inc
+ * does not declare (a pattern function is its own op, FOP_PATTERN). */
 #include <stdio.h>
 #include <string.h>
 
@@ -15,21 +19,6 @@
 
 /* min(10, max(P0 * r, -10)): the "field strength" clamp many of them share. */
 #define FIELD(r) "min(10, max(P0 * (" r "), -10))"
-
-/* f_helix1's pieces (fnintern.cpp names them as it reassigns x and z): the
- * angle about y, wound by the helices, in [0, 2 pi) (the origin's x nudged,
- * as POV-Ray does); the point's z along the helix and x off its centre line;
- * both turned by P6 degrees (no turn when P6 is 0: cos 1, sin 0); the cross
- * section's radius for P5 1 (a circle), 0 (a square) or another exponent. */
-#define HELIX_TH1 "mod(atan2(z, select(-(abs(x) + abs(z)), x, 0.000001)) * P0 + y * P1 * P0, 2 * pi)"
-#define HELIX_TH "(" HELIX_TH1 " + select(" HELIX_TH1 ", 2 * pi, 0))"
-#define HELIX_Z "((" HELIX_TH " - pi) / P4 / (P1 * P0))"
-#define HELIX_X "(sqrt(x*x + z*z) - P3)"
-#define HELIX_XR "(" HELIX_X " * cos(radians(P6)) - " HELIX_Z " * sin(radians(P6)))"
-#define HELIX_ZR "(" HELIX_X " * sin(radians(P6)) + " HELIX_Z " * cos(radians(P6)))"
-#define HELIX_R2 "(P5 = 1 ? sqrt(" HELIX_X " * " HELIX_X " + " HELIX_Z " * " HELIX_Z ") : (P5 != 0 ?" \
-	" pow(pow(abs(" HELIX_XR "), 2 / P5) + pow(abs(" HELIX_ZR "), 2 / P5), P5 * 0.5) :" \
-	" max(abs(" HELIX_XR "), abs(" HELIX_ZR "))))"
 
 /* x*x, y*y, z*z kept as one product each: POV-Ray squares once and reuses
  * the square, and a*a*b rounds differently from (a*a)*b. */
@@ -44,6 +33,21 @@
 
 /* v + 2 pi when v < 0: fmod's result turned into [0, 2 pi). */
 #define POSITIVE_ANGLE(v) "(" v " + select(" v ", 2 * pi, 0))"
+
+/* f_helix1's pieces (fnintern.cpp names them as it reassigns x and z): the
+ * angle about y, wound by the helices, in [0, 2 pi) (the origin's x nudged,
+ * as POV-Ray does); the point's z along the helix and x off its centre line;
+ * both turned by P6 degrees (no turn when P6 is 0: cos 1, sin 0); the cross
+ * section's radius for P5 1 (a circle), 0 (a square) or another exponent. */
+#define HELIX_TH1 "mod(atan2(z, " NUDGED_X("0.000001") ") * P0 + y * P1 * P0, 2 * pi)"
+#define HELIX_TH POSITIVE_ANGLE(HELIX_TH1)
+#define HELIX_Z "((" HELIX_TH " - pi) / P4 / (P1 * P0))"
+#define HELIX_X "(sqrt(x*x + z*z) - P3)"
+#define HELIX_XR "(" HELIX_X " * cos(radians(P6)) - " HELIX_Z " * sin(radians(P6)))"
+#define HELIX_ZR "(" HELIX_X " * sin(radians(P6)) + " HELIX_Z " * cos(radians(P6)))"
+#define HELIX_R2 "(P5 = 1 ? sqrt(" HELIX_X " * " HELIX_X " + " HELIX_Z " * " HELIX_Z ") : (P5 != 0 ?" \
+	" pow(pow(abs(" HELIX_XR "), 2 / P5) + pow(abs(" HELIX_ZR "), 2 / P5), P5 * 0.5) :" \
+	" max(abs(" HELIX_XR "), abs(" HELIX_ZR "))))"
 
 /* The "SOR switch" (ROT2D in fnintern.cpp) of the algebraic cylinders and the
  * _2d curves: when parameter S is above 0, the curve drawn in the x-y plane is
@@ -96,7 +100,7 @@
 #define HEX_LOW "(atan2(" HEX_Y ", " HEX_X ") < pi / 6)"
 
 /* f_mesh1's four families of threads: v mod 2m in [0, 2m), then one thread's
- * distance (negated) across it, for the offset ARG of the wave. */
+ * distance (negated) from the point, its height y moved by WAVE (a cosine). */
 #define MESH_MOD(v, m) "(mod(" v ", " m " * 2) + select(mod(" v ", " m " * 2), " m " * 2, 0))"
 #define MESH_ARM(v, m, wave) "-sqrt(" SQ("(y " wave ") * P4") " + " SQ("abs(" MESH_MOD(v, m) " - " m ") * P2") ")"
 
