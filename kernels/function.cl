@@ -27,3 +27,19 @@ static inline float scene_function_pattern(const scene_data *sc, int f, float3 p
 {
 	return (float)scene_function_at(sc, f, (real)p.x, (real)p.y, (real)p.z);
 }
+
+/* POV-Ray's f_polytubes (FOP_POLYTUBES): x y z, the number of tubes (at most
+ * 256, none for NaN), and the coefficients of their distance from the y axis,
+ * a polynomial of y; as scene_function.c's polytubes. */
+static real function_polytubes(real x, real y, real z, real tubes, real p1, real p2, real p3, real p4, real p5)
+{
+	real y2 = y * y, radius = p1 + p2 * y + p3 * y2 + p4 * y2 * y + p5 * y2 * y2;
+	int n = tubes > 0 ? (int)fmin(tubes, (real)256) : 0;
+	real r = -10000;
+	for (int i = 0; i < n; i++) {
+		real dx = x - radius * sin((real)6.283185307179586 / tubes * i),
+		     dz = z - radius * cos((real)6.283185307179586 / tubes * i);
+		r = fmax(r, -sqrt(dx * dx + dz * dz));
+	}
+	return -r;
+}

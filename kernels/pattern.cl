@@ -225,6 +225,105 @@ static float3 pattern_dturbulence(float3 p, float omega, float lambda, int octav
 	return value;
 }
 
+/* The internal functions of functions.inc that sum octaves of Noise
+ * (FOP_NOISE4, FOP_HETERO_MF, FOP_RIDGE, FOP_RIDGED_MF of the scene's
+ * functions): POV-Ray's f_noise_generator, f_hetero_mf, f_ridge and
+ * f_ridged_mf, in real, each octave's point made float for the noise. Their
+ * host twins (scene_noise.c) say why: a generator past int or NaN is 0, and
+ * counts are clamped to [-FUNCTION_OCTAVES_MAX, FUNCTION_OCTAVES_MAX] (a NaN
+ * count loops none), so no parameter makes a loop long. */
+#define FUNCTION_OCTAVES_MAX 64.0
+
+static inline int function_noise_generator(real p)
+{
+	return p > (real)-2147483648.0 && p < (real)2147483648.0 ? (int)p & 3 : 0;
+}
+
+static inline real function_clamp_count(real n)
+{
+	return isnan(n) ? n : fmin(fmax(n, (real)-FUNCTION_OCTAVES_MAX), (real)FUNCTION_OCTAVES_MAX);
+}
+
+static inline real function_noise_at(real x, real y, real z, int generator)
+{
+	return (real)pattern_noise((float3)((float)x, (float)y, (float)z), generator);
+}
+
+static real function_noise4(real x, real y, real z, real generator)
+{
+	return function_noise_at(x, y, z, function_noise_generator(generator));
+}
+
+/* x y z, H, lacunarity, octaves, offset, T (an exponent), generator. */
+static real function_hetero_mf(real x, real y, real z, real h, real lacunarity, real octaves_p, real offset,
+                               real t_p, real generator_p)
+{
+	real octaves = function_clamp_count(octaves_p), t = function_clamp_count(t_p);
+	int generator = function_noise_generator(generator_p);
+	int power = t > 0 ? (int)t : 0;
+	real signal = function_noise_at(x, y, z, generator) * 2 - 1 + offset;
+	x *= lacunarity, y *= lacunarity, z *= lacunarity;
+	real step = pow(lacunarity, -h), weight = step;
+	for (int i = 1; i < octaves; i++) {
+		real inc = (function_noise_at(x, y, z, generator) * 2 - 1 + offset) * weight;
+		for (int k = power; k > 0; k--)
+			inc *= signal;
+		signal += inc;
+		x *= lacunarity, y *= lacunarity, z *= lacunarity;
+		weight *= step;
+	}
+	real rem = isnan(octaves) ? octaves : octaves - trunc(octaves);
+	if (rem != 0)
+		signal += rem * ((function_noise_at(x, y, z, generator) * 2 - 1 + offset) * weight) * signal;
+	return signal;
+}
+
+/* x y z, lambda, octaves, omega, offset, ridge, generator. */
+static real function_ridge(real x, real y, real z, real lambda, real octaves_p, real omega, real offset, real ridge,
+                           real generator_p)
+{
+	real octaves = function_clamp_count(octaves_p);
+	int generator = function_noise_generator(generator_p);
+	int n = isnan(octaves) ? 0 : (int)octaves;
+	real resid = isnan(octaves) ? octaves : octaves - n;
+	real rscale = 1 / fmax(ridge, 1 - ridge), scale = 1 / fmax(offset, 1 - offset);
+	real value = fabs(function_noise_at(x, y, z, generator) - ridge) * rscale - offset, total = 1;
+	real l = lambda, o = omega;
+	for (int i = 2; i <= n; i++) {
+		value += o * (fabs(function_noise_at(x * l, y * l, z * l, generator) - ridge) * rscale - offset);
+		total += o;
+		l *= lambda;
+		o *= omega;
+	}
+	if (resid != 0) {
+		value += o * (fabs(function_noise_at(x * l, y * l, z * l, generator) - ridge) * rscale - offset) * resid;
+		total += o * resid;
+	}
+	return value * scale / total;
+}
+
+/* x y z, H, lacunarity, octaves, offset, gain, generator. */
+static real function_ridged_mf(real x, real y, real z, real h, real lacunarity, real octaves_p, real offset,
+                               real gain, real generator_p)
+{
+	real octaves = function_clamp_count(octaves_p);
+	int generator = function_noise_generator(generator_p);
+	real signal = offset - fabs(function_noise_at(x, y, z, generator) * 2 - 1);
+	signal *= signal;
+	real result = signal, frequency = 1;
+	for (int i = 1; i < octaves; i++) {
+		x *= lacunarity, y *= lacunarity, z *= lacunarity;
+		frequency *= lacunarity;
+		real weight = signal * gain;
+		weight = weight > 1 ? (real)1 : weight < 0 ? (real)0 : weight;
+		signal = offset - fabs(function_noise_at(x, y, z, generator) * 2 - 1);
+		signal *= signal;
+		signal *= weight;
+		result += signal * pow(frequency, -h);
+	}
+	return result;
+}
+
 /* A turbulence warp's own parameters. */
 static inline float pattern_warp_turbulence(global const dev_warp *w, int generator, float3 p)
 {

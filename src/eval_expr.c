@@ -1058,6 +1058,31 @@ static int transform_function(struct eval *e, const ast_node *call, const value 
 	return 0;
 }
 
+/* An internal function that is one op (eval_internal_op) called while the
+ * scene is read: the op on the arguments, f_noise3d with the noise_generator
+ * global_settings has given so far (POV-Ray's default before). */
+static int internal_op(struct eval *e, const ast_node *call, int op, int n_params, value *out)
+{
+	if (call->n_kids != n_params) {
+		eval_error(e, call->loc, "function '%s' takes %d argument%s, not %d", call->str, n_params,
+		           n_params == 1 ? "" : "s", call->n_kids);
+		return -1;
+	}
+	double a[SCENE_FOP_ARITY_MAX];
+	for (int i = 0; i < n_params; i++)
+		if (eval_expect_float(e, call->kids[i], &a[i]))
+			return -1;
+	double v;
+	if (op == FOP_NOISE3) {
+		float p[3] = { (float)a[0], (float)a[1], (float)a[2] };
+		v = scene_noise(p, e->noise_given ? e->s->noise_generator : e->version < 3.5 ? 1 : 2);
+	} else {
+		v = scene_fop_apply(op, a);
+	}
+	*out = eval_float(v);
+	return 0;
+}
+
 /* function [(Params)] { Expression }: called with floats, gives a float. */
 int eval_call_function(struct eval *e, const ast_node *call, const value *fn, value *out)
 {
@@ -1079,6 +1104,10 @@ int eval_call_function(struct eval *e, const ast_node *call, const value *fn, va
 		/* eval_internal.c writes them in the function language: the host runs that too */
 		const ast_node *number = body->kids[0]->n_kids == 1 ? body->kids[0]->kids[0] : NULL;
 		double k = -1;
+		int n_op = 0, op = number && number->kind == AST_NUMBER && number->num == (int)number->num ?
+		                   eval_internal_op((int)number->num, &n_op) : -1;
+		if (op >= 0)
+			return internal_op(e, call, op, n_op, out);
 		const ast_node *written = number && number->kind == AST_NUMBER ? eval_internal_function((int)(k = number->num))
 		                        : NULL;
 		if (!written || k != (int)k) {

@@ -378,6 +378,9 @@ int eval_function_pigment_pattern(struct eval *e, const ast_node *b, const char 
 /* POV-Ray's internal function number (functions.inc's internal(N)) written in
  * POV-Ray's language, or NULL when eclat has not written it (eval_internal.c). */
 const ast_node *eval_internal_function(int number);
+/* internal(number)'s op, when it is one op on its parameters (f_noise3d, the
+ * noise functions, f_polytubes), and its number of parameters; else -1. */
+int eval_internal_op(int number, int *n_params);
 /* A word of POV-Ray's that is no keyword of eclat's parser (threshold,
  * component...): its name, or NULL. "threshold -0.2" reaches the evaluator as
  * threshold - 0.2: then *negated is the number after it (eval_isosurface.c). */

@@ -36,6 +36,11 @@ static const char *const templates[FOP_COUNT] = {
 	[FOP_POW] = "pow(#0, #1)", [FOP_MOD] = "fmod(#0, #1)", [FOP_IDIV] = "trunc(#0 / #1)",
 	[FOP_COND] = "(#0 != 0 ? #1 : #2)", [FOP_SELECT3] = "(#0 < 0 ? #1 : #2)",
 	[FOP_SELECT4] = "(#0 < 0 ? #1 : #0 == 0 ? #2 : #3)",
+	[FOP_NOISE4] = "function_noise4(#0, #1, #2, #3)",
+	[FOP_HETERO_MF] = "function_hetero_mf(#0, #1, #2, #3, #4, #5, #6, #7, #8)",
+	[FOP_RIDGE] = "function_ridge(#0, #1, #2, #3, #4, #5, #6, #7, #8)",
+	[FOP_RIDGED_MF] = "function_ridged_mf(#0, #1, #2, #3, #4, #5, #6, #7, #8)",
+	[FOP_POLYTUBES] = "function_polytubes(#0, #1, #2, #3, #4, #5, #6, #7, #8)",
 };
 
 struct text {

@@ -464,7 +464,8 @@ typedef struct {
 	X(GT, 2)     X(GE, 2)     X(EQ, 2)    X(NE, 2)    X(AND, 2)   X(OR, 2) \
 	X(MIN, 2)    X(MAX, 2)    X(ATAN2, 2) X(POW, 2)   X(MOD, 2)   X(IDIV, 2) \
 	X(COND, 3)   X(SELECT3, 3) X(SELECT4, 4) X(NOISE3, 3) \
-	X(PATTERN, 3) X(PIGMENT, 3)
+	X(PATTERN, 3) X(PIGMENT, 3) \
+	X(NOISE4, 4) X(HETERO_MF, 9) X(RIDGE, 9) X(RIDGED_MF, 9) X(POLYTUBES, 9)
 enum {
 #define X(name, arity) FOP_##name,
 	SCENE_FOPS(X)
@@ -479,7 +480,12 @@ enum {
  * f_pattern, its map unused); PIGMENT the same pigment's channel value (0
  * red, 1 green, 2 blue, 3 filter, 4 transmit, 5 grey: f_pigment). Only the
  * device runs these two: the host has no pattern evaluator, and evaluation
- * keeps them out of what the host runs. */
+ * keeps them out of what the host runs. The last five are POV-Ray's internal
+ * functions that loop (internal(78, 29, 58, 59, 52)), on x, y, z and then
+ * their parameters as functions.inc lists them: NOISE4 f_noise_generator,
+ * HETERO_MF f_hetero_mf, RIDGE f_ridge, RIDGED_MF f_ridged_mf (their noise
+ * generator a parameter), POLYTUBES f_polytubes. */
+#define SCENE_FOP_ARITY_MAX 9
 typedef struct {
 	int op, arg;
 	double value;
@@ -612,9 +618,17 @@ bool scene_function_calls_patterns(const scene *s, int f);
 /* POV-Ray's Noise at p, in [0, 1], with noise_generator 1, 2 or 3, as
  * kernels/pattern.cl's pattern_noise computes it, in float (scene_noise.c). */
 float scene_noise(const float p[3], int generator);
+/* The value of a noise op of the functions (FOP_NOISE4, FOP_HETERO_MF,
+ * FOP_RIDGE, FOP_RIDGED_MF) on its operands a, as kernels/pattern.cl's
+ * function_noise4 ... function_ridged_mf compute it (scene_noise.c). */
+double scene_noise_op(int op, const double *a);
 /* POV-Ray's DTurbulence at p, as kernels/pattern.cl's pattern_dturbulence
  * computes it (scene_noise.c): vturbulence(). */
 void scene_dturbulence(const float p[3], float omega, float lambda, int octaves, float out[3]);
+/* An FOP_ of arithmetic, or of the noise functions and f_polytubes, on its
+ * operands a[0 .. arity - 1] (not CONST, PARAM, CALL, NOISE3, PATTERN,
+ * PIGMENT, which need more than their operands), as the host runs it. */
+double scene_fop_apply(int op, const double *a);
 /* An FOP_'s operand count and name ("add"). */
 int scene_fop_arity(int op);
 const char *scene_fop_name(int op);

@@ -46,8 +46,27 @@ static double truth(bool b)
 	return b ? 1.0 : 0.0;
 }
 
+/* f_polytubes (internal(52)): x y z, then the number of tubes and the
+ * coefficients of their distance from the y axis, a polynomial of y; as
+ * kernels/function.cl's function_polytubes. POV-Ray loops (int)P0 tubes, a
+ * cast undefined past int or for NaN: here at most SCENE_TUBES_MAX, and none
+ * for NaN. */
+#define SCENE_TUBES_MAX 256.0
+static double polytubes(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2], tubes = a[3], y2 = y * y;
+	double radius = a[4] + a[5] * y + a[6] * y2 + a[7] * y2 * y + a[8] * y2 * y2;
+	int n = tubes > 0 ? (int)fmin(tubes, SCENE_TUBES_MAX) : 0;
+	double r = -10000;
+	for (int i = 0; i < n; i++) {
+		double dx = x - radius * sin(2 * M_PI / tubes * i), dz = z - radius * cos(2 * M_PI / tubes * i);
+		r = fmax(r, -sqrt(dx * dx + dz * dz));
+	}
+	return -r;
+}
+
 /* One op on its operands a[0 .. arity - 1]. */
-static double apply(int op, const double *a)
+double scene_fop_apply(int op, const double *a)
 {
 	switch (op) {
 	case FOP_NEG: return -a[0];
@@ -95,6 +114,8 @@ static double apply(int op, const double *a)
 	case FOP_COND: return a[0] != 0 ? a[1] : a[2];
 	case FOP_SELECT3: return a[0] < 0 ? a[1] : a[2];
 	case FOP_SELECT4: return a[0] < 0 ? a[1] : a[0] == 0 ? a[2] : a[3];
+	case FOP_NOISE4: case FOP_HETERO_MF: case FOP_RIDGE: case FOP_RIDGED_MF: return scene_noise_op(op, a);
+	case FOP_POLYTUBES: return polytubes(a);
 	default: return 0;
 	}
 }
@@ -125,7 +146,7 @@ double scene_function_eval(const scene *s, int f, const double *args)
 		} else {
 			int n = fops[o->op].arity;
 			top -= n;
-			stack[top] = apply(o->op, stack + top);
+			stack[top] = scene_fop_apply(o->op, stack + top);
 			top++;
 		}
 	}
@@ -206,10 +227,10 @@ int scene_function_eval_many(const scene *s, int f, int n, const double *args, d
 			int k = fops[o->op].arity;
 			top -= k;
 			for (int i = 0; i < n; i++) {
-				double a[4];
+				double a[SCENE_FOP_ARITY_MAX];
 				for (int m = 0; m < k; m++)
 					a[m] = col[top + m][i];
-				col[top][i] = apply(o->op, a);
+				col[top][i] = scene_fop_apply(o->op, a);
 			}
 		}
 		top++;

@@ -162,3 +162,119 @@ void scene_dturbulence(const float p[3], float omega, float lambda, int octaves,
 		o *= omega;
 	}
 }
+
+/* The internal functions of functions.inc that sum octaves of Noise
+ * (fnintern.cpp's f_noise_generator, f_hetero_mf, f_ridge, f_ridged_mf), step
+ * for step as kernels/pattern.cl's function_noise4 ... function_ridged_mf: in
+ * double, each octave's point made float for the noise as f_noise3d's is.
+ *
+ * POV-Ray takes a parameter as an int with a C cast, undefined past int and
+ * for NaN, and loops as many octaves (or f_hetero_mf's exponent) as it says,
+ * which a hostile 1e9 makes a hang. Here a generator past int or NaN is 0 (the
+ * x86 cast's INT_MIN & 3: the original noise, as 1), and counts are clamped to
+ * [-SCENE_OCTAVES_MAX, SCENE_OCTAVES_MAX]: past 64 octaves a lacunarity of 2
+ * has made the point 2^64 times larger, where float noise is constant (no
+ * fraction is left in the lattice coordinates), so the octaves a clamp drops
+ * add nothing POV-Ray's values would show in a render. A NaN octave count
+ * loops none, as POV-Ray does, and gives what POV-Ray gives: the first
+ * octave (f_ridged_mf) or NaN (the others' fraction of an octave). */
+#define SCENE_OCTAVES_MAX 64.0
+
+static int noise_generator_of(double p)
+{
+	return p > -2147483648.0 && p < 2147483648.0 ? (int)p & 3 : 0;
+}
+
+static double clamp_count(double n)
+{
+	return isnan(n) ? n : fmin(fmax(n, -SCENE_OCTAVES_MAX), SCENE_OCTAVES_MAX);
+}
+
+static double noise_at(double x, double y, double z, int generator)
+{
+	float p[3] = { (float)x, (float)y, (float)z };
+	return scene_noise(p, generator);
+}
+
+/* f_hetero_mf: x y z, H, lacunarity, octaves, offset, T (an exponent), generator. */
+static double hetero_mf(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2], h = a[3], lacunarity = a[4], octaves = clamp_count(a[5]);
+	double offset = a[6], t = clamp_count(a[7]);
+	int generator = noise_generator_of(a[8]);
+	int power = t > 0 ? (int)t : 0;
+	double signal = noise_at(x, y, z, generator) * 2.0 - 1.0 + offset;
+	x *= lacunarity, y *= lacunarity, z *= lacunarity;
+	double step = pow(lacunarity, -h), weight = step;
+	for (int i = 1; i < octaves; i++) {
+		double inc = (noise_at(x, y, z, generator) * 2.0 - 1.0 + offset) * weight;
+		for (int k = power; k > 0; k--)
+			inc *= signal;
+		signal += inc;
+		x *= lacunarity, y *= lacunarity, z *= lacunarity;
+		weight *= step;
+	}
+	double rem = isnan(octaves) ? octaves : octaves - trunc(octaves);
+	if (rem != 0.0)
+		signal += rem * ((noise_at(x, y, z, generator) * 2.0 - 1.0 + offset) * weight) * signal;
+	return signal;
+}
+
+/* f_ridge: x y z, lambda, octaves, omega, offset, ridge, generator. */
+static double ridge(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2], lambda = a[3], octaves = clamp_count(a[4]), omega = a[5];
+	double offset = a[6], ridge = a[7];
+	int generator = noise_generator_of(a[8]);
+	int n = isnan(octaves) ? 0 : (int)octaves;
+	double resid = isnan(octaves) ? octaves : octaves - n;
+	double rscale = 1.0 / fmax(ridge, 1.0 - ridge), scale = 1.0 / fmax(offset, 1.0 - offset);
+	double value = fabs(noise_at(x, y, z, generator) - ridge) * rscale - offset, total = 1.0;
+	double l = lambda, o = omega;
+	for (int i = 2; i <= n; i++) {
+		value += o * (fabs(noise_at(x * l, y * l, z * l, generator) - ridge) * rscale - offset);
+		total += o;
+		l *= lambda;
+		o *= omega;
+	}
+	if (resid != 0.0) {
+		value += o * (fabs(noise_at(x * l, y * l, z * l, generator) - ridge) * rscale - offset) * resid;
+		total += o * resid;
+	}
+	return value * scale / total;
+}
+
+/* f_ridged_mf: x y z, H, lacunarity, octaves, offset, gain, generator. POV-Ray
+ * keeps its octaves' weights from the first call of the function in the scene
+ * (they are its parameters' for a function called with constant ones). */
+static double ridged_mf(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2], h = a[3], lacunarity = a[4], octaves = clamp_count(a[5]);
+	double offset = a[6], gain = a[7];
+	int generator = noise_generator_of(a[8]);
+	double signal = offset - fabs(noise_at(x, y, z, generator) * 2.0 - 1.0);
+	signal *= signal;
+	double result = signal, frequency = 1.0;
+	for (int i = 1; i < octaves; i++) {
+		x *= lacunarity, y *= lacunarity, z *= lacunarity;
+		frequency *= lacunarity;
+		double weight = signal * gain;
+		weight = weight > 1.0 ? 1.0 : weight < 0.0 ? 0.0 : weight;
+		signal = offset - fabs(noise_at(x, y, z, generator) * 2.0 - 1.0);
+		signal *= signal;
+		signal *= weight;
+		result += signal * pow(frequency, -h);
+	}
+	return result;
+}
+
+double scene_noise_op(int op, const double *a)
+{
+	switch (op) {
+	case FOP_NOISE4: return noise_at(a[0], a[1], a[2], noise_generator_of(a[3]));
+	case FOP_HETERO_MF: return hetero_mf(a);
+	case FOP_RIDGE: return ridge(a);
+	case FOP_RIDGED_MF: return ridged_mf(a);
+	default: return 0;
+	}
+}

@@ -38,7 +38,8 @@ static double f0(double a, double b)   /* F0 below, with K = 3 */
 	return sin(a * 3) * cos(b * 3);
 }
 
-/* Each case: the body of function { } in POV-Ray's language, and the same in C. */
+/* Each case: the body of function { } in POV-Ray's language, and the same in C
+ * (NULL: the device against the host's run alone). */
 static double c_arith(double x, double y, double z) { return x * y - z / 2 + 1; }
 static double c_declared(double x, double y, double z) { (void)z; return f0(x, y); }
 static double c_calls(double x, double y, double z) { return f0(x, z) + f0(z, y) * f0(y, x); }
@@ -134,6 +135,55 @@ static const struct {
 	double (*c)(double, double, double);
 } cases[] = {
 	{ "f_noise3d", "f_noise3d(2 * x, y, z - 1) * 0.5 + f_noise3d(x, y, z)", c_noise },
+	/* the other internal functions against the host's run only: tests/eval's
+	 * internal_*.scn hold the host's to POV-Ray's own values */
+	{ "functions.inc's algebraic surfaces",
+	  "f_bicorn(x, y, z, 1, 0.8) + f_bifolia(x, y, z, 1, 3) + f_boy_surface(x, y, z, 0.01, 0.05)"
+	  " + f_crossed_trough(x, y, z, 1) + f_cubic_saddle(x, y, z, 1) + f_cushion(x, y, z, 1)"
+	  " + f_devils_curve(x, y, z, 1) + f_dupin_cyclid(x, y, z, 0.001, 4.9, 5, 2, 0, 3)"
+	  " + f_enneper(x, y, z, 1) + f_folium_surface(x, y, z, 1, 1, 1) + f_glob(x, y, z, 1)"
+	  " + f_hunt_surface(x, y, z, 0.001) + f_hyperbolic_torus(x, y, z, 1, 0.5, 0.25)"
+	  " + f_kampyle_of_eudoxus(x, y, z, 1, 0.2, 1.5) + f_klein_bottle(x, y, z, 1)"
+	  " + f_kummer_surface_v1(x, y, z, 1) + f_kummer_surface_v2(x, y, z, 1, -0.97, -0.5, 0.3)"
+	  " + f_lemniscate_of_gerono(x, y, z, 1) + f_nodal_cubic(x, y, z, 1) + f_odd(x, y, z, 1)"
+	  " + f_ovals_of_cassini(x, y, z, 1, 0.5, 0.3, 1.2) + f_parabolic_torus(x, y, z, 1, 0.6, 0.3)"
+	  " + f_pillow(x, y, z, 1) + f_piriform(x, y, z, 1) + f_quartic_paraboloid(x, y, z, 1)"
+	  " + f_quartic_saddle(x, y, z, 1) + f_steiners_roman(x, y, z, 1)"
+	  " + f_strophoid(x, y, z, 1, 0.4, 0.6, 1.5) + f_torus_gumdrop(x, y, z, 0.1) + f_umbrella(x, y, z, 1)", NULL },
+	{ "the SOR switch off, on, and turned",
+	  "f_algbr_cyl1(x, y, z, 1, 5, 0, 0, 0) + f_algbr_cyl1(x, y, z, 1, 5, 1, 0.3, 0)"
+	  " + f_algbr_cyl2(x, y, z, 1, 5, 1, 0.2, 25) + f_algbr_cyl3(x, y, z, 1, 5, 1, 0.3, 0)"
+	  " + f_algbr_cyl4(x, y, z, 1, 5, 0, 0, 0) + f_devils_curve_2d(x, y, z, 1, 0.6, 0.5, 1, 0.2, 25)"
+	  " + f_folium_surface_2d(x, y, z, 1, 1, 1, 1, 0.3, 0) + f_kampyle_of_eudoxus_2d(x, y, z, 1, 0.2, 1.5, 0, 0, 0)"
+	  " + f_lemniscate_of_gerono_2d(x, y, z, 1, 1.2, 0.8, 1, 0.2, 25)"
+	  " + f_piriform_2d(x, y, z, 1, 1, -1, 0.8, 1, 0.3, 0) + f_strophoid_2d(x, y, z, 1, 0.4, 0.6, 1.5, 1, 0.2, 25)"
+	  " + f_witch_of_agnesi_2d(x, y, z, 1, 0.5, 0.3, 1, 0.3, 0)", NULL },
+	{ "functions.inc's other shapes",
+	  "f_blob(x, y, z, 1, 1, 0.8, 1, 1.2) + f_blob2(x, y, z, 0.6, 2, 1, 0.2) + f_comma(x, y, z, 1)"
+	  " + f_helical_torus(x, y, z, 0.6, 5, 2, 0.1, 0.05, 0.2, 0.5, 3, 0.8, 1)"
+	  " + f_helix2(x, y, z, 0, 6, 0.1, 0.3, 0, 1, 0) + f_helix2(x, y, z, 0, 6, 0.1, 0.3, 0, 0.5, 0)"
+	  " + f_helix2(x, y, z, 0, 6, 0.1, 0.3, 0, 0, 0) + f_hex_x(x, y, z, 0) + f_hex_y(x, y, z, 0)"
+	  " + f_isect_ellipsoids(x, y, z, 3, 1.5, 1, 0.1) + f_mesh1(x, y, z, 0.3, 0.4, 2, 0.1, 1.5)"
+	  " + f_poly4(x, y, z, 0.2, 0.1, -0.3, 0.05, 0.4) + f_polytubes(x, y, z, 5, 0.3, 0.1, -0.2, 0.05, 0.1)"
+	  " + f_polytubes(x, y, z, 2.7, 0.3, 0.1, -0.2, 0.05, 0.1) + f_quantum(x, y, z, 0)"
+	  " + f_spikes(x, y, z, 0.1, 20, 2, 1.5, 0.9) + f_spikes_2d(x, y, z, 0.8, 9, 7, 3)"
+	  " + f_spiral(x, y, z, 0.3, 0.1, 1, 0, 0, 1) + f_spiral(x, y, z, 0.3, 0.1, 1, 0, 0, 0.5)"
+	  " + f_spiral(x, y, z, 0.3, 0.1, 1, 0, 0, 0)", NULL },
+	{ "f_noise_generator, f_hetero_mf, f_ridge, f_ridged_mf",
+	  "f_noise_generator(x, y, z, 1) + f_noise_generator(x, y, z, 3) + f_hetero_mf(x, y, z, 0.5, 2, 3.5, 0.8, 1, 2)"
+	  " + f_ridge(x, y, z, 2, 2.5, 0.5, 0.3, 0.5, 3) + f_ridged_mf(x, y, z, 0.5, 2, 4, 1, 2, 2)", NULL },
+	/* hostile counts end (clamped to 64 octaves, 256 tubes), the same on both */
+	{ "octaves, exponents, tubes and generators of 1e9 and below 0",
+	  "f_ridged_mf(x, y, z, 0.5, 2, 1e9, 1, 2, 1e30) + f_hetero_mf(x, y, z, 0.5, 2, -3.5, 0.8, 1e9, -7)"
+	  " + f_hetero_mf(x, y, z, 0.5, 1.1, 1e9, 0.1, 2, 1) + f_ridge(x, y, z, 2, 1e9, 0.5, 0.3, 0.5, -1e12)"
+	  " + f_ridge(x, y, z, 2, -2.5, 0.5, 0.3, 0.5, 2) + f_polytubes(x, y, z, 1e9, 0.3, 0, 0, 0, 0)"
+	  " + f_polytubes(x, y, z, -3, 0.3, 0, 0, 0, 0)", NULL },
+	{ "a count or generator that is NaN (f_ridged_mf and f_polytubes finite)",
+	  "f_ridged_mf(x, y, z, 0.5, 2, sqrt(-1 - x*x), 1, 2, sqrt(-1 - y*y)) + f_polytubes(x, y, z, sqrt(-1 - z*z), 0.3,"
+	  " 0, 0, 0, 0) + f_noise_generator(x, y, z, sqrt(-1 - x*x))", NULL },
+	{ "f_hetero_mf and f_ridge of NaN octaves (NaN)",
+	  "f_hetero_mf(x, y, z, 0.5, 2, sqrt(-1 - x*x), 0.8, 1, 2) + f_ridge(x, y, z, 2, sqrt(-1 - y*y), 0.5, 0.3, 0.5, 2)",
+	  NULL },
 	{ "f_flange_cover, f_mitre, f_paraboloid, f_quartic_cylinder, f_witch_of_agnesi",
 	  "f_flange_cover(x, y, z, 2, 3, 0.5, 1.2) + f_mitre(x, y, z, 2) + f_paraboloid(x, y, z, 1.5)"
 	  " + f_quartic_cylinder(x, y, z, 3, 0.3, 0.4) + f_witch_of_agnesi(x, y, z, 0.8, 0.6)", c_more_fields },
@@ -189,11 +239,23 @@ static char *scene_text(size_t *len)
 	fputs("#version 3.7;\n#declare K = 3;\n#declare V = <1, 2, 3>;\n"
 	      "#declare F0 = function(a, b) { sin(a * K) * cos(b * K) }\n"
 	      "#declare F1 = function { F0(x, z) + F0(z, y) * F0(y, x) }\n", f);
-	static const char *const internal[] = { "f_cross_ellipsoids 10", "f_ellipsoid 17", "f_heart 23", "f_ph 47",
-	                                        "f_r 57", "f_rounded_box 60", "f_sphere 61", "f_superellipsoid 68",
-	                                        "f_th 69", "f_torus 70", "f_torus2 71", "f_flange_cover 19",
-	                                        "f_mitre 41", "f_paraboloid 45", "f_quartic_cylinder 56",
-	                                        "f_witch_of_agnesi 74", "f_noise3d 76" };
+	static const char *const internal[] = {   /* all of functions.inc's */
+		"f_algbr_cyl1 0", "f_algbr_cyl2 1", "f_algbr_cyl3 2", "f_algbr_cyl4 3", "f_bicorn 4", "f_bifolia 5",
+		"f_blob 6", "f_blob2 7", "f_boy_surface 8", "f_comma 9", "f_cross_ellipsoids 10", "f_crossed_trough 11",
+		"f_cubic_saddle 12", "f_cushion 13", "f_devils_curve 14", "f_devils_curve_2d 15", "f_dupin_cyclid 16",
+		"f_ellipsoid 17", "f_enneper 18", "f_flange_cover 19", "f_folium_surface 20", "f_folium_surface_2d 21",
+		"f_glob 22", "f_heart 23", "f_helical_torus 24", "f_helix1 25", "f_helix2 26", "f_hex_x 27", "f_hex_y 28",
+		"f_hetero_mf 29", "f_hunt_surface 30", "f_hyperbolic_torus 31", "f_isect_ellipsoids 32",
+		"f_kampyle_of_eudoxus 33", "f_kampyle_of_eudoxus_2d 34", "f_klein_bottle 35", "f_kummer_surface_v1 36",
+		"f_kummer_surface_v2 37", "f_lemniscate_of_gerono 38", "f_lemniscate_of_gerono_2d 39", "f_mesh1 40",
+		"f_mitre 41", "f_nodal_cubic 42", "f_odd 43", "f_ovals_of_cassini 44", "f_paraboloid 45",
+		"f_parabolic_torus 46", "f_ph 47", "f_pillow 48", "f_piriform 49", "f_piriform_2d 50", "f_poly4 51",
+		"f_polytubes 52", "f_quantum 53", "f_quartic_paraboloid 54", "f_quartic_saddle 55",
+		"f_quartic_cylinder 56", "f_r 57", "f_ridge 58", "f_ridged_mf 59", "f_rounded_box 60", "f_sphere 61",
+		"f_spikes 62", "f_spikes_2d 63", "f_spiral 64", "f_steiners_roman 65", "f_strophoid 66",
+		"f_strophoid_2d 67", "f_superellipsoid 68", "f_th 69", "f_torus 70", "f_torus2 71", "f_torus_gumdrop 72",
+		"f_umbrella 73", "f_witch_of_agnesi 74", "f_witch_of_agnesi_2d 75", "f_noise3d 76", "f_noise_generator 78"
+	};
 	for (size_t i = 0; i < sizeof internal / sizeof *internal; i++) {   /* as functions.inc declares them */
 		char name[32];
 		int n;
@@ -476,7 +538,7 @@ int main(int argc, char **argv)
 			printf("  scene_function_eval_many failed\n");
 		for (int i = 0; i < n; i++) {
 			double a[3] = { pts[4 * i], pts[4 * i + 1], pts[4 * i + 2] };
-			double want = cases[c].c(a[0], a[1], a[2]), host = scene_function_eval(&s, f, a);
+			double host = scene_function_eval(&s, f, a), want = cases[c].c ? cases[c].c(a[0], a[1], a[2]) : host;
 			double dev_v = out[i];   /* a float, before the pattern wraps it */
 			bool same = many[i] == host || (isnan(many[i]) && isnan(host));
 			bool ok = close_to(host, want) && close_to(dev_v, (float)want) && same;
