@@ -460,6 +460,11 @@ static inline float3 pattern_warp(global const dev_warp *w, float3 p)
 			float3 block = (float3)(rep.x >= 1e-10f ? floor(p.x / rep.x) : 0.0f,
 			                        rep.y >= 1e-10f ? floor(p.y / rep.y) : 0.0f,
 			                        rep.z >= 1e-10f ? floor(p.z / rep.z) : 0.0f);
+			/* its turbulence moves each block's hole by POV-Ray's WarpRands
+			 * (PatternRands' sequence) at the block's hash */
+			float3 b = clamp(block, -1.0e9f, 1.0e9f);   /* an int's range: only the low bits hash */
+			int seed = pattern_hash3((int)b.x, (int)b.y, (int)b.z);
+			centre += (float3)(pattern_rands[seed], pattern_rands[seed + 1], pattern_rands[seed + 2]) * w->d.xyz;
 			centre += rep * block;
 		}
 		float3 delta = p - centre;

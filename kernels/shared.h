@@ -284,7 +284,7 @@ enum { WAVE_RAMP = 0, WAVE_SINE, WAVE_TRIANGLE, WAVE_SCALLOP, WAVE_CUBIC, WAVE_P
 enum { WARP_TURBULENCE = 0, WARP_REPEAT, WARP_BLACK_HOLE, WARP_TRANSFORM, WARP_PLANAR, WARP_CYLINDRICAL,
        WARP_SPHERICAL, WARP_TOROIDAL, WARP_CUBIC };
 
-/* One warp, 64 bytes. A pattern's warps are in POV-Ray's list order, which is
+/* One warp, 80 bytes. A pattern's warps are in POV-Ray's list order, which is
  * the order they apply in: each warp { } written goes to the FRONT of the list
  * (the last written applies first); the turbulence written in the pattern
  * itself goes to the END when first written, and stays last; a transformation
@@ -301,8 +301,10 @@ enum { WARP_TURBULENCE = 0, WARP_REPEAT, WARP_BLACK_HOLE, WARP_TRANSFORM, WARP_P
  *   width); b.xyz offset; c.xyz flip (non-zero: flip that axis).
  * black_hole: a.xyz centre, a.w radius; b.x strength, b.y falloff,
  *   b.z 1 for inverse; c.xyz repeat, c.w 1 when repeated; centre and repeat as
- *   POV-Ray adjusts them for a repeat (Check_BH_Parameters); turbulence not
- *   kept, nor a type other than 0 (which does nothing in 3.7: drop the warp).
+ *   POV-Ray adjusts them for a repeat (Check_BH_Parameters); d.xyz its
+ *   turbulence, how far each repeated hole's centre moves at random (POV-Ray's
+ *   uncertainty vector); a type other than 0 is not kept (it does nothing in
+ *   3.7: drop the warp).
  * transform: a, b, c the rows of the affine map applied to the point (the
  *   inverse of the transformation written), as dev_pattern.rows.
  * planar, cylindrical, spherical, toroidal, cubic: POV-Ray 3.7's mapping
@@ -310,7 +312,7 @@ enum { WARP_TURBULENCE = 0, WARP_REPEAT, WARP_BLACK_HOLE, WARP_TRANSFORM, WARP_P
  *   surface to the xy plane (warps.cpp); a.xyz the orientation (unit; <0, 0, 1>
  *   by default), a.w dist_exp (planar: its offset), b.x a torus's major radius. */
 typedef struct {
-	float4 a, b, c;
+	float4 a, b, c, d;
 	int kind, classic, pad1, pad2;
 } dev_warp;
 

@@ -357,9 +357,7 @@ static int warp_block(struct eval *e, const ast_node *b, scene_pigment *pg)
 			rc = next_vector(e, &c, item, w.c);
 			w.c[3] = 1;
 		} else if (item->kind == AST_ARG && item->kw == KW_TURBULENCE && w.kind == WARP_BLACK_HOLE) {
-			/* POV-Ray jitters the repeated holes by it */
-			eval_warn_once(e, item->loc, "black_hole turbulence", "a black_hole's turbulence is not supported "
-			               "yet; ignored");
+			rc = eval_expect_vector(e, item->kids[0], w.d);   /* jitters the repeated holes */
 		} else {
 			rc = eval_not_valid(e, item, "a warp");
 		}
@@ -372,9 +370,19 @@ static int warp_block(struct eval *e, const ast_node *b, scene_pigment *pg)
 		return 0;
 	}
 	if (w.kind == WARP_BLACK_HOLE && w.c[3] != 0)   /* POV-Ray keeps a repeated hole inside its block */
-		for (int k = 0; k < 3; k++)
-			if (w.c[k] > 0 && w.a[k] < w.a[3])
+		for (int k = 0; k < 3; k++) {
+			if (!(w.c[k] > 0))
+				continue;
+			if (w.a[k] < w.a[3])
 				w.a[k] = w.a[3];
+			if (w.c[k] < w.a[k] + w.a[3] + w.d[k]) {   /* and its jitter too: the block grows */
+				w.c[k] = w.a[k] + w.a[3] + w.d[k];
+				eval_warning(e, b->loc, "the black hole's repeat along %c is too small for its centre, radius "
+				             "and turbulence: increased to %g, as POV-Ray does", "xyz"[k], w.c[k]);
+			}
+			if (w.c[k] < 1e-10)   /* POV-Ray's EPSILON: no repeat along that axis */
+				w.c[k] = 0;
+		}
 	push_front(pg, &w);
 	return 0;
 }

@@ -24,7 +24,7 @@ _Static_assert(sizeof(dev_material) == 208 && offsetof(dev_material, pattern) ==
                offsetof(dev_material, irid) == 176, "dev_material layout");
 _Static_assert(sizeof(dev_light) == 128, "dev_light is 128 bytes");
 _Static_assert(offsetof(dev_light, cos_falloff) == 80, "dev_light scalars at 80");
-_Static_assert(sizeof(dev_warp) == 64, "dev_warp is 64 bytes");
+_Static_assert(sizeof(dev_warp) == 80, "dev_warp is 80 bytes");
 _Static_assert(sizeof(dev_pattern) == 144 && offsetof(dev_pattern, params) == 80, "dev_pattern layout");
 _Static_assert(sizeof(dev_map_entry) == 32, "dev_map_entry is 32 bytes");
 _Static_assert(sizeof(dev_image) == 16, "dev_image is 16 bytes");

@@ -186,7 +186,7 @@ static int flatten(lower_textures *lt, const scene *s, int node, const xform *to
 		d.params[0].x = (float)s->number_of_waves;
 	lt->warps = grow_to(lt->warps, &lt->cap_warps, lt->n_warps + n_warps, sizeof *lt->warps);
 	for (int i = 0; i < n_warps; i++) {
-		dev_warp dw = { .a = f4v(w[i].a), .b = f4v(w[i].b), .c = f4v(w[i].c), .kind = w[i].kind,
+		dev_warp dw = { .a = f4v(w[i].a), .b = f4v(w[i].b), .c = f4v(w[i].c), .d = f4v(w[i].d), .kind = w[i].kind,
 		                .classic = w[i].classic };
 		if (w[i].kind == WARP_TRANSFORM) {
 			xform t = inverse_or_identity(&w[i].xf, pg->loc);

@@ -724,6 +724,8 @@ static void dump_pigment(FILE *out, const scene *s, int index, const scene_pigme
 				fputc(' ', out);
 				num(out, v[i][k]);
 			}
+		if (w->d[0] != 0 || w->d[1] != 0 || w->d[2] != 0)   /* a black hole's turbulence */
+			vec(out, "turbulence", w->d);
 	}
 
 	fputs(" map", out);

@@ -42,7 +42,7 @@ typedef struct {
 typedef struct {
 	int kind;                /* WARP_ */
 	bool classic;            /* the turbulence written in the pattern itself */
-	double a[4], b[4], c[4];
+	double a[4], b[4], c[4], d[4];
 	xform xf;                /* WARP_TRANSFORM: the pattern's space to the outer one, as written */
 } scene_warp;
 
