@@ -7,12 +7,30 @@
  * that share an edge compute the same edge function for it with opposite signs:
  * a ray through the edge, or through a shared corner, hits one of them. */
 /* The ray's part of that test, the same for every triangle, which a mesh's
- * traversal makes once a ray (traverse.cl): the axes in the order x, y, z of
- * the sheared space (a shuffle mask, w kept) and the shear. */
+ * traversal makes once a ray (traverse.cl): the order of the axes x, y, z of
+ * the sheared space (one of six, triangle_order) and the shear. */
 typedef struct {
-	uint4 axes;
+	int perm;    /* the order: 2 kz, plus 1 where x and y are swapped (triangle_order) */
 	float sx, sy, sz;
 } triangle_ray;
+
+/* v's axes in a ray's order (triangle_setup's perm): six constant shuffles,
+ * the same one taken for every triangle of a ray. OpenCL's shuffle with the
+ * order as a variable mask went through memory on PoCL (a store and three
+ * loads a corner, 8% of the mesh level's samples under perf); a switch of
+ * constant shuffles is a jump the branch predictor learns and one vpermilps
+ * a corner (issue 18). */
+static inline float4 triangle_order(float4 v, int perm)
+{
+	switch (perm) {
+	case 0: return v.yzxw;
+	case 1: return v.zyxw;
+	case 2: return v.zxyw;
+	case 3: return v.xzyw;
+	case 4: return v.xyzw;
+	default: return v.yxzw;
+	}
+}
 
 static inline triangle_ray triangle_setup(float3 d)
 {
@@ -23,21 +41,24 @@ static inline triangle_ray triangle_setup(float3 d)
 	if (dz < 0.0f) {   /* keep the winding: swap x and y */
 		int k = kx; kx = ky; ky = k;
 	}
-	triangle_ray r = { (uint4)((uint)kx, (uint)ky, (uint)kz, 3u), intersect_axis(d, kx) / dz,
-	                   intersect_axis(d, ky) / dz, 1.0f / dz };
+	triangle_ray r = { 2 * kz + (dz < 0.0f), intersect_axis(d, kx) / dz, intersect_axis(d, ky) / dz,
+	                   1.0f / dz };
 	return r;
 }
 
 /* The test with the ray's part made: each corner is moved to the ray's
- * origin and its axes put in the sheared space's order by one shuffle.
+ * origin and its axes put in the sheared space's order by one constant
+ * shuffle (the same numbers as shuffling first: a difference of two floats
+ * does not depend on their lane).
  * Always inlined: it has several callers (the traversal levels, CSG), and as a
  * call it spilled the traversal's registers at every leaf; inlined, make bench's
  * traversal-only rays run 3-7% faster (issue 18). */
 static inline __attribute__((always_inline)) float triangle_intersect_ray(float3 o, const triangle_ray *r, global const dev_prim *p, float tmin,
                                     float tmax)
 {
-	float4 ro = shuffle((float4)(o, 0.0f), r->axes);
-	float4 a = shuffle(p->a, r->axes) - ro, b = shuffle(p->b, r->axes) - ro, c = shuffle(p->c, r->axes) - ro;
+	float4 ro = (float4)(o, 0.0f);
+	float4 a = triangle_order(p->a - ro, r->perm), b = triangle_order(p->b - ro, r->perm);
+	float4 c = triangle_order(p->c - ro, r->perm);
 	float sx = r->sx, sy = r->sy, sz = r->sz;
 	float az = a.z, bz = b.z, cz = c.z;
 	float ax = a.x - sx * az, ay = a.y - sy * az;
