@@ -809,9 +809,13 @@ static int image_load(struct eval *e, const char *name, double gamma, int premul
 	bool ft_any = ft && (ft->any || ft->all[0] || ft->all[1]);
 	for (size_t i = 0; ft_any && i < offsetof(struct palette_ft, loc); i++)
 		hash = (hash ^ ((const unsigned char *)ft)[i]) * 16777619u;
-	snprintf(key, sizeof key, "%s\t%g\t%d%s%s%08x", use, gamma, premul,
+	/* POV-Ray 3.7 in a scene older than 3.7 (its gamma modes None and
+	 * AssumedGamma36) decodes an image's colours with the working gamma: it
+	 * takes them as they are, unless the image gives its own gamma. */
+	bool as_they_are = how == USE_COLOUR && gamma <= 0 && e->version_given && e->version < 3.7;
+	snprintf(key, sizeof key, "%s\t%g\t%d%s%s%08x%s", use, gamma, premul,
 	         how == USE_DATA ? "\tdata" : how == USE_NUMBER ? "\tnumber" : "", ft_any ? "\tft" : "",
-	         ft_any ? hash : 0u);
+	         ft_any ? hash : 0u, as_they_are ? "\tlegacy" : "");
 	*palette = false;
 	for (int i = 0; i < s->n_images; i++)
 		if (strcmp(s->images[i].key, key) == 0) {
@@ -837,7 +841,7 @@ static int image_load(struct eval *e, const char *name, double gamma, int premul
 	                   .premultiplied = premul >= 0 ? premul != 0 : d.premultiplied != 0, .loc = loc };
 	image_decode(&im, &d);
 	im.data = how != USE_COLOUR;
-	if (im.data)   /* POV-Ray reads a bump_map's, image_pattern's or material_map's values as they are */
+	if (im.data || as_they_are)   /* POV-Ray reads a bump_map's, image_pattern's or material_map's values as they are */
 		im.decode = SCENE_DECODE_NONE;
 	if (how == USE_NUMBER)
 		image_numbers(e, use, &im);
