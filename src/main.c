@@ -695,9 +695,10 @@ static void print_ray_stats(const render_stats *st)
 	        ? (double)tests / st->counts[COUNT_RAYS + RAY_CAMERA] : 0);
 }
 
-/* POV-Ray lights such a scene with its ambient term; a path tracer sees black
- * (unless a fog or a media glows). An emitting surface counts whether or not
- * the emitter table has a row for it: a torus that emits is found by rays. */
+/* POV-Ray lights such a scene with its ambient term, and so does the Whitted
+ * integrator; a path tracer sees black (unless a fog or a media glows). An
+ * emitting surface counts whether or not the emitter table has a row for it: a
+ * torus that emits is found by rays. */
 static void warn_if_dark(const struct options *o, const scene *s, const lower_result *lr)
 {
 	const float *bg = s->has_sky ? s->sky : s->background;
@@ -709,6 +710,8 @@ static void warn_if_dark(const struct options *o, const scene *s, const lower_re
 	for (int i = 0; i < lr->n_materials; i++) {
 		const dev_material *m = &lr->materials[i];
 		glows |= m->emission.x > 0 || m->emission.y > 0 || m->emission.z > 0;
+		if (o->integrator == INTEGRATOR_WHITTED)
+			glows |= m->ambient.x > 0 || m->ambient.y > 0 || m->ambient.z > 0;
 	}
 	if (lr->n_lights == 0 && lr->n_fogs == 0 && lr->n_rainbows == 0 && !glows && bg[0] <= 0 && bg[1] <= 0 &&
 	    bg[2] <= 0)
