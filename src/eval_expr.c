@@ -1110,9 +1110,14 @@ int eval_call_function(struct eval *e, const ast_node *call, const value *fn, va
 			return internal_op(e, call, op, n_op, out);
 		const ast_node *written = number && number->kind == AST_NUMBER ? eval_internal_function((int)(k = number->num))
 		                        : NULL;
+		if (!number || number->kind != AST_NUMBER) {
+			eval_error(e, call->loc, "'%s' calls internal() with no number: it takes the number of one of "
+			           "POV-Ray's internal functions, " EVAL_INTERNAL_RANGE, call->str);
+			return -1;
+		}
 		if (!written || k != (int)k) {
-			eval_error(e, call->loc, "'%s' is one of POV-Ray's internal functions, which eclat does not have",
-			           call->str);
+			eval_error(e, call->loc, "'%s' is internal(%g), which is none of POV-Ray 3.7's internal functions "
+			           "that eclat has: " EVAL_INTERNAL_RANGE, call->str, k);
 			return -1;
 		}
 		value w = { .kind = V_FUNCTION, .node = written };

@@ -497,8 +497,7 @@ static int function_of(struct eval *e, const ast_node *def, struct scope *env, c
 		const ast_node *written = eval_internal_function(number);
 		if (!written)
 			return unsupported(e, skipped, use, "'%s' is internal(%d), which is none of POV-Ray 3.7's internal "
-			                   "functions that eclat has: 0 to 78 but 77 (f_pattern, which functions.inc does "
-			                   "not declare)", name, number);
+			                   "functions that eclat has: " EVAL_INTERNAL_RANGE, name, number);
 		return function_of(e, written, NULL, name, use, depth + 1, skipped, index);
 	}
 	struct fcomp c = { .e = e, .def = def, .names = params->n_kids ? NULL : xyz,

@@ -381,6 +381,9 @@ const ast_node *eval_internal_function(int number);
 /* internal(number)'s op, when it is one op on its parameters (f_noise3d, the
  * noise functions, f_polytubes), and its number of parameters; else -1. */
 int eval_internal_op(int number, int *n_params);
+/* What the error for another number says eclat has (eval_function.c's and
+ * eval_expr.c's, for the device and the host). */
+#define EVAL_INTERNAL_RANGE "0 to 78 but 77 (f_pattern, which functions.inc does not declare)"
 /* A word of POV-Ray's that is no keyword of eclat's parser (threshold,
  * component...): its name, or NULL. "threshold -0.2" reaches the evaluator as
  * threshold - 0.2: then *negated is the number after it (eval_isosurface.c). */
