@@ -52,7 +52,13 @@ static void build(const char *src)
 	if (++written % BUILD_EVERY != 1 || open_device())
 		return;
 	const char *parts[2] = { "typedef float real;\ntypedef struct scene_data scene_data;\n"
-	                         "float pattern_noise(float3 p, int g) { return p.x + g; }\n", src };
+	                         "float pattern_noise(float3 p, int g) { return p.x + g; }\n"
+	                         /* the internal functions' ops (kernels/pattern.cl, function.cl) */
+	                         "real function_noise4(real x, real y, real z, real g) { return x + g; }\n"
+	                         "#define STAND_IN9(name) real name(real x, real y, real z, real a, real b, real c, "
+	                         "real d, real e, real f) { return x + a + b + c + d + e + f; }\n"
+	                         "STAND_IN9(function_hetero_mf) STAND_IN9(function_ridge) STAND_IN9(function_ridged_mf) "
+	                         "STAND_IN9(function_polytubes)\n", src };
 	cl_int err;
 	cl_program p = clCreateProgramWithSource(context, 2, parts, NULL, &err);
 	if (!p)
