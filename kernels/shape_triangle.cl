@@ -12,6 +12,7 @@
 typedef struct {
 	int perm;    /* the order: 2 kz, plus 1 where x and y are swapped (triangle_order) */
 	float sx, sy, sz;
+	int kx, ky, kz;   /* the same order as axis numbers (traverse.cl's blocks of four) */
 } triangle_ray;
 
 /* v's axes in a ray's order (triangle_setup's perm): six constant shuffles,
@@ -42,7 +43,7 @@ static inline triangle_ray triangle_setup(float3 d)
 		int k = kx; kx = ky; ky = k;
 	}
 	triangle_ray r = { 2 * kz + (dz < 0.0f), intersect_axis(d, kx) / dz, intersect_axis(d, ky) / dz,
-	                   1.0f / dz };
+	                   1.0f / dz, kx, ky, kz };
 	return r;
 }
 

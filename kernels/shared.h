@@ -38,6 +38,9 @@ typedef struct {
  *   float 2^e when shifted left by 23); byte 3, the number of children (0-4).
  * child[k] >= 0: an interior child, the index of its wide node; < 0: a leaf,
  *   bits 0-25 its first primitive, bits 26-30 its primitive count (1-31).
+ *   In a mesh's tree (not the top level's) bits 0-25 are instead the node
+ *   index of the leaf's first bvh_tri4 block, and its count triangles are in
+ *   (count + 3) / 4 blocks from there.
  * With --bvh-layout wide the kernels' node buffer holds these; it keeps the
  * type bvh_node in every signature and only traverse.cl reads it. */
 typedef struct {
@@ -49,6 +52,20 @@ typedef struct {
 } bvh_wnode;
 #define BVH_WIDE_LEAF_MAX 31
 #define BVH_WIDE_FIRST_BITS 26
+
+/* Four of a wide mesh leaf's triangles, their corners a, b, c in
+ * structure-of-arrays (ax holds the four corners a's x), so that one work item
+ * tests the four together in float4s (traverse.cl, traverse_blocks); 192 bytes,
+ * three node slots, in the node buffer beside the nodes that point at them
+ * (src/bvh_wide.c). prim: each triangle's index in the primitives, which the
+ * hit reports and shading reads; lanes past the leaf's count hold -1 and
+ * zeros. The corners are copies of the primitives', bit for bit. */
+typedef struct {
+	float4 ax, ay, az, bx, by, bz, cx, cy, cz;
+	int prim[4];
+	int pad[8];
+} bvh_tri4;
+#define BVH_TRI4_SLOTS 3   /* node slots a block takes */
 
 /* The device's shapes, one row each: X(NAME, name) makes PRIM_NAME and calls
  * name_intersect, name_normal and name_inside, which kernels/shape_*.cl define

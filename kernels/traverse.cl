@@ -71,7 +71,7 @@ typedef struct {
  * setting hit.prim and hit.inst. With any, the first hit ends the walk. counts
  * adds up the node and primitive tests for the ray's kind (the heat map's measure). */
 #if !BVH_WIDE
-#define TRAVERSE_FUNCTION(NAME, SETUP, LEAF_PRIM)                                                \
+#define TRAVERSE_FUNCTION(NAME, SETUP, LEAF_PRIM, BLOCKS)                                              \
 static inline traverse_hit NAME(const scene_data *sc, global const bvh_node *nodes,               \
                          global const dev_prim *prims, int root,                                 \
                          float3 o, float3 d, float tmin, float tmax, bool any, uint *counts,     \
@@ -151,6 +151,60 @@ static inline float4 traverse_children(global const bvh_wnode *n, const traverse
 	return select((float4)(INFINITY), enter, hit);
 }
 
+/* One lane of traverse_blocks' answer: its triangle, when it hits nearer
+ * than the hit so far (lanes in order and < as the triangles one by one). */
+#define TRAVERSE_LANE(OK, T, PRIM)                                                              \
+	if ((OK) && (T) < hit.t) {                                                                  \
+		hit.t = (T);                                                                            \
+		hit.prim = (PRIM);                                                                      \
+	}
+
+/* A mesh leaf's triangles, four at a time from their bvh_tri4 blocks: the
+ * watertight test of triangle_intersect_ray in float4s, with the same
+ * operations in the same order, so each lane's answer is the single test's
+ * bit for bit. A block where a live lane has an edge function of exactly 0
+ * (a ray through an edge or a corner) is tested one triangle at a time, by
+ * triangle_intersect_ray itself, which decides such edges in double. */
+static inline traverse_hit traverse_blocks(global const bvh_wnode *nodes, global const dev_prim *prims, int ref,
+                                           float3 o, const triangle_ray *r, float tmin, traverse_hit hit, bool any_hit,
+                                           uint *counts, int kind)
+{
+	int count = (ref >> BVH_WIDE_FIRST_BITS) & BVH_WIDE_LEAF_MAX;
+	global const bvh_tri4 *blk = (global const bvh_tri4 *)&nodes[ref & ((1 << BVH_WIDE_FIRST_BITS) - 1)];
+	float ox = intersect_axis(o, r->kx), oy = intersect_axis(o, r->ky), oz = intersect_axis(o, r->kz);
+	float sx = r->sx, sy = r->sy, sz = r->sz;
+	counts[COUNT_PRIMS + kind] += count;
+	for (int left = count; left > 0; left -= 4, blk++) {
+		global const float4 *q = &blk->ax;   /* corner c's axis k: q[3 c + k] */
+		float4 az = q[r->kz] - oz, bz = q[3 + r->kz] - oz, cz = q[6 + r->kz] - oz;
+		float4 ax = q[r->kx] - ox - sx * az, ay = q[r->ky] - oy - sy * az;
+		float4 bx = q[3 + r->kx] - ox - sx * bz, by = q[3 + r->ky] - oy - sy * bz;
+		float4 cx = q[6 + r->kx] - ox - sx * cz, cy = q[6 + r->ky] - oy - sy * cz;
+		float4 u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+		int4 live = (int4)(0, 1, 2, 3) < (int4)(left);
+		int4 id = vload4(0, blk->prim);
+		if (any(live & (u == 0.0f | v == 0.0f | w == 0.0f))) {
+			for (int k = 0; k < 4 && k < left; k++) {
+				int i = blk->prim[k];
+				float t = triangle_intersect_ray(o, r, &prims[i], tmin, hit.t);
+				TRAVERSE_LANE(t < hit.t, t, i)
+			}
+		} else {
+			int4 out = (u < 0.0f | v < 0.0f | w < 0.0f) & (u > 0.0f | v > 0.0f | w > 0.0f);
+			float4 det = u + v + w;
+			float4 t = (u * sz * az + v * sz * bz + w * sz * cz) / det;
+			int4 ok = live & ~out & det != 0.0f & t > tmin;
+			TRAVERSE_LANE(ok.x, t.x, id.x)
+			TRAVERSE_LANE(ok.y, t.y, id.y)
+			TRAVERSE_LANE(ok.z, t.z, id.z)
+			TRAVERSE_LANE(ok.w, t.w, id.w)
+		}
+		if (any_hit && hit.prim >= 0)
+			return hit;
+	}
+	return hit;
+}
+
 /* Orders two (distance, child) pairs, nearer first. */
 #define TRAVERSE_ORDER(TA, CA, TB, CB)                                                          \
 	if (TB < TA) {                                                                              \
@@ -165,7 +219,7 @@ static inline float4 traverse_children(global const bvh_wnode *n, const traverse
  * stacked farthest first, the next nearest on top. An any-hit walk (shadow
  * rays) only brings the nearest forward, in three: 4-6% more shadow rays a
  * second in make bench's traversal-only measurement. */
-#define TRAVERSE_FUNCTION(NAME, SETUP, LEAF_PRIM)                                                \
+#define TRAVERSE_FUNCTION(NAME, SETUP, LEAF_PRIM, BLOCKS)                                        \
 static inline traverse_hit NAME(const scene_data *sc, global const bvh_node *nodes_,              \
                          global const dev_prim *prims, int root,                                 \
                          float3 o, float3 d, float tmin, float tmax, bool any, uint *counts,     \
@@ -178,7 +232,11 @@ static inline traverse_hit NAME(const scene_data *sc, global const bvh_node *nod
 	int stack[BVH_STACK_SIZE], sp = 0, ref = root;                                              \
 	float tstack[BVH_STACK_SIZE];                                                               \
 	for (;;) {                                                                                  \
-		if (ref < 0) {                                                                          \
+		if (ref < 0 && BLOCKS) {                                                                \
+			hit = traverse_blocks(nodes, prims, ref, o, &tri, tmin, hit, any, counts, kind);    \
+			if (any && hit.prim >= 0)                                                           \
+				return hit;                                                                     \
+		} else if (ref < 0) {                                                                   \
 			int first = ref & ((1 << BVH_WIDE_FIRST_BITS) - 1);                                 \
 			int end = first + ((ref >> BVH_WIDE_FIRST_BITS) & BVH_WIDE_LEAF_MAX);               \
 			for (int i = first; i < end; i++) {                                                 \
@@ -243,7 +301,7 @@ TRAVERSE_FUNCTION(traverse_mesh, triangle_ray tri = triangle_setup(d);, {
 		hit.t = t;
 		hit.prim = i;
 	}
-})
+}, BVH_WIDE)
 
 /* The top level: an instance takes the ray into its mesh's space, where the
  * direction is not unit length, so t means the same distance in both spaces. */
@@ -286,7 +344,7 @@ TRAVERSE_FUNCTION(traverse_top, triangle_ray tri = triangle_setup(d);, {
 			hit.flip = false;
 		}
 	}
-})
+}, 0)
 
 /* The unbounded primitives (planes, quadrics, and CSG objects with no bounds) after the
  * top level's n_prims: every ray tests them. */

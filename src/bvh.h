@@ -56,17 +56,22 @@ int bvh_build_median(const bvh_box *boxes, int n, int max_depth, bvh_tree *t);
 /* The 4-wide layout (bvh_wnode, kernels/shared.h), converted from binary
  * trees in one node array (src/bvh_wide.c). roots: binary node indices of the
  * trees' roots, each converted with everything below it; a root of -1 gives
- * an empty node (no children), for an empty tree. Returns 0, or -1 when memory
+ * an empty node (no children), for an empty tree. With tris, the primitives,
+ * the roots from first_mesh on are meshes' trees, all triangles, whose leaves
+ * become bvh_tri4 blocks (kernels/shared.h); with NULL no tree's do.
+ * Returns 0, or -1 when memory
  * runs out, a box is not finite or a primitive index needs more than
  * BVH_WIDE_FIRST_BITS bits (out is then left empty). */
 typedef struct {
 	bvh_wnode *nodes;
-	int n_nodes;
+	int n_nodes;        /* node slots, the blocks' included */
+	int n_blocks;       /* bvh_tri4 blocks among them, BVH_TRI4_SLOTS slots each */
 	int *roots;         /* the wide node of each root given */
 	int max_stack;      /* the most stack entries a traversal of any of the trees can need */
 } bvh_wide;
 
-int bvh_widen(const bvh_node *nodes, const int *roots, int n_roots, bvh_wide *out);
+int bvh_widen(const bvh_node *nodes, const int *roots, int n_roots, const dev_prim *tris, int first_mesh,
+              bvh_wide *out);
 void bvh_wide_free(bvh_wide *w);
 
 /* A new array of n elements of size bytes, out[i] = elems[index[i]] (a tree's

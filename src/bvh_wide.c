@@ -4,7 +4,7 @@
  *
  *   int roots[] = { 0, mesh_root, ... };   binary node indices
  *   bvh_wide w;
- *   if (bvh_widen(nodes, roots, n_roots, &w) == 0)
+ *   if (bvh_widen(nodes, roots, n_roots, prims, 1, &w) == 0)
  *       w.nodes[w.roots[k]] is the wide node of roots[k]; bvh_wide_free(&w);
  *
  * Each wide node takes the children of a binary interior node and, while it
@@ -12,7 +12,11 @@
  * that child's two children (the collapse most likely to save box tests).
  * Leaves keep their primitive ranges; a leaf of more than BVH_WIDE_LEAF_MAX
  * primitives (the median builder makes such) becomes a small subtree whose
- * children split its range and share its box. */
+ * children split its range and share its box.
+ * In a mesh's tree the triangles are copied into blocks of four (bvh_tri4),
+ * which the device tests together, and a subtree of at most four triangles
+ * becomes one leaf: one block test in place of a node and two or more single
+ * tests. */
 #include "bvh.h"
 
 #include <math.h>
@@ -23,6 +27,7 @@ typedef struct {
 	bvh_wide *w;
 	int cap;
 	int failed;
+	const dev_prim *tris;   /* the tree's triangles, when its leaves are blocks; else NULL */
 } widener;
 
 static float node_area(const bvh_node *n)
@@ -114,17 +119,48 @@ static void fill_node(widener *x, int w, int n, const bvh_node *box, const int *
 	}
 }
 
+/* count triangles from first copied into blocks after the nodes so far;
+ * returns the first block's node index, or -1. */
+static int leaf_blocks(widener *x, int first, int count)
+{
+	int at = x->w->n_nodes, n = (count + 3) / 4;
+	for (int k = 0; k < n * BVH_TRI4_SLOTS; k++)
+		if (alloc_node(x) < 0)
+			return -1;
+	bvh_tri4 *b = (bvh_tri4 *)&x->w->nodes[at];
+	x->w->n_blocks += n;
+	for (int k = 0; k < 4 * n; k++) {
+		bvh_tri4 *q = &b[k / 4];
+		int lane = k % 4;
+		if (k >= count) {
+			q->prim[lane] = -1;
+			continue;
+		}
+		const dev_prim *p = &x->tris[first + k];
+		float *f = (float *)q;   /* ax, ay, az, bx ... cz: corner c's axis a at 4 (3c + a) + lane */
+		const float4 *v[3] = { &p->a, &p->b, &p->c };
+		for (int c = 0; c < 3; c++) {
+			f[4 * (3 * c + 0) + lane] = v[c]->x;
+			f[4 * (3 * c + 1) + lane] = v[c]->y;
+			f[4 * (3 * c + 2) + lane] = v[c]->z;
+		}
+		q->prim[lane] = first + k;
+	}
+	return at;
+}
+
 /* The reference of a leaf over count primitives from first; *need is the
  * traversal stack it can take. */
 static int leaf_ref(widener *x, const bvh_node *box, int first, int count, int *need)
 {
 	*need = 0;
 	if (count <= BVH_WIDE_LEAF_MAX) {
-		if (first < 0 || first >= 1 << BVH_WIDE_FIRST_BITS) {
+		int at = x->tris ? leaf_blocks(x, first, count) : first;
+		if (at < 0 || at >= 1 << BVH_WIDE_FIRST_BITS) {
 			x->failed = 1;
 			return 0;
 		}
-		return (int)(0x80000000u | (uint)count << BVH_WIDE_FIRST_BITS | (uint)first);
+		return (int)(0x80000000u | (uint)count << BVH_WIDE_FIRST_BITS | (uint)at);
 	}
 	int w = alloc_node(x);
 	if (w < 0)
@@ -141,10 +177,36 @@ static int leaf_ref(widener *x, const bvh_node *box, int first, int count, int *
 	return w;
 }
 
-/* The children of binary node i, widened to at most four. */
-static int gather(const bvh_node *bin, int i, int kids[4])
+/* Whether binary node i's subtree holds at most 4 primitives, in one run
+ * (*first, *count): a subtree the wide layout makes a leaf of blocks. */
+static int small_subtree(const bvh_node *bin, int i, int *first, int *count)
 {
 	if (bin[i].count > 0) {
+		*first = bin[i].left_first;
+		*count = bin[i].count;
+		return *count <= 4;
+	}
+	int f1, n1, f2, n2;
+	return small_subtree(bin, bin[i].left_first, &f1, &n1) && small_subtree(bin, bin[i].left_first + 1, &f2, &n2) &&
+	       n1 + n2 <= 4 && f2 == f1 + n1 && (*first = f1, *count = n1 + n2, 1);
+}
+
+/* Whether binary node i is a leaf of the wide layout, and its run. */
+static int wide_leaf(const widener *x, const bvh_node *bin, int i, int *first, int *count)
+{
+	if (bin[i].count > 0) {
+		*first = bin[i].left_first;
+		*count = bin[i].count;
+		return 1;
+	}
+	return x->tris && small_subtree(bin, i, first, count);
+}
+
+/* The children of binary node i, widened to at most four. */
+static int gather(const widener *x, const bvh_node *bin, int i, int kids[4])
+{
+	int first, count;
+	if (wide_leaf(x, bin, i, &first, &count)) {
 		kids[0] = i;
 		return 1;
 	}
@@ -155,7 +217,7 @@ static int gather(const bvh_node *bin, int i, int kids[4])
 		int best = -1;
 		float best_area = -1.0f;
 		for (int k = 0; k < n; k++)
-			if (bin[kids[k]].count == 0 && node_area(&bin[kids[k]]) > best_area) {
+			if (!wide_leaf(x, bin, kids[k], &first, &count) && node_area(&bin[kids[k]]) > best_area) {
 				best = k;
 				best_area = node_area(&bin[kids[k]]);
 			}
@@ -172,16 +234,17 @@ static int gather(const bvh_node *bin, int i, int kids[4])
  * which the lowering bounds by BVH_STACK_SIZE). */
 static int widen(widener *x, const bvh_node *bin, int i, int *need)
 {
-	int w = alloc_node(x), kids[4], ref[4], n = gather(bin, i, kids);
+	int w = alloc_node(x), kids[4], ref[4], n = gather(x, bin, i, kids);
 	bvh_node boxes[4];
 	*need = 0;
 	if (w < 0)
 		return 0;
 	for (int k = 0; k < n && !x->failed; k++) {
 		const bvh_node *c = &bin[kids[k]];
-		int sub;
+		int sub, first, count;
 		boxes[k] = *c;
-		ref[k] = c->count > 0 ? leaf_ref(x, c, c->left_first, c->count, &sub) : widen(x, bin, kids[k], &sub);
+		ref[k] = wide_leaf(x, bin, kids[k], &first, &count) ? leaf_ref(x, c, first, count, &sub)
+		                                                    : widen(x, bin, kids[k], &sub);
 		*need = sub + n - 1 > *need ? sub + n - 1 : *need;
 	}
 	if (!x->failed)
@@ -189,15 +252,17 @@ static int widen(widener *x, const bvh_node *bin, int i, int *need)
 	return w;
 }
 
-int bvh_widen(const bvh_node *nodes, const int *roots, int n_roots, bvh_wide *out)
+int bvh_widen(const bvh_node *nodes, const int *roots, int n_roots, const dev_prim *tris, int first_mesh,
+              bvh_wide *out)
 {
 	memset(out, 0, sizeof *out);
-	widener x = { out, 0, 0 };
+	widener x = { out, 0, 0, NULL };
 	out->roots = malloc((size_t)(n_roots > 0 ? n_roots : 1) * sizeof *out->roots);
 	if (!out->roots)
 		x.failed = 1;
 	for (int r = 0; r < n_roots && !x.failed; r++) {
 		int need = 0;
+		x.tris = tris && r >= first_mesh ? tris : NULL;
 		out->roots[r] = roots[r] < 0 ? alloc_node(&x) : widen(&x, nodes, roots[r], &need);
 		out->max_stack = need > out->max_stack ? need : out->max_stack;
 	}

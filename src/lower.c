@@ -18,6 +18,8 @@ _Static_assert(sizeof(bvh_node) == 32, "bvh_node is 32 bytes");
 _Static_assert(offsetof(bvh_node, max_x) == 16, "bvh_node max at 16");
 _Static_assert(sizeof(bvh_wnode) == 64, "bvh_wnode is 64 bytes");
 _Static_assert(offsetof(bvh_wnode, qlo_x) == 16 && offsetof(bvh_wnode, child) == 40, "bvh_wnode layout");
+_Static_assert(sizeof(bvh_tri4) == BVH_TRI4_SLOTS * sizeof(bvh_wnode), "bvh_tri4 takes whole node slots");
+_Static_assert(offsetof(bvh_tri4, prim) == 144, "bvh_tri4 layout");
 _Static_assert(sizeof(dev_prim) == 64, "dev_prim is 64 bytes");
 _Static_assert(offsetof(dev_prim, type) == 48, "dev_prim ints at 48");
 _Static_assert(sizeof(dev_material) == 208 && offsetof(dev_material, pattern) == 144 &&
@@ -1011,7 +1013,7 @@ static int widen_trees(lower_result *out)
 	n_roots = 1 + unique;
 	roots[0] = out->n_prims > 0 ? 0 : -1;
 	bvh_wide w;
-	int rc = bvh_widen(out->nodes, roots, n_roots, &w);
+	int rc = bvh_widen(out->nodes, roots, n_roots, out->prims, 1, &w);
 	if (rc == 0 && w.max_stack > BVH_STACK_SIZE) {
 		diag_error(SRC_NOWHERE, "the wide BVH needs a traversal stack of %d, more than the kernels' %d",
 		           w.max_stack, BVH_STACK_SIZE);
@@ -1031,7 +1033,8 @@ static int widen_trees(lower_result *out)
 		return -1;
 	}
 	out->wnodes = w.nodes;
-	out->n_wnodes = w.n_nodes;
+	out->n_wnodes = w.n_nodes - BVH_TRI4_SLOTS * w.n_blocks;
+	out->n_wblocks = w.n_blocks;
 	out->dev_nodes = w.nodes;
 	out->dev_node_bytes = (size_t)w.n_nodes * sizeof *w.nodes;
 	free(w.roots);

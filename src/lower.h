@@ -88,7 +88,8 @@ typedef struct {
 	int layout;               /* the kernels' node layout, from lower_options */
 	int kernels;              /* the entry points to build, from lower_options */
 	bvh_wnode *wnodes;        /* the wide layout's nodes, the top level's root first; else NULL */
-	int n_wnodes;
+	int n_wnodes;             /* wide nodes, without the blocks */
+	int n_wblocks;            /* blocks of four mesh triangles (bvh_tri4) in the same buffer */
 	const void *dev_nodes;    /* what the kernels' node buffer holds: nodes or wnodes */
 	size_t dev_node_bytes;
 	dev_prim *prims;          /* the top level's in BVH order, the planes, then each mesh's;

@@ -671,8 +671,9 @@ static void print_bvh_stats(const scene *s, const lower_result *lr)
 		        b->bytes / 1048576.0);
 	}
 	if (lr->layout == LOWER_LAYOUT_WIDE)
-		fprintf(stderr, "bvh: layout wide: %d nodes of 4 children, %.2f MB (binary: %d nodes, %.2f MB)\n",
-		        lr->n_wnodes, lr->dev_node_bytes / 1048576.0, lr->n_nodes,
+		fprintf(stderr, "bvh: layout wide: %d nodes of 4 children and %d blocks of 4 mesh triangles, %.2f MB "
+		        "(binary: %d nodes, %.2f MB, and the triangles)\n",
+		        lr->n_wnodes, lr->n_wblocks, lr->dev_node_bytes / 1048576.0, lr->n_nodes,
 		        lr->n_nodes * sizeof(bvh_node) / 1048576.0);
 	else
 		fprintf(stderr, "bvh: layout binary: %d nodes, %.2f MB\n", lr->n_nodes, lr->dev_node_bytes / 1048576.0);

@@ -572,7 +572,7 @@ static void check_rays(const bvh_tree *t, const tri *tris, int n, const ray *ray
 	st->ms_bvh = now_ms() - t0;
 	int root = 0;
 	bvh_wide w;
-	if (bvh_widen(t->nodes, &root, 1, &w) != 0) {
+	if (bvh_widen(t->nodes, &root, 1, NULL, 0, &w) != 0) {
 		fail("bvh_widen failed");
 		goto done;
 	}
@@ -1286,7 +1286,7 @@ static void property_case(const char *name, rng *r, const tri *tris, int n, int 
 	int root = 0, bad = 0, brute_bad = 0, hits = 0;
 	float lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
 	if (!boxes || bvh_build(boxes, n, &sah) != 0 || bvh_build_median(boxes, n, 16, &med) != 0 ||
-	    bvh_widen(sah.nodes, &root, 1, &wide) != 0) {
+	    bvh_widen(sah.nodes, &root, 1, NULL, 0, &wide) != 0) {
 		fail("%s: build failed", name);
 		free(boxes);
 		return;
