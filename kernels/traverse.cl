@@ -312,22 +312,32 @@ TRAVERSE_FUNCTION(traverse_mesh, triangle_ray tri = triangle_setup(d);, {
 	}
 }, BVH_WIDE)
 
-/* The top level: an instance takes the ray into its mesh's space, where the
- * direction is not unit length, so t means the same distance in both spaces. */
+/* Instance i (a placed mesh) against the ray, lowering hit: the ray is taken
+ * into its mesh's space, where the direction is not unit length, so t means
+ * the same distance in both spaces. */
+static inline traverse_hit traverse_instance(const scene_data *sc, global const bvh_node *nodes,
+                                             global const dev_prim *prims, int i, float3 o, float3 d, float tmin,
+                                             traverse_hit hit, bool any, uint *counts, int kind)
+{
+	global const dev_prim *q = &prims[i];
+	float3 mo = intersect_to_local(q, o);
+	float3 md = (float3)(dot(q->a.xyz, d), dot(q->b.xyz, d), dot(q->c.xyz, d));
+	traverse_hit h = traverse_mesh(sc, nodes, prims, q->link, mo, md, tmin, hit.t, any, counts, kind);
+	if (h.prim >= 0) {
+		hit.t = h.t;
+		hit.prim = h.prim;
+		hit.inst = i;
+		hit.flip = false;
+	}
+	return hit;
+}
+
+/* The top level: the scene's primitives in world space and its instances. */
 TRAVERSE_FUNCTION(traverse_top, triangle_ray tri = triangle_setup(d);, {
 	global const dev_prim *q = &prims[i];
 	if (q->type == PRIM_INSTANCE) {
-		float3 mo = intersect_to_local(q, o);
-		float3 md = (float3)(dot(q->a.xyz, d), dot(q->b.xyz, d), dot(q->c.xyz, d));
 		/* the node buffer's declared type again (the wide layout's loop reads it as bvh_wnode) */
-		traverse_hit h = traverse_mesh(sc, (global const bvh_node *)nodes, prims, q->link, mo, md, tmin, hit.t, any,
-		                               counts, kind);
-		if (h.prim >= 0) {
-			hit.t = h.t;
-			hit.prim = h.prim;
-			hit.inst = i;
-			hit.flip = false;
-		}
+		hit = traverse_instance(sc, (global const bvh_node *)nodes, prims, i, o, d, tmin, hit, any, counts, kind);
 	} else if (q->type == PRIM_CSG) {
 		int leaf;   /* one name a line: commas would split the macro's argument */
 		int leaf_inst;
@@ -395,7 +405,9 @@ static inline traverse_hit traverse_closest(const scene_data *sc, global const b
                                      float tmax, uint *counts, int kind)
 {
 	traverse_hit hit = { tmax, -1, -1, false };
-	if (n_prims > 0)
+	if (n_prims == 1 && prims[0].type == PRIM_INSTANCE)   /* one mesh: no top level to walk */
+		hit = traverse_instance(sc, nodes, prims, 0, o, d, tmin, hit, false, counts, kind);
+	else if (n_prims > 0)
 		hit = traverse_top(sc, nodes, prims, 0, o, d, tmin, tmax, false, counts, kind);
 	return traverse_planes(sc, nodes, prims, n_prims, n_planes, o, d, tmin, hit, counts, kind);
 }
@@ -408,6 +420,8 @@ static inline bool traverse_any(const scene_data *sc, global const bvh_node *nod
 	traverse_hit none = { tmax, -1, -1, false };
 	if (traverse_planes(sc, nodes, prims, n_prims, n_planes, o, d, tmin, none, counts, RAY_SHADOW).prim >= 0)
 		return true;
+	if (n_prims == 1 && prims[0].type == PRIM_INSTANCE)
+		return traverse_instance(sc, nodes, prims, 0, o, d, tmin, none, true, counts, RAY_SHADOW).prim >= 0;
 	return n_prims > 0 &&
 	       traverse_top(sc, nodes, prims, 0, o, d, tmin, tmax, true, counts, RAY_SHADOW).prim >= 0;
 }
