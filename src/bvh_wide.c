@@ -127,24 +127,26 @@ static int leaf_blocks(widener *x, int first, int count)
 	for (int k = 0; k < n * BVH_TRI4_SLOTS; k++)
 		if (alloc_node(x) < 0)
 			return -1;
-	bvh_tri4 *b = (bvh_tri4 *)&x->w->nodes[at];
 	x->w->n_blocks += n;
-	for (int k = 0; k < 4 * n; k++) {
-		bvh_tri4 *q = &b[k / 4];
-		int lane = k % 4;
-		if (k >= count) {
-			q->prim[lane] = -1;
-			continue;
+	for (int b = 0; b < n; b++) {
+		bvh_tri4 q;
+		memset(&q, 0, sizeof q);
+		float4 *axis[9] = { &q.ax, &q.ay, &q.az, &q.bx, &q.by, &q.bz, &q.cx, &q.cy, &q.cz };
+		for (int lane = 0; lane < 4; lane++) {
+			int k = 4 * b + lane;
+			q.prim[lane] = k < count ? first + k : -1;
+			if (k >= count)
+				continue;
+			const dev_prim *p = &x->tris[first + k];
+			const float4 *v[3] = { &p->a, &p->b, &p->c };
+			for (int c = 0; c < 3; c++) {
+				float xyz[3] = { v[c]->x, v[c]->y, v[c]->z };
+				for (int a = 0; a < 3; a++)
+					((float *)axis[3 * c + a])[lane] = xyz[a];
+			}
 		}
-		const dev_prim *p = &x->tris[first + k];
-		float *f = (float *)q;   /* ax, ay, az, bx ... cz: corner c's axis a at 4 (3c + a) + lane */
-		const float4 *v[3] = { &p->a, &p->b, &p->c };
-		for (int c = 0; c < 3; c++) {
-			f[4 * (3 * c + 0) + lane] = v[c]->x;
-			f[4 * (3 * c + 1) + lane] = v[c]->y;
-			f[4 * (3 * c + 2) + lane] = v[c]->z;
-		}
-		q->prim[lane] = first + k;
+		/* the node array's slots take the block's bytes */
+		memcpy(&x->w->nodes[at + BVH_TRI4_SLOTS * b], &q, sizeof q);
 	}
 	return at;
 }
