@@ -19,15 +19,15 @@ static inline float2 light_square_to_disc(float u, float v)
 	float a = 2.0f * u - 1.0f, b = 2.0f * v - 1.0f;
 	if (a == 0.0f && b == 0.0f)
 		return (float2)(0.0f);
-	float r, phi;
+	float r, phi;   /* the angle in units of pi (sinpi, cospi: material_sample_cosine) */
 	if (fabs(a) > fabs(b)) {
 		r = a;
-		phi = (M_PI_F / 4.0f) * (b / a);
+		phi = 0.25f * (b / a);
 	} else {
 		r = b;
-		phi = (M_PI_F / 2.0f) - (M_PI_F / 4.0f) * (a / b);
+		phi = 0.5f - 0.25f * (a / b);
 	}
-	return r * (float2)(cos(phi), sin(phi));
+	return r * (float2)(cospi(phi), sinpi(phi));
 }
 
 /* POV-Ray's fade: 2 / (1 + (d / fade_distance) ^ fade_power). */

