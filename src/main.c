@@ -18,7 +18,7 @@
 #include "eval.h"
 #include "film.h"
 #include "host_memory.h"
-#include "image_table.h"
+#include "image.h"
 #include "lower.h"
 #include "merge.h"
 #include "mesh_io.h"
@@ -478,9 +478,8 @@ static int same_file(const char *a, const char *b)
 }
 
 /* Everything the user could get wrong about the output is checked before the
- * render, so no minutes of work are lost to a typo in a file name: here what
- * the file system says, before the scene is read; check_format after it. */
-static int check_output(const char *scene, const char *output)
+ * render, so no minutes of work are lost to a typo in a file name. */
+static int check_output(const char *scene, const char *output, int alpha)
 {
 	if (strcmp(scene, output) == 0 || same_file(scene, output)) {
 		fprintf(stderr, "eclat: refusing to write the image over the scene file '%s'\n", scene);
@@ -493,19 +492,6 @@ static int check_output(const char *scene, const char *output)
 	free(dir);
 	if (!writable) {
 		fprintf(stderr, "eclat: cannot write '%s': %s\n", output, strerror(errno));
-		return -1;
-	}
-	return 0;
-}
-
-/* Whether OpenImageIO writes the output's format (with alpha, for +UA). Asked
- * once the scene is read: eclat's image module loads meanwhile
- * (src/image_module.c). */
-static int check_format(const char *output, int alpha)
-{
-	const char *no_module = image_module_error();
-	if (no_module) {
-		fprintf(stderr, "eclat: cannot write '%s': %s\n", output, no_module);
 		return -1;
 	}
 	if (alpha && image_format_known(output) && !image_format_alpha(output)) {
@@ -980,7 +966,7 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 	for (long k = 0; k < frames && rc == 0 && !stop_signal && !preview_stopped(window); k++) {
 		cli_frame_goto(frame, frame->first + k * frame->step);
 		char *output = cli_pov_output(&o->pov, frame, o->scene, o->output);
-		rc = !output || (!o->check && check_output(o->scene, output)) ||
+		rc = !output || (!o->check && check_output(o->scene, output, o->pov.alpha)) ||
 		     (deps && depfile_add(deps, DEPFILE_TARGET, output));
 		set_clock(eopt, frame);
 		struct frame_info fi = { frame->frame, k, frames, frame->clock, seconds_since(&t0), { 0 } };
@@ -993,8 +979,6 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 		reads.inputs = (split_inputs){ 0 };
 		int evaluated = rc == 0 ? eval_scene(tree, &s, eopt) : -1;
 		device_points_forget(eopt->pattern_ctx);   /* the next frame numbers its pigments anew */
-		for (int i = -1; i < o->n_aovs && evaluated == 0 && !o->check; i++)
-			evaluated = check_format(i < 0 ? output : fi.aov_file[i], i < 0 && o->pov.alpha);
 		if (evaluated == 0 && diag_error_count() == 0) {
 			if (o->dump_scene)
 				scene_dump(&s, stdout);
@@ -1043,11 +1027,9 @@ int main(int argc, char **argv)
 	if (!output)
 		return 1;
 	int rc = 1;
-	int bad_output = !o.dump_ast && !o.check && check_output(o.scene, output);
+	int bad_output = !o.dump_ast && !o.check && check_output(o.scene, output, o.pov.alpha);
 	for (int i = 0; i < o.n_aovs && !bad_output && !o.check && !o.dump_ast; i++)
-		bad_output = check_output(o.scene, o.aov_file[i]);
-	if (!bad_output && !o.dump_ast && !o.check)
-		image_module_start();   /* the image will be written: OpenImageIO loads while the scene is read */
+		bad_output = check_output(o.scene, o.aov_file[i], 0);
 	int part[4], has_part = cli_pov_region(&o.pov, o.width, o.height, part);
 	free(output);
 	if (bad_output || has_part < 0)
