@@ -196,7 +196,7 @@ static inline traverse_hit traverse_blocks(global const bvh_wnode *nodes, global
 			for (int k = 0; k < 4 && k < left; k++) {
 				int i = blk->prim[k];
 				float t = triangle_intersect_ray(o, r, &prims[i], tmin, hit.t);
-				TRAVERSE_LANE(t < hit.t, t, i)
+				TRAVERSE_LANE(true, t, i)   /* a miss gives hit.t itself */
 			}
 		} else {
 			int4 out = (u < 0.0f | v < 0.0f | w < 0.0f) & (u > 0.0f | v > 0.0f | w > 0.0f);
@@ -397,6 +397,19 @@ static inline traverse_hit traverse_planes(const scene_data *sc, global const bv
 	return hit;
 }
 
+/* The top level's n_prims primitives against the ray, in (tmin, tmax); with
+ * any, the first hit ends the walk. A top level of one mesh alone is not
+ * walked: the ray goes to the instance at once. */
+static inline traverse_hit traverse_objects(const scene_data *sc, global const bvh_node *nodes,
+                                            global const dev_prim *prims, int n_prims, float3 o, float3 d,
+                                            float tmin, float tmax, bool any, uint *counts, int kind)
+{
+	traverse_hit none = { tmax, -1, -1, false };
+	if (n_prims == 1 && prims[0].type == PRIM_INSTANCE)
+		return traverse_instance(sc, nodes, prims, 0, o, d, tmin, none, any, counts, kind);
+	return n_prims > 0 ? traverse_top(sc, nodes, prims, 0, o, d, tmin, tmax, any, counts, kind) : none;
+}
+
 /* Closest hit in (tmin, tmax). sc: the scene's buffers, which an isosurface's
  * function may read, or 0 (raycast.cl's test kernels). */
 static inline traverse_hit traverse_closest(const scene_data *sc, global const bvh_node *nodes,
@@ -404,11 +417,7 @@ static inline traverse_hit traverse_closest(const scene_data *sc, global const b
                                      int n_prims, int n_planes, float3 o, float3 d, float tmin,
                                      float tmax, uint *counts, int kind)
 {
-	traverse_hit hit = { tmax, -1, -1, false };
-	if (n_prims == 1 && prims[0].type == PRIM_INSTANCE)   /* one mesh: no top level to walk */
-		hit = traverse_instance(sc, nodes, prims, 0, o, d, tmin, hit, false, counts, kind);
-	else if (n_prims > 0)
-		hit = traverse_top(sc, nodes, prims, 0, o, d, tmin, tmax, false, counts, kind);
+	traverse_hit hit = traverse_objects(sc, nodes, prims, n_prims, o, d, tmin, tmax, false, counts, kind);
 	return traverse_planes(sc, nodes, prims, n_prims, n_planes, o, d, tmin, hit, counts, kind);
 }
 
@@ -420,8 +429,5 @@ static inline bool traverse_any(const scene_data *sc, global const bvh_node *nod
 	traverse_hit none = { tmax, -1, -1, false };
 	if (traverse_planes(sc, nodes, prims, n_prims, n_planes, o, d, tmin, none, counts, RAY_SHADOW).prim >= 0)
 		return true;
-	if (n_prims == 1 && prims[0].type == PRIM_INSTANCE)
-		return traverse_instance(sc, nodes, prims, 0, o, d, tmin, none, true, counts, RAY_SHADOW).prim >= 0;
-	return n_prims > 0 &&
-	       traverse_top(sc, nodes, prims, 0, o, d, tmin, tmax, true, counts, RAY_SHADOW).prim >= 0;
+	return traverse_objects(sc, nodes, prims, n_prims, o, d, tmin, tmax, true, counts, RAY_SHADOW).prim >= 0;
 }

@@ -59,9 +59,8 @@ int bvh_build_median(const bvh_box *boxes, int n, int max_depth, bvh_tree *t);
  * an empty node (no children), for an empty tree. With tris, the primitives,
  * the roots from first_mesh on are meshes' trees, all triangles, whose leaves
  * become bvh_tri4 blocks (kernels/shared.h); with NULL no tree's do.
- * Returns 0, or -1 when memory
- * runs out, a box is not finite or a primitive index needs more than
- * BVH_WIDE_FIRST_BITS bits (out is then left empty). */
+ * Returns 0, or -1 when memory runs out, a box is not finite or a primitive
+ * index needs more than BVH_WIDE_FIRST_BITS bits (out is then left empty). */
 typedef struct {
 	bvh_wnode *nodes;
 	int n_nodes;        /* node slots, the blocks' included */
