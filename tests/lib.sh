@@ -32,6 +32,14 @@ finish() {
 	exit 0
 }
 
+# test_program NAME ARGS...: runs tests/NAME, one of the C test programs. In the
+# sanitizer build it runs through LSAN_RUN, as eclat does (lsan-run.sh says why).
+test_program() {
+	prog="${top_builddir:?run the tests through make check}/tests/$1"
+	shift
+	${LSAN_RUN:+"$LSAN_RUN"} "$prog" "$@"
+}
+
 # ---- meshes (issue 13): make check needs nothing from outside the repository
 # but what ./bootstrap installs. The tests' meshes:
 #   - the blob, written by tests/gen_mesh (81,280 triangles): the large mesh;
