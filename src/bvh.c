@@ -8,7 +8,8 @@
  * only the axis of largest centroid extent. Nodes of at most SMALL primitives
  * (most nodes: the tree's last levels) instead sort their centroids on each
  * axis and try every plane between them: exact SAH, and cheaper than filling
- * and sweeping 48 mostly empty bins.
+ * and sweeping 48 mostly empty bins. bvh_build_leaves stops earlier, at
+ * ranges of a given size, for callers that make those one leaf anyway.
  *
  * The primitives are sorted in a scratch array of 32-byte boxes, with the
  * permutation kept in t->prim_index alongside, so that every pass over a
@@ -112,6 +113,7 @@ struct builder {
 	int sp, cap;
 	int depth;
 	int threads;        /* > 1: bin large nodes on that many threads */
+	int leaf_whole;     /* ranges of at most this many primitives are leaves, unsplit */
 };
 
 /* Written as x < y ? x : y, which compiles to minss/minps without branches
@@ -566,7 +568,7 @@ static int choose_split(builder *b, int first, int count, const box4 *bounds, co
 			children *ch)
 {
 	bin bins[3][BINS];
-	if (count == 1)
+	if (count <= b->leaf_whole)
 		return 0;
 	prim_rec *r = b->rec + first;
 	float area = box_area(bounds);
@@ -1029,7 +1031,7 @@ int bvh_build(const bvh_box *boxes, int n, bvh_tree *t)
 	return bvh_build_threads(boxes, n, 0, t);
 }
 
-static int build(bvh_box_fn *box_of, const void *ctx, int n, int threads, bvh_tree *t);
+static int build(bvh_box_fn *box_of, const void *ctx, int n, int threads, int leaf_whole, bvh_tree *t);
 
 int bvh_build_threads(const bvh_box *boxes, int n, int threads, bvh_tree *t)
 {
@@ -1037,22 +1039,31 @@ int bvh_build_threads(const bvh_box *boxes, int n, int threads, bvh_tree *t)
 		memset(t, 0, sizeof *t);
 		return -1;
 	}
-	return build(box_from_array, boxes, n, threads, t);
+	return build(box_from_array, boxes, n, threads, 1, t);
 }
 
 int bvh_build_fn(bvh_box_fn *box_of, const void *ctx, int n, bvh_tree *t)
 {
-	return build(box_of, ctx, n, 0, t);
+	return build(box_of, ctx, n, 0, 1, t);
 }
 
-static int build(bvh_box_fn *box_of, const void *ctx, int n, int threads, bvh_tree *t)
+int bvh_build_leaves(bvh_box_fn *box_of, const void *ctx, int n, int leaf_whole, bvh_tree *t)
+{
+	if (leaf_whole < 1 || leaf_whole > BVH_MAX_LEAF) {
+		memset(t, 0, sizeof *t);
+		return -1;
+	}
+	return build(box_of, ctx, n, 0, leaf_whole, t);
+}
+
+static int build(bvh_box_fn *box_of, const void *ctx, int n, int threads, int leaf_whole, bvh_tree *t)
 {
 	memset(t, 0, sizeof *t);
 	if (n < 0 || n > INT_MAX / 2)
 		return -1;
 	if (n == 0)
 		return build_empty(t);
-	builder b = { 0 };
+	builder b = { .leaf_whole = leaf_whole };
 	/* Nodes are written before they are read (compact_tree keeps only those). */
 	b.nodes = alloc_big(((size_t)2 * n - 1) * sizeof *b.nodes);
 	b.rec = alloc_big((size_t)n * sizeof *b.rec);

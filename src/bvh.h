@@ -46,6 +46,12 @@ int bvh_build_threads(const bvh_box *boxes, int n, int threads, bvh_tree *t);
  * which is not cheap on a virtual machine). */
 typedef void bvh_box_fn(const void *ctx, int i, bvh_box *out);
 int bvh_build_fn(bvh_box_fn *box_of, const void *ctx, int n, bvh_tree *t);
+/* The same, with every range of at most leaf_whole (1 .. BVH_MAX_LEAF)
+ * primitives made a leaf without trying a split. The 4-wide layout makes any
+ * subtree of at most four triangles one block (bvh_tri4), so for its meshes
+ * the splits below four would only order a block's triangles, at a third of
+ * the build's time. Returns -1 (t empty) for leaf_whole out of range too. */
+int bvh_build_leaves(bvh_box_fn *box_of, const void *ctx, int n, int leaf_whole, bvh_tree *t);
 
 /* The reference paper's builder, for comparison (--bvh median): a node's box is
  * cut in two at the middle of its longest side, the primitives going to the side

@@ -2,7 +2,8 @@
  * that an animation builds a mesh's tree once while its triangles stay the
  * same (a mesh file read again, a mesh2 that does not follow the clock).
  *
- * A tree depends on its triangles and the builder only, so the key is the
+ * A tree depends on its triangles, the builder and the layout only (the wide
+ * layout's meshes stop at four triangles a leaf), so the key is the
  * mesh's triangles as lowering makes them, before the build, compared whole:
  * a hash alone could hand a mesh another's tree. Entries that one lowering
  * did not use are dropped at its end, so the cache holds one frame's meshes. */
@@ -14,7 +15,7 @@
 
 struct entry {
 	uint64_t hash;
-	int builder, median_depth, used;
+	int builder, median_depth, layout, used;
 	dev_prim *prims;   /* the triangles before the build, in their first order */
 	int n;
 	bvh_tree tree;
@@ -85,7 +86,7 @@ static struct entry *find(lower_cache *c, const lower_options *o, const dev_prim
 {
 	for (int i = 0; i < c->n; i++) {
 		struct entry *e = &c->e[i];
-		if (e->hash == h && e->n == n && e->builder == o->builder &&
+		if (e->hash == h && e->n == n && e->builder == o->builder && e->layout == o->layout &&
 		    (o->builder != LOWER_BVH_MEDIAN || e->median_depth == o->median_depth) &&
 		    memcmp(e->prims, p, (size_t)n * sizeof *p) == 0)
 			return e;
@@ -116,7 +117,8 @@ void lower_cache_keep(lower_cache *c, const lower_options *o, const dev_prim *p,
 		c->e = e;
 		c->cap = cap;
 	}
-	struct entry e = { .hash = h, .builder = o->builder, .median_depth = o->median_depth, .used = 1, .n = n };
+	struct entry e = { .hash = h, .builder = o->builder, .median_depth = o->median_depth, .layout = o->layout,
+	                  .used = 1, .n = n };
 	e.prims = malloc((n ? n : 1) * sizeof *p);
 	if (!e.prims || copy_tree(t, &e.tree)) {
 		free(e.prims);

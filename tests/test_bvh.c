@@ -624,6 +624,11 @@ static bvh_box *make_boxes(const tri *tris, int n)
 	return boxes;
 }
 
+static void box_from_boxes(const void *ctx, int i, bvh_box *out)
+{
+	*out = ((const bvh_box *)ctx)[i];
+}
+
 /* Builds (best time of a few builds when timing matters), checks the
  * structure and prints the tree's figures. Returns 0 with the tree in *t, or
  * -1 with nothing to free. */
@@ -1040,6 +1045,108 @@ done:
 	free(edge_axis);
 }
 
+/* The primitives under node, at most max + 1 of them into out (enough to
+ * tell a subtree of more than max). Returns how many were written. */
+static int collect(const bvh_tree *t, int node, int *out, int n, int max)
+{
+	const bvh_node *nd = &t->nodes[node];
+	if (nd->count > 0) {
+		for (int i = 0; i < nd->count && n <= max; i++)
+			out[n++] = t->prim_index[nd->left_first + i];
+		return n;
+	}
+	n = collect(t, nd->left_first, out, n, max);
+	return n > max ? n : collect(t, nd->left_first + 1, out, n, max);
+}
+
+static int by_int(const void *a, const void *b)
+{
+	return *(const int *)a - *(const int *)b;
+}
+
+/* Whether the subtree of cut's node b is full's node a with every subtree of
+ * at most four primitives made one leaf over the same primitives. */
+static int cut_matches(const bvh_tree *full, int a, const bvh_tree *cut, int b)
+{
+	const bvh_node *na = &full->nodes[a], *nb = &cut->nodes[b];
+	int pa[BVH_MAX_LEAF + 1], pb[BVH_MAX_LEAF + 1];
+	int ka = collect(full, a, pa, 0, BVH_MAX_LEAF), kb = collect(cut, b, pb, 0, BVH_MAX_LEAF);
+	bvh_box ba = node_box(na), bb = node_box(nb);
+	if (memcmp(&ba, &bb, sizeof ba) != 0)
+		return 0;
+	if (nb->count > 0) {
+		qsort(pa, ka, sizeof *pa, by_int);
+		qsort(pb, kb, sizeof *pb, by_int);
+		return ka <= BVH_MAX_LEAF && ka == kb && memcmp(pa, pb, ka * sizeof *pa) == 0;
+	}
+	return na->count == 0 && ka > BVH_MAX_LEAF && kb > BVH_MAX_LEAF &&
+	       cut_matches(full, na->left_first, cut, nb->left_first) &&
+	       cut_matches(full, na->left_first + 1, cut, nb->left_first + 1);
+}
+
+/* bvh_build_leaves(..., 4, ...), the lowering's build of a mesh for the wide
+ * layout: bvh_build's tree with each subtree of at most four primitives cut
+ * to one leaf (the decisions above are the same on the same ranges), so the
+ * wide layout's blocks hold the same triangles; then the structure and the
+ * rays, as for any tree. A soup, and coincident triangles (every split a
+ * fallback). */
+static void leaves_test(rng *r)
+{
+	enum { N = 20000 };
+	tri *tris = malloc(N * sizeof *tris);
+	signed char *edge_axis = malloc(N);
+	ray *rays = malloc(N * sizeof *rays);
+	char *flags = malloc(N);
+	bvh_box *boxes = NULL;
+	if (!tris || !edge_axis || !rays || !flags) {
+		fail("leaves: out of memory");
+		goto done;
+	}
+	for (int kind = 0; kind < 2; kind++) {
+		const char *name = kind ? "coincident, leaves of up to 4" : "soup, leaves of up to 4";
+		if (kind == 0)
+			make_soup(r, tris, N, edge_axis);
+		for (int i = 0; kind == 1 && i < N; i++) {
+			shape_tri(r, 0, &tris[i]);
+			edge_axis[i] = -1;
+		}
+		free(boxes);
+		boxes = make_boxes(tris, N);
+		bvh_tree full, cut;
+		if (!boxes || bvh_build(boxes, N, &full) != 0) {
+			fail("%s: bvh_build failed", name);
+			continue;
+		}
+		if (bvh_build_leaves(box_from_boxes, boxes, N, 4, &cut) != 0) {
+			fail("%s: bvh_build_leaves failed", name);
+			bvh_free(&full);
+			continue;
+		}
+		int before = n_errors;
+		check_tree(&cut, boxes, N);
+		if (!cut_matches(&full, 0, &cut, 0))
+			fail("%s: not bvh_build's tree with its subtrees of four or fewer cut to leaves", name);
+		for (int i = 0; i < N; i++)
+			rays[i] = soup_ray(r, tris, N, edge_axis, &flags[i]);
+		stats st;
+		check_rays(&cut, tris, N, rays, N, flags, &st);
+		printf("  %s: %d nodes (bvh_build: %d)%s\n", name, cut.n_nodes, full.n_nodes,
+		       n_errors == before ? ", bvh_build's tree cut, rays ok" : "");
+		bvh_free(&full);
+		bvh_free(&cut);
+	}
+	bvh_tree t;
+	if (bvh_build_leaves(box_from_boxes, boxes, N, 0, &t) != -1 || t.nodes ||
+	    bvh_build_leaves(box_from_boxes, boxes, N, BVH_MAX_LEAF + 1, &t) != -1 || t.nodes)
+		fail("leaves: bvh_build_leaves accepts leaves of 0 or more than BVH_MAX_LEAF");
+done:
+	free(boxes);
+	free(tris);
+	free(edge_axis);
+	free(rays);
+	free(flags);
+}
+
 /* n == 0, and the arguments bvh_build must refuse (leaving t zeroed). */
 static void empty_test(void)
 {
@@ -1380,6 +1487,8 @@ int main(int argc, char **argv)
 	soup_test("soup", &r, N_SOUP, N_RAYS, 5);
 	printf("threads:\n");
 	determinism_test(&r);
+	printf("leaves of up to four:\n");
+	leaves_test(&r);
 	if (argc > 1)
 		mesh_test(argv[1], &r);
 	printf("%s: %d error%s\n", n_errors ? "FAIL" : "PASS", n_errors, n_errors == 1 ? "" : "s");
