@@ -246,10 +246,14 @@ static inline void bin_prim(const prim_rec *r, const binning *g, bin bins[3][BIN
 	centroid(r, c);
 	for (int a = 0; a < 4; a++)
 		k[a] = bin_of(c[a], g->origin[a], g->scale[a], g->last);
-	for (int a = 0; a < 3; a++) {
-		box_grow(&bins[a][k[a]].box, &r->box);
-		bins[a][k[a]].count++;
-	}
+	/* Written out per axis: as a loop the compiler reloads k from the stack. */
+	bin *b0 = &bins[0][k[0]], *b1 = &bins[1][k[1]], *b2 = &bins[2][k[2]];
+	box_grow(&b0->box, &r->box);
+	box_grow(&b1->box, &r->box);
+	box_grow(&b2->box, &r->box);
+	b0->count++;
+	b1->count++;
+	b2->count++;
 }
 
 /* Neighbouring primitives tend to fall in the same bins, and each grow of a
