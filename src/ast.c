@@ -70,7 +70,7 @@ static void *xcalloc(size_t n, size_t size)
 	void *p = calloc(n, size);
 	if (!p) {
 		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
+		diag_exit(1);
 	}
 	return p;
 }
@@ -106,7 +106,7 @@ ast_node *ast_append(ast_node *list, ast_node *kid)
 		list->kids = realloc(list->kids, list->cap_kids * sizeof *list->kids);
 		if (!list->kids) {
 			fprintf(stderr, "eclat: out of memory\n");
-			exit(1);
+			diag_exit(1);
 		}
 	}
 	list->kids[list->n_kids++] = kid;
@@ -228,7 +228,7 @@ void ast_free(ast_node *n)
 				stack = realloc(stack, cap * sizeof *stack);
 				if (!stack) {
 					fprintf(stderr, "eclat: out of memory\n");
-					exit(1);
+					diag_exit(1);
 				}
 			}
 			stack[top++] = n->kids[i];

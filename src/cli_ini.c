@@ -40,7 +40,7 @@ static char *section(const char *p, const char *eol, src_loc loc)
 	const char *close = memchr(p, ']', (size_t)(eol - p));
 	if (!close) {
 		diag_error(loc, "unterminated section header: ']' expected");
-		exit(1);
+		diag_exit(1);
 	}
 	const char *b = p + 1, *e = close;
 	while (b < e && isspace((unsigned char)*b))
@@ -92,7 +92,7 @@ static void key_value(cli_args *a, const char *p, const char *end, int file, int
 			return;
 		}
 		diag_error(at(file, line, start, p), "expected '=' after '%.*s'", (int)(key_end - k), k);
-		exit(1);
+		diag_exit(1);
 	}
 	for (p++; p < end && (*p == ' ' || *p == '\t'); p++)
 		;
@@ -111,7 +111,7 @@ static int read_source(const char *path, src_loc loc)
 	char *text = diag_read_file(path, &len);
 	if (!text) {
 		diag_error(loc, "cannot read the INI file '%s': %s", path, strerror(errno));
-		exit(1);
+		diag_exit(1);
 	}
 	return diag_add_source(path, text, len);
 }
@@ -123,7 +123,7 @@ void cli_ini_read(cli_args *a, const char *spec, src_loc loc)
 	static int nesting;   /* an INI file that names itself would never end */
 	if (nesting == MAX_NESTING) {
 		diag_error(loc, "INI files name each other more than %d deep", MAX_NESTING);
-		exit(1);
+		diag_exit(1);
 	}
 	nesting++;
 	char *path = copy(spec, strcspn(spec, "[")), *want = NULL;
@@ -131,7 +131,7 @@ void cli_ini_read(cli_args *a, const char *spec, src_loc loc)
 		const char *open = spec + strlen(path), *close = strchr(open, ']');
 		if (!close || close[1]) {
 			diag_error(loc, "'%s': a section is named as FILE.ini[SECTION]", spec);
-			exit(1);
+			diag_exit(1);
 		}
 		want = copy(open + 1, (size_t)(close - open - 1));
 	}

@@ -205,7 +205,7 @@ struct setting {
  * that a leak checker sees it reachable. */
 static char **kept;
 static size_t n_kept, cap_kept;
-/* The argument vector being built: kept only once complete, so an exit(1)
+/* The argument vector being built: kept only once complete, so a diag_exit(1)
  * halfway leaves it here. */
 static char **building;
 
@@ -221,7 +221,7 @@ char *cli_pov_keep(char *s)
 	}
 	if (!s) {
 		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
+		diag_exit(1);
 	}
 	return kept[n_kept++] = s;
 }
@@ -251,7 +251,7 @@ static void push(cli_args *a, const char *fmt, ...)
 	char *s = NULL;
 	if (!a->v || vasprintf(&s, fmt, ap) < 0) {
 		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
+		diag_exit(1);
 	}
 	va_end(ap);
 	a->v[a->n++] = cli_pov_keep(s);
@@ -259,7 +259,7 @@ static void push(cli_args *a, const char *fmt, ...)
 }
 
 /* A bad argument ends the run before anything is read or rendered. */
-#define FAIL(loc, ...) do { diag_error((loc), __VA_ARGS__); exit(1); } while (0)
+#define FAIL(loc, ...) do { diag_error((loc), __VA_ARGS__); diag_exit(1); } while (0)
 
 static long whole(const struct setting *s, long lo, long hi)
 {

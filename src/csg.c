@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "csg.h"
+#include "diag.h"
 
 void csg_push(csg_prog *p, int op, int arg)
 {
@@ -13,7 +14,7 @@ void csg_push(csg_prog *p, int op, int arg)
 		p->ops = realloc(p->ops, p->cap * sizeof *p->ops);
 		if (!p->ops) {
 			fputs("eclat: out of memory\n", stderr);
-			exit(1);
+			diag_exit(1);
 		}
 	}
 	p->ops[p->n++] = csg_op(op, arg);
@@ -49,7 +50,7 @@ bool csg_classify(const int *ops, int n, int k, bool (*inside)(void *ctx, int le
 	bool *v1 = malloc(3 * (depth + 1) * sizeof *v1), *v0 = v1 + depth + 1, *has = v0 + depth + 1;
 	if (!v1) {
 		fputs("eclat: out of memory\n", stderr);
-		exit(1);
+		diag_exit(1);
 	}
 	int sp = 0;
 	for (int i = 0; i < n; i++) {
@@ -107,7 +108,7 @@ void csg_bounds(const int *ops, int n, int n_leaves, const double (*lo)[3], cons
 	double (*slo)[3] = malloc(2 * (depth + 1) * sizeof *slo), (*shi)[3] = slo + depth + 1;
 	if (!slo) {
 		fputs("eclat: out of memory\n", stderr);
-		exit(1);
+		diag_exit(1);
 	}
 	int sp = 0;
 	for (int i = 0; i < n; i++) {

@@ -18,12 +18,21 @@ static struct source *sources;
 static int n_sources;
 static int n_errors;
 
+void (*diag_before_exit)(void);
+
+void diag_exit(int status)
+{
+	if (diag_before_exit)
+		diag_before_exit();
+	exit(status);
+}
+
 int diag_add_source(const char *name, char *text, size_t len)
 {
 	struct source *s = realloc(sources, (n_sources + 1) * sizeof *s);
 	if (!s) {
 		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
+		diag_exit(1);
 	}
 	sources = s;
 	sources[n_sources] = (struct source){ strdup(name), text, len };

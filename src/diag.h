@@ -33,6 +33,13 @@ void diag_note(src_loc loc, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));
 int diag_error_count(void);
 
+/* Ends eclat with status, through exit() once diag_before_exit, when set, has
+ * run: every exit() of eclat's own code is a diag_exit. src/image_module.c sets
+ * it, because an exit() while its module loads on another thread would run the
+ * half-loaded libraries' destructors beside their constructors. */
+extern void (*diag_before_exit)(void);
+_Noreturn void diag_exit(int status);
+
 /* Reads a whole file into a NUL-terminated buffer; NULL with errno set on failure
  * (EISDIR for a folder, EFBIG past DIAG_MAX_FILE bytes, or a 16th of that from a
  * device or a pipe, such as /dev/zero). */

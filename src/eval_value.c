@@ -10,7 +10,7 @@ void *eval_xrealloc(void *p, size_t size)
 	p = realloc(p, size ? size : 1);
 	if (!p) {
 		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
+		diag_exit(1);
 	}
 	return p;
 }

@@ -89,9 +89,13 @@ static void child(int fd, unsigned time_limit, loader_work work, void *arg)
 	_exit(work(fd, arg) ? 1 : 0);   /* no atexit handlers: they belong to the parent */
 }
 
+void (*loader_before_fork)(const char *library);
+
 int loader_run(const char *library, unsigned time_limit, loader_work work, loader_take take, void *arg,
                char *err, size_t errlen)
 {
+	if (loader_before_fork)
+		loader_before_fork(library);
 	int fd[2];
 	if (pipe(fd)) {
 		snprintf(err, errlen, "cannot start %s in a child process: %s", library, strerror(errno));

@@ -21,6 +21,13 @@ typedef int (*loader_take)(int fd, void *arg, char *err, size_t errlen);
 int loader_run(const char *library, unsigned time_limit, loader_work work, loader_take take, void *arg,
                char *err, size_t errlen);
 
+/* Called before every fork of a loader child (here, and in src/mesh_io.c)
+ * with the library the child runs, when set: src/image_module.c sets it, so
+ * that a load of its module under way on another thread ends before a fork
+ * (a child would inherit it half made), and that OpenImageIO's children find
+ * the module loaded. */
+extern void (*loader_before_fork)(const char *library);
+
 /* A work that fails writes its message as LOADER_ERR_LEN bytes after its own
  * header, which says it failed; the take reads it with loader_take_error, which
  * returns -1 with the message in err, or -2 when the answer stopped short. */

@@ -27,7 +27,7 @@ static void *alloc(size_t n)
 	void *p = calloc(1, n ? n : 1);
 	if (!p) {
 		fputs("eclat: out of memory\n", stderr);
-		exit(1);
+		diag_exit(1);
 	}
 	return p;
 }

@@ -32,7 +32,7 @@ static void *alloc(size_t n)
 	void *p = malloc(n);
 	if (!p) {
 		fputs("eclat: out of memory\n", stderr);
-		exit(1);
+		diag_exit(1);
 	}
 	return p;
 }

@@ -16,7 +16,7 @@ static void *grow_media(void *p, int *cap, size_t size)
 	p = realloc(p, (size_t)*cap * size);
 	if (!p) {
 		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
+		diag_exit(1);
 	}
 	return p;
 }
@@ -108,7 +108,7 @@ int lower_media(lower_textures *lt, const scene *s, int head, const xform *to_wo
 		lt->media_at = malloc((size_t)s->n_media * sizeof *lt->media_at);
 		if (!lt->media_at) {
 			fprintf(stderr, "eclat: out of memory\n");
-			exit(1);
+			diag_exit(1);
 		}
 		for (int i = 0; i < s->n_media; i++)
 			lt->media_at[i] = -1;

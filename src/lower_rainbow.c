@@ -25,7 +25,7 @@ void lower_rainbows(lower_textures *lt, const scene *s, lower_result *out)
 	out->rainbows = malloc((s->n_rainbows ? s->n_rainbows : 1) * sizeof *out->rainbows);
 	if (!out->rainbows) {   /* as lower.c: lowering cannot go on without its arrays */
 		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
+		diag_exit(1);
 	}
 	out->n_rainbows = 0;
 	for (int i = 0; i < s->n_rainbows; i++) {

@@ -36,7 +36,7 @@ static void *grow_to(void *p, int *cap, int need, size_t size)
 	p = realloc(p, (size_t)cap2 * size);
 	if (!p) {
 		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
+		diag_exit(1);
 	}
 	*cap = cap2;
 	return p;
@@ -93,7 +93,7 @@ static void lower_images(lower_textures *lt, const scene *s)
 	lt->texels = malloc((size_t)total * sizeof *lt->texels);
 	if (!lt->images || !lt->texels) {
 		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
+		diag_exit(1);
 	}
 	float g = s->film_gamma;
 	for (int i = 0; i < s->n_images; i++) {
@@ -429,7 +429,7 @@ void lower_textures_append(lower_textures *lt, dev_material **mats, int *n_mats)
 	*mats = realloc(*mats, (size_t)(base + lt->n_subs) * sizeof **mats);
 	if (!*mats) {
 		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
+		diag_exit(1);
 	}
 	memcpy(*mats + base, lt->subs, (size_t)lt->n_subs * sizeof *lt->subs);
 	*n_mats = base + lt->n_subs;

@@ -18,7 +18,7 @@
 #include "eval.h"
 #include "film.h"
 #include "host_memory.h"
-#include "image.h"
+#include "image_table.h"
 #include "lower.h"
 #include "merge.h"
 #include "mesh_io.h"
@@ -213,7 +213,7 @@ static int int_arg(const char *opt, const char *s, long lo, long hi)
 	long v = strtol(s, &end, 10);
 	if (errno || end == s || *end || v < lo || v > hi) {
 		fprintf(stderr, "eclat: %s needs a whole number from %ld to %ld, not '%s'\n", opt, lo, hi, s);
-		exit(1);
+		diag_exit(1);
 	}
 	return (int)v;
 }
@@ -226,7 +226,7 @@ static double seconds_arg(const char *opt, const char *s)
 	double v = strtod(s, &end);
 	if (errno || end == s || *end || !(v > 0) || v > 1e9) {
 		fprintf(stderr, "eclat: %s needs a number of seconds greater than 0, not '%s'\n", opt, s);
-		exit(1);
+		diag_exit(1);
 	}
 	return v;
 }
@@ -242,7 +242,7 @@ static void range_arg(struct options *o, const char *s)
 	if (errno || *end || first < 0 || count < 1 || first > (1 << 24) || count > (1 << 24)) {
 		fprintf(stderr, "eclat: --sample-range needs FIRST:COUNT, a sample from 0 and a count from 1, not '%s'\n",
 		        s);
-		exit(1);
+		diag_exit(1);
 	}
 	o->range_first = (int)first;
 	o->range_count = (int)count;
@@ -263,7 +263,7 @@ static void device_arg(struct options *o, const char *s)
 	free(list);
 	if (o->n_devices == 0 || s[strlen(s) - 1] == ',') {
 		fprintf(stderr, "eclat: --device needs a device number, a list of them (0,2) or all, not '%s'\n", s);
-		exit(1);
+		diag_exit(1);
 	}
 	o->device = o->n_devices > 0 ? o->devices[0] : -1;
 }
@@ -281,7 +281,7 @@ static void bvh_arg(struct options *o, const char *s)
 		return;
 	}
 	fprintf(stderr, "eclat: --bvh is sah, median or median:DEPTH, not '%s'\n", s);
-	exit(1);
+	diag_exit(1);
 }
 
 /* --bvh-layout binary | wide */
@@ -292,14 +292,14 @@ static int layout_arg(const char *s)
 	if (strcmp(s, "wide") == 0)
 		return LOWER_LAYOUT_WIDE;
 	fprintf(stderr, "eclat: --bvh-layout is binary or wide, not '%s'\n", s);
-	exit(1);
+	diag_exit(1);
 }
 
 static void list_arg(const char *opt, const char **list, int *n, const char *value)
 {
 	if (*n == MAX_LIST) {
 		fprintf(stderr, "eclat: at most %d %s options\n", MAX_LIST, opt);
-		exit(1);
+		diag_exit(1);
 	}
 	list[(*n)++] = value;
 }
@@ -314,7 +314,7 @@ static int io_security_arg(const char *s)
 	if (strcmp(s, "none") == 0)
 		return EVAL_IO_NONE;
 	fprintf(stderr, "eclat: --io-security is restricted, read-only or none, not '%s'\n", s);
-	exit(1);
+	diag_exit(1);
 }
 
 /* --io-allow DIR: a folder that is not there is a typo, which would otherwise
@@ -326,7 +326,7 @@ static void io_dir_arg(const char *opt, const char **list, int *n, const char *d
 	if (!there || !S_ISDIR(st.st_mode)) {
 		fprintf(stderr, "eclat: %s needs a folder, not '%s': %s\n", opt, dir,
 		        there ? "not a folder" : strerror(errno));
-		exit(1);
+		diag_exit(1);
 	}
 	list_arg(opt, list, n, dir);
 }
@@ -339,11 +339,11 @@ static void aov_arg(struct options *o, char *s)
 		*eq = '\0';
 	if (!eq || !eq[1] || !film_aov_known(s)) {
 		fprintf(stderr, "eclat: --aov needs NAME=FILE with NAME albedo, normal, depth, id or heat, not '%s'\n", s);
-		exit(1);
+		diag_exit(1);
 	}
 	if (o->n_aovs == MAX_AOVS) {
 		fprintf(stderr, "eclat: at most %d --aov options\n", MAX_AOVS);
-		exit(1);
+		diag_exit(1);
 	}
 	o->aov_name[o->n_aovs] = s;
 	o->aov_file[o->n_aovs++] = eq + 1;
@@ -358,7 +358,7 @@ static int integrator_arg(const char *s)
 	if (strcmp(s, "whitted") == 0)
 		return INTEGRATOR_WHITTED;
 	fprintf(stderr, "eclat: --integrator is path, naive or whitted, not '%s'\n", s);
-	exit(1);
+	diag_exit(1);
 }
 
 static int sky_sampling_arg(const char *s)
@@ -366,7 +366,7 @@ static int sky_sampling_arg(const char *s)
 	if (strcmp(s, "on") == 0 || strcmp(s, "off") == 0)
 		return strcmp(s, "off") == 0;
 	fprintf(stderr, "eclat: --sky-sampling is on or off, not '%s'\n", s);
-	exit(1);
+	diag_exit(1);
 }
 
 /* After getopt_long's "unrecognized option '--widht'": the option meant. */
@@ -435,7 +435,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case OPT_MEMORY_LIMIT:
 			if (host_memory_parse(optarg, &o->memory_limit)) {
 				fprintf(stderr, "eclat: --memory-limit needs a size such as 512M or 4G, not '%s'\n", optarg);
-				exit(1);
+				diag_exit(1);
 			}
 			break;
 		case OPT_IO_SECURITY: o->io_security = io_security_arg(optarg); break;
@@ -449,12 +449,12 @@ static void parse_options(int argc, char **argv, struct options *o)
 		case OPT_DUMP_AST: o->dump_ast = 1; break;
 		case OPT_DUMP_SCENE: o->dump_scene = 1; o->check = 1; break;
 		case 'q': o->quiet = 1; break;
-		case 'h': usage(stdout); exit(0);
-		case 'V': printf("eclat %s\n", PACKAGE_VERSION); exit(0);
+		case 'h': usage(stdout); diag_exit(0);
+		case 'V': printf("eclat %s\n", PACKAGE_VERSION); diag_exit(0);
 		default:
 			hint_option(argv[optind - 1]);
 			fprintf(stderr, "Try 'eclat --help' for more information.\n");
-			exit(1);
+			diag_exit(1);
 		}
 	}
 	o->scene = o->pov.scene;
@@ -467,7 +467,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 			fprintf(stderr, "eclat: note: -D before '%s' is POV-Ray's display switch; "
 			        "to declare, write -D NAME=VALUE\n", o->pov.after_display);
 		fprintf(stderr, "Try 'eclat --help' for more information.\n");
-		exit(1);
+		diag_exit(1);
 	}
 }
 
@@ -478,8 +478,9 @@ static int same_file(const char *a, const char *b)
 }
 
 /* Everything the user could get wrong about the output is checked before the
- * render, so no minutes of work are lost to a typo in a file name. */
-static int check_output(const char *scene, const char *output, int alpha)
+ * render, so no minutes of work are lost to a typo in a file name: here what
+ * the file system says, before the scene is read; check_format after it. */
+static int check_output(const char *scene, const char *output)
 {
 	if (strcmp(scene, output) == 0 || same_file(scene, output)) {
 		fprintf(stderr, "eclat: refusing to write the image over the scene file '%s'\n", scene);
@@ -492,6 +493,19 @@ static int check_output(const char *scene, const char *output, int alpha)
 	free(dir);
 	if (!writable) {
 		fprintf(stderr, "eclat: cannot write '%s': %s\n", output, strerror(errno));
+		return -1;
+	}
+	return 0;
+}
+
+/* Whether OpenImageIO writes the output's format (with alpha, for +UA). Asked
+ * once the scene is read: eclat's image module loads meanwhile
+ * (src/image_module.c). */
+static int check_format(const char *output, int alpha)
+{
+	const char *no_module = image_module_error();
+	if (no_module) {
+		fprintf(stderr, "eclat: cannot write '%s': %s\n", output, no_module);
 		return -1;
 	}
 	if (alpha && image_format_known(output) && !image_format_alpha(output)) {
@@ -966,7 +980,7 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 	for (long k = 0; k < frames && rc == 0 && !stop_signal && !preview_stopped(window); k++) {
 		cli_frame_goto(frame, frame->first + k * frame->step);
 		char *output = cli_pov_output(&o->pov, frame, o->scene, o->output);
-		rc = !output || (!o->check && check_output(o->scene, output, o->pov.alpha)) ||
+		rc = !output || (!o->check && check_output(o->scene, output)) ||
 		     (deps && depfile_add(deps, DEPFILE_TARGET, output));
 		set_clock(eopt, frame);
 		struct frame_info fi = { frame->frame, k, frames, frame->clock, seconds_since(&t0), { 0 } };
@@ -979,6 +993,8 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 		reads.inputs = (split_inputs){ 0 };
 		int evaluated = rc == 0 ? eval_scene(tree, &s, eopt) : -1;
 		device_points_forget(eopt->pattern_ctx);   /* the next frame numbers its pigments anew */
+		for (int i = -1; i < o->n_aovs && evaluated == 0 && !o->check; i++)
+			evaluated = check_format(i < 0 ? output : fi.aov_file[i], i < 0 && o->pov.alpha);
 		if (evaluated == 0 && diag_error_count() == 0) {
 			if (o->dump_scene)
 				scene_dump(&s, stdout);
@@ -1010,6 +1026,47 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 	return rc;
 }
 
+/* The scene read and rendered (or checked, or its tree dumped). */
+static int run_scene(const struct options *o, cli_frame *frame, const int *part)
+{
+	int rc;
+	eval_options eopt = eval_options_default();
+	eopt.include_dirs = o->include_dirs;
+	eopt.n_include_dirs = o->n_include_dirs;
+	eopt.declares = o->declares;
+	eopt.n_declares = o->n_declares;
+	eopt.skip_unsupported = o->skip_unsupported;
+	eopt.max_include_depth = o->max_include_depth;
+	eopt.max_macro_depth = o->max_macro_depth;
+	eopt.max_loop_iterations = o->max_loop_iterations;
+	eopt.mesh_time_limit = (unsigned)o->mesh_time_limit;
+	eopt.memory_limit = o->memory_limit;
+	eopt.io_security = o->io_security;
+	eopt.io_current_folder = true;
+	eopt.io_read_dirs = o->io_read_dirs;
+	eopt.n_io_read_dirs = o->n_io_read_dirs;
+	eopt.io_write_dirs = o->io_write_dirs;
+	eopt.n_io_write_dirs = o->n_io_write_dirs;
+	eopt.image_width = o->width;
+	eopt.image_height = o->height;
+	ast_node *tree = parse_file(o->scene, SRC_NOWHERE);
+	if (!tree)
+		rc = 1;
+	else if (o->dump_ast) {
+		ast_dump(tree, stdout);
+		rc = 0;
+	} else {
+		device_points *points = device_points_new(o->device, o->kernel_dir);
+		eopt.pattern_at = points ? device_points_eval : NULL;
+		eopt.pattern_ctx = points;
+		rc = render_frames(o, tree, &eopt, frame, part);
+		device_points_free(points);
+	}
+	ast_free(tree);
+	diag_free_all();
+	return rc;
+}
+
 int main(int argc, char **argv)
 {
 	if (argc > 1 && strcmp(argv[1], "merge") == 0)
@@ -1027,46 +1084,15 @@ int main(int argc, char **argv)
 	if (!output)
 		return 1;
 	int rc = 1;
-	int bad_output = !o.dump_ast && !o.check && check_output(o.scene, output, o.pov.alpha);
+	int bad_output = !o.dump_ast && !o.check && check_output(o.scene, output);
 	for (int i = 0; i < o.n_aovs && !bad_output && !o.check && !o.dump_ast; i++)
-		bad_output = check_output(o.scene, o.aov_file[i], 0);
+		bad_output = check_output(o.scene, o.aov_file[i]);
+	if (!bad_output && !o.dump_ast && !o.check)
+		image_module_start();   /* the image will be written: OpenImageIO loads while the scene is read */
 	int part[4], has_part = cli_pov_region(&o.pov, o.width, o.height, part);
 	free(output);
-	if (bad_output || has_part < 0)
-		return 1;
-	eval_options eopt = eval_options_default();
-	eopt.include_dirs = o.include_dirs;
-	eopt.n_include_dirs = o.n_include_dirs;
-	eopt.declares = o.declares;
-	eopt.n_declares = o.n_declares;
-	eopt.skip_unsupported = o.skip_unsupported;
-	eopt.max_include_depth = o.max_include_depth;
-	eopt.max_macro_depth = o.max_macro_depth;
-	eopt.max_loop_iterations = o.max_loop_iterations;
-	eopt.mesh_time_limit = (unsigned)o.mesh_time_limit;
-	eopt.memory_limit = o.memory_limit;
-	eopt.io_security = o.io_security;
-	eopt.io_current_folder = true;
-	eopt.io_read_dirs = o.io_read_dirs;
-	eopt.n_io_read_dirs = o.n_io_read_dirs;
-	eopt.io_write_dirs = o.io_write_dirs;
-	eopt.n_io_write_dirs = o.n_io_write_dirs;
-	eopt.image_width = o.width;
-	eopt.image_height = o.height;
-	ast_node *tree = parse_file(o.scene, SRC_NOWHERE);
-	if (!tree)
-		rc = 1;
-	else if (o.dump_ast) {
-		ast_dump(tree, stdout);
-		rc = 0;
-	} else {
-		device_points *points = device_points_new(o.device, o.kernel_dir);
-		eopt.pattern_at = points ? device_points_eval : NULL;
-		eopt.pattern_ctx = points;
-		rc = render_frames(&o, tree, &eopt, &frame, has_part ? part : NULL);
-		device_points_free(points);
-	}
-	ast_free(tree);
-	diag_free_all();
+	if (!bad_output && has_part >= 0)
+		rc = run_scene(&o, &frame, has_part ? part : NULL);
+	image_module_settle();   /* exit() must not meet a load of the module half made */
 	return rc;
 }

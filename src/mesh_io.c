@@ -246,6 +246,8 @@ static int receive(int fd, scene_mesh *m, double max_bytes, char *err, size_t er
 int mesh_io_load(const char *path, unsigned time_limit, double max_bytes, scene_mesh *m, char *err, size_t errlen)
 {
 	memset(m, 0, sizeof *m);
+	if (loader_before_fork)
+		loader_before_fork("assimp");
 	int fd[2];
 	if (pipe(fd)) {
 		snprintf(err, errlen, "cannot start the mesh loader: %s", strerror(errno));

@@ -18,7 +18,7 @@ static void *xrealloc(void *p, size_t n)
 	void *q = realloc(p, n ? n : 1);
 	if (!q) {
 		fputs("eclat: out of memory\n", stderr);
-		exit(1);
+		diag_exit(1);
 	}
 	return q;
 }

@@ -110,7 +110,7 @@ static void *grow(void *p, int *cap, size_t size)
 	p = realloc(p, *cap * size);
 	if (!p) {
 		fprintf(stderr, "eclat: out of memory\n");
-		exit(1);
+		diag_exit(1);
 	}
 	return p;
 }
