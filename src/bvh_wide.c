@@ -179,18 +179,18 @@ static int leaf_ref(widener *x, const bvh_node *box, int first, int count, int *
 	return w;
 }
 
-/* Whether binary node i's subtree holds at most 4 primitives, in one run
+/* Whether binary node i's subtree holds at most BVH_WIDE_BLOCK primitives, in one run
  * (*first, *count): a subtree the wide layout makes a leaf of blocks. */
 static int small_subtree(const bvh_node *bin, int i, int *first, int *count)
 {
 	if (bin[i].count > 0) {
 		*first = bin[i].left_first;
 		*count = bin[i].count;
-		return *count <= 4;
+		return *count <= BVH_WIDE_BLOCK;
 	}
 	int f1, n1, f2, n2;
 	return small_subtree(bin, bin[i].left_first, &f1, &n1) && small_subtree(bin, bin[i].left_first + 1, &f2, &n2) &&
-	       n1 + n2 <= 4 && f2 == f1 + n1 && (*first = f1, *count = n1 + n2, 1);
+	       n1 + n2 <= BVH_WIDE_BLOCK && f2 == f1 + n1 && (*first = f1, *count = n1 + n2, 1);
 }
 
 /* Whether binary node i is a leaf of the wide layout, and its run. */

@@ -408,8 +408,7 @@ static int build_tree(struct lowering *lw, struct prim_list *list, bvh_tree *t, 
 		rc = bvh_build_median(boxes, list->n, lw->opt->median_depth, t);
 		free(boxes);
 	} else if (list != &lw->top && lw->opt->layout == LOWER_LAYOUT_WIDE) {
-		/* bvh_widen makes each subtree of at most four triangles one block */
-		rc = bvh_build_leaves(box_of_prim, list, list->n, 4, t);
+		rc = bvh_build_leaves(box_of_prim, list, list->n, BVH_WIDE_BLOCK, t);
 	} else {
 		rc = bvh_build_fn(box_of_prim, list, list->n, t);
 	}
