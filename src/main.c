@@ -499,8 +499,9 @@ static int check_output(const char *scene, const char *output)
 }
 
 /* Whether OpenImageIO writes the output's format (with alpha, for +UA). Asked
- * once the scene is read: eclat's image module loads meanwhile
- * (src/image_module.c). */
+ * once the scene is lowered and the kernels are built, just before the render:
+ * eclat's image module loads meanwhile (src/image_module.c), and asking waits
+ * for it. */
 static int check_format(const char *output, int alpha)
 {
 	const char *no_module = image_module_error();
@@ -850,10 +851,14 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	}
 	int planned = plan_split(o, s, output, part, in, fi, &rs, &info, &resumed) == 0 &&
 	              (keep->opened || set_threads(o) == 0);
+	if (planned && !several)   /* built before the formats are asked about: see check_format */
+		planned = (prog = render_keep_program(keep, o->device, o->kernel_dir, &lr)) != NULL;
+	for (int i = -1; i < o->n_aovs && planned; i++)
+		planned = check_format(i < 0 ? output : fi->aov_file[i], i < 0 && o->pov.alpha) == 0;
 	if (planned && several)
 		ran = render_multi(o->devices, o->n_devices < 0 ? 0 : o->n_devices, o->kernel_dir, &lr, &rs, &f, &st,
 		                   multi.name, sizeof multi.name);
-	else if (planned && (prog = render_keep_program(keep, o->device, o->kernel_dir, &lr)) != NULL)
+	else if (planned)
 		ran = render_run(&keep->dev, prog, &lr, &rs, &f, &st);
 	if (ran >= 0) {
 		if (!o->quiet && ran == 0 && fi->frames > 1)
@@ -993,8 +998,6 @@ static int render_frames(const struct options *o, const ast_node *tree, eval_opt
 		reads.inputs = (split_inputs){ 0 };
 		int evaluated = rc == 0 ? eval_scene(tree, &s, eopt) : -1;
 		device_points_forget(eopt->pattern_ctx);   /* the next frame numbers its pigments anew */
-		for (int i = -1; i < o->n_aovs && evaluated == 0 && !o->check; i++)
-			evaluated = check_format(i < 0 ? output : fi.aov_file[i], i < 0 && o->pov.alpha);
 		if (evaluated == 0 && diag_error_count() == 0) {
 			if (o->dump_scene)
 				scene_dump(&s, stdout);
