@@ -499,9 +499,10 @@ static int check_output(const char *scene, const char *output)
 }
 
 /* Whether OpenImageIO writes the output's format (with alpha, for +UA). Asked
- * once the scene is lowered and the kernels are built, just before the render:
- * eclat's image module loads meanwhile (src/image_module.c), and asking waits
- * for it. */
+ * once the scene is read and lowered, before the kernels are built: eclat's
+ * image module loads meanwhile (src/image_module.c), and asking waits for it;
+ * a file that cannot be written must not cost a kernel build first (1.6 s for
+ * a small scene with PoCL's cache empty). */
 static int check_format(const char *output, int alpha)
 {
 	const char *no_module = image_module_error();
@@ -851,14 +852,12 @@ static int render_scene(const struct options *o, const scene *s, const char *out
 	}
 	int planned = plan_split(o, s, output, part, in, fi, &rs, &info, &resumed) == 0 &&
 	              (keep->opened || set_threads(o) == 0);
-	if (planned && !several)   /* built before the formats are asked about: see check_format */
-		planned = (prog = render_keep_program(keep, o->device, o->kernel_dir, &lr)) != NULL;
-	for (int i = -1; i < o->n_aovs && planned; i++)
+	for (int i = -1; i < o->n_aovs && planned; i++)   /* see check_format: after the lowering, before the kernels */
 		planned = check_format(i < 0 ? output : fi->aov_file[i], i < 0 && o->pov.alpha) == 0;
 	if (planned && several)
 		ran = render_multi(o->devices, o->n_devices < 0 ? 0 : o->n_devices, o->kernel_dir, &lr, &rs, &f, &st,
 		                   multi.name, sizeof multi.name);
-	else if (planned)
+	else if (planned && (prog = render_keep_program(keep, o->device, o->kernel_dir, &lr)) != NULL)
 		ran = render_run(&keep->dev, prog, &lr, &rs, &f, &st);
 	if (ran >= 0) {
 		if (!o->quiet && ran == 0 && fi->frames > 1)
